@@ -1,0 +1,37 @@
+package org.tensim.io;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/** Charts drawn with XChart and saved as PNG. */
+public final class Charts {
+    private Charts() {
+    }
+
+    /** A new line chart with the project's look. */
+    public static XYChart lineChart(String title, String xTitle, String yTitle, int width, int height) {
+        XYChart chart = new XYChartBuilder().width(width).height(height).title(title).xAxisTitle(xTitle)
+                .yAxisTitle(yTitle).build();
+        chart.getStyler().setMarkerSize(0);
+        chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
+        return chart;
+    }
+
+    /** Adds a line series without markers. */
+    public static void addLine(XYChart chart, String name, double[] x, double[] y) {
+        chart.addSeries(name, x, y).setMarker(SeriesMarkers.NONE);
+    }
+
+    /** Saves the chart as a PNG file at {@code path} (the name should end in .png). */
+    public static void savePng(XYChart chart, Path path) throws IOException {
+        Files.createDirectories(path.toAbsolutePath().getParent());
+        String name = path.toString();
+        String base = name.endsWith(".png") ? name.substring(0, name.length() - 4) : name;
+        BitmapEncoder.saveBitmap(chart, base, BitmapEncoder.BitmapFormat.PNG);
+    }
+}

@@ -1,0 +1,170 @@
+package org.tensim.model;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+/**
+ * How a scene is authored: nodes (mass points), springs, rigid links, external
+ * nodal forces, gravity and global viscous damping. A topology is compiled into a
+ * flat simulation state by the solver ({@code org.tensim.solver.SystemState});
+ * authoring objects are never touched while a simulation runs.
+ *
+ * <p>Units are SI throughout: m, kg, s, N.
+ */
+public final class Topology {
+    /** An external force law applied to one node. */
+    public record NodalForce(int node, ForceLaw law) {
+    }
+
+    private final List<Node> nodes = new ArrayList<>();
+    private final List<Spring> springs = new ArrayList<>();
+    private final List<RigidLink> links = new ArrayList<>();
+    private final List<NodalForce> forces = new ArrayList<>();
+    private Vec3 gravity = Vec3.ZERO;
+    private double viscousDamping;
+
+    /**
+     * Adds a node at (x, y, z) m with the given mass.
+     *
+     * @param massKg mass, kg, finite and > 0
+     * @return the new node; its id is the number of nodes added before it
+     */
+    public Node addNode(double x, double y, double z, double massKg) {
+        Vec3 p;
+        try {
+            p = new Vec3(x, y, z);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("node " + nodes.size() + " position: " + e.getMessage(), e);
+        }
+        Node n = new Node(nodes.size(), p, massKg);
+        nodes.add(n);
+        return n;
+    }
+
+    /** Adds a node at {@code p}, m. */
+    public Node addNode(Vec3 p, double massKg) {
+        return addNode(p.x(), p.y(), p.z(), massKg);
+    }
+
+    /**
+     * Adds a spring whose rest length is the nodes' current distance.
+     *
+     * @param stiffness N/m, >= 0
+     * @param damping   N s/m along the spring's axis, >= 0
+     */
+    public Spring addSpring(Node a, Node b, double stiffness, double damping) {
+        own(a);
+        own(b);
+        return addSpring(a.id(), b.id(), stiffness, a.position().distance(b.position()), damping);
+    }
+
+    /** Adds a spring between node ids with an explicit rest length (m). */
+    public Spring addSpring(int a, int b, double stiffness, double restLength, double damping) {
+        Check.index("spring end node", a, nodes.size());
+        Check.index("spring end node", b, nodes.size());
+        Spring s = new Spring(a, b, stiffness, restLength, damping);
+        springs.add(s);
+        return s;
+    }
+
+    /** Adds a rigid link whose length is the nodes' current distance (must be > 0). */
+    public RigidLink addRigidLink(Node a, Node b) {
+        own(a);
+        own(b);
+        double len = a.position().distance(b.position());
+        if (a != b && !(len > 0)) {
+            throw new IllegalArgumentException("rigid link " + a.id() + "-" + b.id()
+                    + " would have zero length: its nodes are at the same position " + a.position());
+        }
+        return addRigidLink(a.id(), b.id(), len);
+    }
+
+    /** Adds a rigid link between node ids with an explicit length (m, > 0). */
+    public RigidLink addRigidLink(int a, int b, double length) {
+        Check.index("rigid link end node", a, nodes.size());
+        Check.index("rigid link end node", b, nodes.size());
+        RigidLink l = new RigidLink(a, b, length);
+        links.add(l);
+        return l;
+    }
+
+    /** Applies a time-dependent external force to a node. Several forces on a node add up. */
+    public void applyForce(Node node, ForceLaw law) {
+        own(node);
+        if (law == null) {
+            throw new IllegalArgumentException("force law on node " + node.id() + " must not be null");
+        }
+        forces.add(new NodalForce(node.id(), law));
+    }
+
+    /** Gravity acceleration, m/s^2 (e.g. (0, -9.81, 0) for y up). Zero by default (off). */
+    public void setGravity(Vec3 g) {
+        gravity = g;
+    }
+
+    public Vec3 gravity() {
+        return gravity;
+    }
+
+    /**
+     * Global viscous damping coefficient c, N s/m: each free node feels
+     * {@code -c v}. Zero by default.
+     */
+    public void setViscousDamping(double nsPerM) {
+        viscousDamping = Check.nonNegative("viscous damping", "N s/m", nsPerM);
+    }
+
+    public double viscousDamping() {
+        return viscousDamping;
+    }
+
+    public Node node(int id) {
+        Check.index("node", id, nodes.size());
+        return nodes.get(id);
+    }
+
+    public List<Node> nodes() {
+        return Collections.unmodifiableList(nodes);
+    }
+
+    public List<Spring> springs() {
+        return Collections.unmodifiableList(springs);
+    }
+
+    public List<RigidLink> rigidLinks() {
+        return Collections.unmodifiableList(links);
+    }
+
+    public List<NodalForce> forces() {
+        return Collections.unmodifiableList(forces);
+    }
+
+    public int nodeCount() {
+        return nodes.size();
+    }
+
+    /** Total mass of all nodes, kg. */
+    public double totalMass() {
+        double m = 0;
+        for (Node n : nodes) {
+            m += n.mass();
+        }
+        return m;
+    }
+
+    private void own(Node n) {
+        if (n == null) {
+            throw new IllegalArgumentException("node must not be null");
+        }
+        if (n.id() >= nodes.size() || nodes.get(n.id()) != n) {
+            throw new IllegalArgumentException("node " + n.id() + " does not belong to this topology");
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "Topology[" + nodes.size() + " nodes, " + springs.size() + " springs, " + links.size()
+                + " rigid links, " + forces.size() + " forces]";
+    }
+}

@@ -1,0 +1,176 @@
+package org.tensim.solver;
+
+/**
+ * The right-hand side of m a = f for a {@link SystemState}: gravity, global
+ * viscous damping, external nodal forces, and linear springs with axial damping.
+ * Forces are written for every node; integrators multiply by the inverse mass,
+ * which is zero for fixed and driven nodes.
+ *
+ * <p>Spring law (force on end a; end b gets the opposite):
+ * {@code f_a = (k (l - L) + c (v_b - v_a).u) u}, {@code u = (x_b - x_a) / l}.
+ * It is minus the gradient of {@code E = k (l - L)^2 / 2} (tested).
+ */
+public final class ForceModel {
+    private final SystemState s;
+    private long evaluations;
+
+    public ForceModel(SystemState state) {
+        this.s = state;
+    }
+
+    public SystemState state() {
+        return s;
+    }
+
+    /** Number of force passes made so far (the cost measure of integrators). */
+    public long evaluations() {
+        return evaluations;
+    }
+
+    /**
+     * Computes all forces (N) at time t for positions px and velocities pv into f
+     * (overwritten). Allocation-free.
+     */
+    public void computeForces(double t, double[] px, double[] pv, double[] f) {
+        evaluations++;
+        final int n = s.nodeCount;
+        final double[] m = s.mass;
+        final double gx = s.gx;
+        final double gy = s.gy;
+        final double gz = s.gz;
+        final double c = s.viscousDamping;
+        if (c == 0) {
+            for (int i = 0; i < n; i++) {
+                double mi = m[i];
+                f[3 * i] = mi * gx;
+                f[3 * i + 1] = mi * gy;
+                f[3 * i + 2] = mi * gz;
+            }
+        } else {
+            for (int i = 0; i < n; i++) {
+                double mi = m[i];
+                f[3 * i] = mi * gx - c * pv[3 * i];
+                f[3 * i + 1] = mi * gy - c * pv[3 * i + 1];
+                f[3 * i + 2] = mi * gz - c * pv[3 * i + 2];
+            }
+        }
+        for (int i = 0; i < s.forceNode.length; i++) {
+            s.forceLaw[i].addTo(t, f, 3 * s.forceNode[i]);
+        }
+        // The undamped loop is about a third cheaper; it is used when no spring is damped.
+        if (s.axialDamping) {
+            springsDamped(px, pv, f);
+        } else {
+            springs(px, f);
+        }
+    }
+
+    /** Spring forces only, added to f: the hot loop, without axial damping. */
+    public void springs(double[] px, double[] f) {
+        final int[] sa = s.springA;
+        final int[] sb = s.springB;
+        final double[] k = s.springK;
+        final double[] rl = s.springL;
+        final int ns = sa.length;
+        for (int i = 0; i < ns; i++) {
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final double dx = px[b] - px[a];
+            final double dy = px[b + 1] - px[a + 1];
+            final double dz = px[b + 2] - px[a + 2];
+            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            // k (l - L) / l, guarded: coincident nodes exert no force (direction undefined).
+            final double sc = len > 0 ? k[i] * (len - rl[i]) / len : 0;
+            final double fx = sc * dx;
+            final double fy = sc * dy;
+            final double fz = sc * dz;
+            f[a] += fx;
+            f[a + 1] += fy;
+            f[a + 2] += fz;
+            f[b] -= fx;
+            f[b + 1] -= fy;
+            f[b + 2] -= fz;
+        }
+    }
+
+    /** Spring forces with axial damping, added to f. */
+    public void springsDamped(double[] px, double[] pv, double[] f) {
+        final int[] sa = s.springA;
+        final int[] sb = s.springB;
+        final double[] k = s.springK;
+        final double[] rl = s.springL;
+        final double[] cs = s.springC;
+        final int ns = sa.length;
+        for (int i = 0; i < ns; i++) {
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final double dx = px[b] - px[a];
+            final double dy = px[b + 1] - px[a + 1];
+            final double dz = px[b + 2] - px[a + 2];
+            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (len == 0) {
+                continue;
+            }
+            final double inv = 1 / len;
+            final double ux = dx * inv;
+            final double uy = dy * inv;
+            final double uz = dz * inv;
+            final double vrel = (pv[b] - pv[a]) * ux + (pv[b + 1] - pv[a + 1]) * uy + (pv[b + 2] - pv[a + 2]) * uz;
+            final double mag = k[i] * (len - rl[i]) + cs[i] * vrel;
+            final double fx = mag * ux;
+            final double fy = mag * uy;
+            final double fz = mag * uz;
+            f[a] += fx;
+            f[a + 1] += fy;
+            f[a + 2] += fz;
+            f[b] -= fx;
+            f[b + 1] -= fy;
+            f[b + 2] -= fz;
+        }
+    }
+
+    /** Elastic energy of the springs at positions px, J. */
+    public double springEnergy(double[] px) {
+        double e = 0;
+        for (int i = 0; i < s.springA.length; i++) {
+            int a = 3 * s.springA[i];
+            int b = 3 * s.springB[i];
+            double dx = px[b] - px[a];
+            double dy = px[b + 1] - px[a + 1];
+            double dz = px[b + 2] - px[a + 2];
+            double ext = Math.sqrt(dx * dx + dy * dy + dz * dz) - s.springL[i];
+            e += 0.5 * s.springK[i] * ext * ext;
+        }
+        return e;
+    }
+
+    /** Kinetic energy of the free nodes, J. */
+    public double kineticEnergy() {
+        double e = 0;
+        for (int i = 0; i < s.nodeCount; i++) {
+            if (s.invMass[i] != 0) {
+                double vx = s.v[3 * i];
+                double vy = s.v[3 * i + 1];
+                double vz = s.v[3 * i + 2];
+                e += 0.5 * s.mass[i] * (vx * vx + vy * vy + vz * vz);
+            }
+        }
+        return e;
+    }
+
+    /** Gravitational potential energy of the free nodes, J ({@code -m g . x}). */
+    public double gravityEnergy() {
+        double e = 0;
+        for (int i = 0; i < s.nodeCount; i++) {
+            if (s.invMass[i] != 0) {
+                e -= s.mass[i] * (s.gx * s.x[3 * i] + s.gy * s.x[3 * i + 1] + s.gz * s.x[3 * i + 2]);
+            }
+        }
+        return e;
+    }
+
+    /** Kinetic + spring + gravity energy of the current state, J (external forces excluded). */
+    public double totalEnergy() {
+        return kineticEnergy() + springEnergy(s.x) + gravityEnergy();
+    }
+}

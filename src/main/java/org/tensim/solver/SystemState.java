@@ -1,0 +1,257 @@
+package org.tensim.solver;
+
+import java.util.List;
+import org.tensim.model.Check;
+import org.tensim.model.ForceLaw;
+import org.tensim.model.Motion;
+import org.tensim.model.Node;
+import org.tensim.model.RigidLink;
+import org.tensim.model.Spring;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+
+/**
+ * The compiled, flat simulation state of a {@link Topology}: arrays of doubles
+ * indexed by node (3 per node, interleaved x, y, z) and int arrays of spring and
+ * link end points. Allocated once by {@link #compile(Topology)}; the solver never
+ * allocates per step. Node ids are those of the topology.
+ *
+ * <p>Fields are public for the hot loops of integrators and views; they are read
+ * by listeners between steps and written only by the simulation thread.
+ */
+public final class SystemState {
+    /** Number of nodes. */
+    public final int nodeCount;
+    /** Positions, m: node i at [3i, 3i+1, 3i+2]. */
+    public final double[] x;
+    /** Velocities, m/s, same layout. */
+    public final double[] v;
+    /** Initial (rest) positions, m, same layout. */
+    public final double[] x0;
+    /** Masses, kg. */
+    public final double[] mass;
+    /** Inverse masses, 1/kg; 0 for fixed and driven nodes (they are not integrated). */
+    public final double[] invMass;
+
+    /** Spring end points (node ids). */
+    public final int[] springA;
+    public final int[] springB;
+    /** Spring stiffness, N/m. */
+    public final double[] springK;
+    /** Spring rest length, m. */
+    public final double[] springL;
+    /** Spring axial damping, N s/m. */
+    public final double[] springC;
+
+    /** Rigid link end points (node ids). */
+    public final int[] linkA;
+    public final int[] linkB;
+    /** Rigid link lengths, m. */
+    public final double[] linkL;
+    /** Ids of the nodes that belong to at least one rigid link, each once. */
+    public final int[] linkNodes;
+
+    /** Nodes that carry external forces, and the laws (parallel arrays). */
+    public final int[] forceNode;
+    public final ForceLaw[] forceLaw;
+
+    /** Driven nodes, their motions and rest positions (parallel arrays). */
+    public final int[] drivenNode;
+    public final Motion[] drivenMotion;
+    final Vec3[] drivenRest;
+
+    /** Fixed nodes. */
+    public final int[] fixedNode;
+
+    /** True when at least one spring has axial damping (selects the force loop). */
+    boolean axialDamping;
+
+    double gx;
+    double gy;
+    double gz;
+    double viscousDamping;
+
+    private SystemState(Topology t) {
+        nodeCount = t.nodeCount();
+        x = new double[3 * nodeCount];
+        v = new double[3 * nodeCount];
+        x0 = new double[3 * nodeCount];
+        mass = new double[nodeCount];
+        invMass = new double[nodeCount];
+        int nFixed = 0;
+        int nDriven = 0;
+        for (Node n : t.nodes()) {
+            int i = n.id();
+            x[3 * i] = n.position().x();
+            x[3 * i + 1] = n.position().y();
+            x[3 * i + 2] = n.position().z();
+            mass[i] = n.mass();
+            invMass[i] = (n.isFixed() || n.isDriven()) ? 0 : 1 / n.mass();
+            nFixed += n.isFixed() ? 1 : 0;
+            nDriven += n.isDriven() ? 1 : 0;
+        }
+        System.arraycopy(x, 0, x0, 0, x.length);
+        fixedNode = new int[nFixed];
+        drivenNode = new int[nDriven];
+        drivenMotion = new Motion[nDriven];
+        drivenRest = new Vec3[nDriven];
+        int f = 0;
+        int d = 0;
+        for (Node n : t.nodes()) {
+            if (n.isFixed()) {
+                fixedNode[f++] = n.id();
+            } else if (n.isDriven()) {
+                drivenNode[d] = n.id();
+                drivenMotion[d] = n.motion();
+                drivenRest[d++] = n.position();
+            }
+        }
+
+        List<Spring> s = t.springs();
+        springA = new int[s.size()];
+        springB = new int[s.size()];
+        springK = new double[s.size()];
+        springL = new double[s.size()];
+        springC = new double[s.size()];
+        for (int i = 0; i < s.size(); i++) {
+            Spring sp = s.get(i);
+            springA[i] = sp.a();
+            springB[i] = sp.b();
+            springK[i] = sp.stiffness();
+            springL[i] = sp.restLength();
+            springC[i] = sp.damping();
+            axialDamping |= sp.damping() != 0;
+        }
+
+        List<RigidLink> l = t.rigidLinks();
+        linkA = new int[l.size()];
+        linkB = new int[l.size()];
+        linkL = new double[l.size()];
+        boolean[] inLink = new boolean[nodeCount];
+        int nLinkNodes = 0;
+        for (int i = 0; i < l.size(); i++) {
+            RigidLink rl = l.get(i);
+            linkA[i] = rl.a();
+            linkB[i] = rl.b();
+            linkL[i] = rl.length();
+            for (int e : new int[] {rl.a(), rl.b()}) {
+                if (!inLink[e]) {
+                    inLink[e] = true;
+                    nLinkNodes++;
+                }
+            }
+        }
+        linkNodes = new int[nLinkNodes];
+        for (int i = 0, k = 0; i < nodeCount; i++) {
+            if (inLink[i]) {
+                linkNodes[k++] = i;
+            }
+        }
+
+        List<Topology.NodalForce> fs = t.forces();
+        forceNode = new int[fs.size()];
+        forceLaw = new ForceLaw[fs.size()];
+        for (int i = 0; i < fs.size(); i++) {
+            forceNode[i] = fs.get(i).node();
+            forceLaw[i] = fs.get(i).law();
+        }
+        gx = t.gravity().x();
+        gy = t.gravity().y();
+        gz = t.gravity().z();
+        viscousDamping = t.viscousDamping();
+    }
+
+    /** Compiles a topology into a new flat state at its initial positions, at rest. */
+    public static SystemState compile(Topology t) {
+        return new SystemState(t);
+    }
+
+    public int springCount() {
+        return springA.length;
+    }
+
+    public int linkCount() {
+        return linkA.length;
+    }
+
+    /** Writes node i's displacement from its initial position (m) into out[0..2]. */
+    public void displacement(int node, double[] out) {
+        Check.index("node", node, nodeCount);
+        out[0] = x[3 * node] - x0[3 * node];
+        out[1] = x[3 * node + 1] - x0[3 * node + 1];
+        out[2] = x[3 * node + 2] - x0[3 * node + 2];
+    }
+
+    /** Component {@code axis} (0 = x, 1 = y, 2 = z) of node i's position, m. */
+    public double position(int node, int axis) {
+        return x[3 * node + axis];
+    }
+
+    /** Gravity acceleration, m/s^2. */
+    public Vec3 gravity() {
+        return new Vec3(gx, gy, gz);
+    }
+
+    /** Sets gravity, m/s^2 (takes effect at the next force pass). */
+    public void setGravity(Vec3 g) {
+        gx = g.x();
+        gy = g.y();
+        gz = g.z();
+    }
+
+    /** Global viscous damping, N s/m per node. */
+    public double viscousDamping() {
+        return viscousDamping;
+    }
+
+    public void setViscousDamping(double nsPerM) {
+        viscousDamping = Check.nonNegative("viscous damping", "N s/m", nsPerM);
+    }
+
+    /** Sets the stiffness (N/m, >= 0) of spring s; takes effect at the next force pass. */
+    public void setSpringStiffness(int s, double k) {
+        Check.index("spring", s, springK.length);
+        springK[s] = Check.nonNegative("spring " + s + " stiffness", "N/m", k);
+    }
+
+    /** Sets the axial damping (N s/m, >= 0) of spring s. */
+    public void setSpringDamping(int s, double c) {
+        Check.index("spring", s, springC.length);
+        springC[s] = Check.nonNegative("spring " + s + " damping", "N s/m", c);
+        axialDamping |= c != 0;
+    }
+
+    /** Total momentum of the free nodes, kg m/s, into out[0..2]. */
+    public void momentum(double[] out) {
+        out[0] = 0;
+        out[1] = 0;
+        out[2] = 0;
+        for (int i = 0; i < nodeCount; i++) {
+            if (invMass[i] != 0) {
+                out[0] += mass[i] * v[3 * i];
+                out[1] += mass[i] * v[3 * i + 1];
+                out[2] += mass[i] * v[3 * i + 2];
+            }
+        }
+    }
+
+    /**
+     * Applies the prescribed motions of driven nodes at time t to positions
+     * {@code px} and velocities {@code pv} (central difference of the motion).
+     */
+    public void applyMotions(double t, double[] px, double[] pv, double[] scratch6) {
+        for (int d = 0; d < drivenNode.length; d++) {
+            int o = 3 * drivenNode[d];
+            Motion m = drivenMotion[d];
+            m.position(t, drivenRest[d], px, o);
+            if (pv != null) {
+                final double eps = 1e-6;
+                m.position(t + eps, drivenRest[d], scratch6, 0);
+                m.position(t - eps, drivenRest[d], scratch6, 3);
+                pv[o] = (scratch6[0] - scratch6[3]) / (2 * eps);
+                pv[o + 1] = (scratch6[1] - scratch6[4]) / (2 * eps);
+                pv[o + 2] = (scratch6[2] - scratch6[5]) / (2 * eps);
+            }
+        }
+    }
+}
