@@ -13,6 +13,7 @@ package org.tensim.solver;
 public final class ForceModel {
     private final SystemState s;
     private long evaluations;
+    private SpringForcePass springPass;
 
     public ForceModel(SystemState state) {
         this.s = state;
@@ -25,6 +26,19 @@ public final class ForceModel {
     /** Number of force passes made so far (the cost measure of integrators). */
     public long evaluations() {
         return evaluations;
+    }
+
+    /**
+     * Replaces the built-in spring loops by {@code pass} (null restores them), e.g. a
+     * multi-threaded pass; takes effect at the next force evaluation.
+     */
+    public void setSpringPass(SpringForcePass pass) {
+        springPass = pass;
+    }
+
+    /** The spring pass in use, or null for the built-in loops. */
+    public SpringForcePass springPass() {
+        return springPass;
     }
 
     /**
@@ -58,7 +72,9 @@ public final class ForceModel {
             s.forceLaw[i].addTo(t, f, 3 * s.forceNode[i]);
         }
         // The undamped loop is about a third cheaper; it is used when no spring is damped.
-        if (s.axialDamping) {
+        if (springPass != null) {
+            springPass.addSpringForces(px, pv, f);
+        } else if (s.axialDamping) {
             springsDamped(px, pv, f);
         } else {
             springs(px, f);

@@ -30,6 +30,7 @@ public final class RigidLinkProjection {
     private int iterations;
     private double maxRelativeError;
     private int worstLink = -1;
+    private LinkSweeps sweeps;
 
     /** Largest accepted relative length error |l - L| / L (dimensionless, > 0). */
     public double tolerance() {
@@ -72,11 +73,28 @@ public final class RigidLinkProjection {
     }
 
     /**
+     * Replaces the built-in sweep and measure loops (null restores them), e.g. by
+     * parallel sweeps over link colours; the tolerance and cap still apply.
+     */
+    public RigidLinkProjection setSweeps(LinkSweeps replacement) {
+        sweeps = replacement;
+        return this;
+    }
+
+    /** The replacement loops in use, or null for the built-in ones. */
+    public LinkSweeps sweeps() {
+        return sweeps;
+    }
+
+    /**
      * Projects the positions {@code x} of state s onto the rigid links.
      *
      * @return true when the tolerance was met
      */
     public boolean project(SystemState s, double[] x) {
+        if (sweeps != null) {
+            return projectWith(sweeps, s, x);
+        }
         iterations = 0;
         maxRelativeError = measure(s, x);
         while (maxRelativeError > tolerance && iterations < maxIterations) {
@@ -84,6 +102,18 @@ public final class RigidLinkProjection {
             iterations++;
             maxRelativeError = measure(s, x);
         }
+        return converged();
+    }
+
+    private boolean projectWith(LinkSweeps w, SystemState s, double[] x) {
+        iterations = 0;
+        maxRelativeError = w.measure(s, x);
+        while (maxRelativeError > tolerance && iterations < maxIterations) {
+            w.sweep(s, x);
+            iterations++;
+            maxRelativeError = w.measure(s, x);
+        }
+        worstLink = w.worstLink();
         return converged();
     }
 

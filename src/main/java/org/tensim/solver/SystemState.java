@@ -66,6 +66,9 @@ public final class SystemState {
     /** True when at least one spring has axial damping (selects the force loop). */
     boolean axialDamping;
 
+    /** Incremented by every spring parameter setter (lets copies of springK/springC refresh). */
+    private int springParameterVersion;
+
     double gx;
     double gy;
     double gz;
@@ -212,6 +215,7 @@ public final class SystemState {
     public void setSpringStiffness(int s, double k) {
         Check.index("spring", s, springK.length);
         springK[s] = Check.nonNegative("spring " + s + " stiffness", "N/m", k);
+        springParameterVersion++;
     }
 
     /** Sets the axial damping (N s/m, >= 0) of spring s. */
@@ -219,6 +223,17 @@ public final class SystemState {
         Check.index("spring", s, springC.length);
         springC[s] = Check.nonNegative("spring " + s + " damping", "N s/m", c);
         axialDamping |= c != 0;
+        springParameterVersion++;
+    }
+
+    /**
+     * Counter of spring parameter changes made through {@link #setSpringStiffness} and
+     * {@link #setSpringDamping}: solvers that keep reordered copies of the spring
+     * parameters refresh them when it changes. Writes straight into the public arrays
+     * are not seen.
+     */
+    public int springParameterVersion() {
+        return springParameterVersion;
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

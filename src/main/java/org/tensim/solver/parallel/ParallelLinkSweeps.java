@@ -1,0 +1,195 @@
+package org.tensim.solver.parallel;
+
+import org.tensim.solver.LinkSweeps;
+import org.tensim.solver.SystemState;
+
+/**
+ * The rigid-link projection's sweeps over {@link LinkColoring colours}, each colour
+ * split among the threads of a {@link WorkerPool}. Within a colour no two links
+ * share a node, so the split cannot change any result: 1 or N threads give the same
+ * bits (tested). The Gauss-Seidel order is colour by colour (links of a colour by
+ * their lower node), not the authored order: the converged positions satisfy the
+ * same tolerance but differ from the authored-order sweep's within it.
+ *
+ * <p>The correction per link is the one of {@code RigidLinkProjection}: the ends move
+ * along the link, in inverse proportion to their masses; fixed and driven nodes
+ * (inverse mass 0) never move. A colour with fewer than {@link #MIN_PARALLEL_LINKS}
+ * links runs on the calling thread alone: a dispatch costs more than it saves.
+ */
+public final class ParallelLinkSweeps implements LinkSweeps {
+    /** Links of one colour below which a colour is swept on the calling thread only. */
+    public static final int MIN_PARALLEL_LINKS = 2048;
+
+    private final WorkerPool pool;
+    private final int[] colourStart; // links of colour c: [colourStart[c], colourStart[c+1])
+    private final int[] la; // node ids
+    private final int[] lb;
+    private final int[] la3; // 3 x node id: the offsets into positions
+    private final int[] lb3;
+    private final double[] len;
+    private final int[] src; // authored index
+    private final double[] worstError;
+    private final int[] worstIndex;
+    private final WorkerPool.Task sweepTask = this::sweepSlice;
+    private final WorkerPool.Task measureTask = this::measureSlice;
+    private int worstLink = -1;
+    private int colour;
+    private double[] px;
+    private double[] w;
+
+    /** Colours the links of {@code s} and lays them out by colour. */
+    public ParallelLinkSweeps(SystemState s, WorkerPool pool) {
+        this.pool = pool;
+        final int m = s.linkCount();
+        LinkColoring col = LinkColoring.greedy(s.nodeCount, s.linkA, s.linkB);
+        int k = col.colours();
+        colourStart = new int[k + 1];
+        for (int i = 0; i < m; i++) {
+            colourStart[col.colour(i) + 1]++;
+        }
+        for (int c = 0; c < k; c++) {
+            colourStart[c + 1] += colourStart[c];
+        }
+        // Within a colour, by lower node then authored index: neighbouring links, neighbouring memory.
+        int[] byLower = NodeOrdering.edgesByLowerEnd(s.nodeCount, s.linkA, s.linkB, null);
+        int[] fill = java.util.Arrays.copyOf(colourStart, k);
+        la = new int[m];
+        lb = new int[m];
+        la3 = new int[m];
+        lb3 = new int[m];
+        len = new double[m];
+        src = new int[m];
+        for (int i : byLower) {
+            int p = fill[col.colour(i)]++;
+            la[p] = s.linkA[i];
+            lb[p] = s.linkB[i];
+            la3[p] = 3 * s.linkA[i];
+            lb3[p] = 3 * s.linkB[i];
+            len[p] = s.linkL[i];
+            src[p] = i;
+        }
+        worstError = new double[16 * pool.size()]; // one cache line apart per worker
+        worstIndex = new int[16 * pool.size()];
+    }
+
+    /** Number of link colours. */
+    public int colours() {
+        return colourStart.length - 1;
+    }
+
+    @Override
+    public void sweep(SystemState s, double[] x) {
+        px = x;
+        w = s.invMass;
+        for (int c = 0; c < colourStart.length - 1; c++) {
+            colour = c;
+            if (colourStart[c + 1] - colourStart[c] < MIN_PARALLEL_LINKS) {
+                sweepRange(colourStart[c], colourStart[c + 1]);
+            } else {
+                pool.run(sweepTask);
+            }
+        }
+        px = null;
+        w = null;
+    }
+
+    private void sweepSlice(int worker) {
+        int from = colourStart[colour];
+        int count = colourStart[colour + 1] - from;
+        int t = pool.size();
+        sweepRange(from + (int) ((long) count * worker / t), from + (int) ((long) count * (worker + 1) / t));
+    }
+
+    private void sweepRange(int from, int to) {
+        final double[] x = px;
+        final double[] wm = w;
+        for (int i = from; i < to; i++) {
+            final int a3 = la3[i];
+            final int b3 = lb3[i];
+            final double wa = wm[la[i]];
+            final double wb = wm[lb[i]];
+            final double wsum = wa + wb;
+            if (wsum == 0) {
+                continue; // both ends immovable: the error is reported by measure()
+            }
+            final double dx = x[b3] - x[a3];
+            final double dy = x[b3 + 1] - x[a3 + 1];
+            final double dz = x[b3 + 2] - x[a3 + 2];
+            final double l = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (l == 0) {
+                continue; // direction undefined; left to the next sweep after neighbours move
+            }
+            final double r = (l - len[i]) / (l * wsum);
+            final double ca = wa * r;
+            final double cb = wb * r;
+            x[a3] += ca * dx;
+            x[a3 + 1] += ca * dy;
+            x[a3 + 2] += ca * dz;
+            x[b3] -= cb * dx;
+            x[b3 + 1] -= cb * dy;
+            x[b3 + 2] -= cb * dz;
+        }
+    }
+
+    @Override
+    public double measure(SystemState s, double[] x) {
+        px = x;
+        if (la3.length < MIN_PARALLEL_LINKS) {
+            measureRange(0, 0, la3.length);
+        } else {
+            pool.run(measureTask);
+        }
+        px = null;
+        int parts = la3.length < MIN_PARALLEL_LINKS ? 1 : pool.size();
+        double worst = 0;
+        int index = -1;
+        for (int p = 0; p < parts; p++) {
+            double e = worstError[16 * p];
+            int i = worstIndex[16 * p];
+            if (i < 0) {
+                continue;
+            }
+            // NaN beats everything; ties go to the smaller authored index: independent of the split.
+            boolean nan = Double.isNaN(e);
+            boolean worstNan = Double.isNaN(worst);
+            if (index < 0 || (nan && !worstNan) || (nan == worstNan && (e > worst || (e == worst && i < index)))) {
+                worst = e;
+                index = i;
+            }
+        }
+        worstLink = index;
+        return worst;
+    }
+
+    private void measureSlice(int worker) {
+        int t = pool.size();
+        int m = la3.length;
+        measureRange(worker, (int) ((long) m * worker / t), (int) ((long) m * (worker + 1) / t));
+    }
+
+    private void measureRange(int part, int from, int to) {
+        final double[] x = px;
+        double worst = 0;
+        int index = -1;
+        for (int i = from; i < to; i++) {
+            final int a3 = la3[i];
+            final int b3 = lb3[i];
+            final double dx = x[b3] - x[a3];
+            final double dy = x[b3 + 1] - x[a3 + 1];
+            final double dz = x[b3 + 2] - x[a3 + 2];
+            final double l = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            final double e = Math.abs(l - len[i]) / len[i];
+            if (index < 0 || e > worst || (e == worst && src[i] < src[index]) || (e != e && worst == worst)) {
+                worst = e;
+                index = i;
+            }
+        }
+        worstError[16 * part] = worst;
+        worstIndex[16 * part] = index < 0 ? -1 : src[index];
+    }
+
+    @Override
+    public int worstLink() {
+        return worstLink;
+    }
+}

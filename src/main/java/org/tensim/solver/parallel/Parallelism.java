@@ -1,0 +1,86 @@
+package org.tensim.solver.parallel;
+
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SystemState;
+
+/**
+ * Puts a {@link Simulation} on several threads: its force model gets a
+ * {@link ParallelSpringPass} and, when there are rigid links, its projection gets
+ * {@link ParallelLinkSweeps}, both on one {@link WorkerPool}. Close it to stop the
+ * threads and restore the single-threaded loops.
+ *
+ * <pre>
+ *   try (Parallelism p = Parallelism.install(sim, 2)) {
+ *       sim.runUntil(10, 1e-3);
+ *   }
+ * </pre>
+ *
+ * Results do not depend on the thread count (bit for bit); see the two classes for
+ * how they may differ from the built-in loops (summation and sweep order).
+ */
+public final class Parallelism implements AutoCloseable {
+    private final Simulation sim;
+    private final WorkerPool pool;
+    private final ParallelSpringPass springs;
+    private final ParallelLinkSweeps links;
+
+    private Parallelism(Simulation sim, int threads, ParallelSpringPass.Order order) {
+        this.sim = sim;
+        this.pool = new WorkerPool(threads, "tensim-step");
+        SystemState s = sim.state();
+        this.springs = new ParallelSpringPass(s, pool, order);
+        this.links = s.linkCount() > 0 ? new ParallelLinkSweeps(s, pool) : null;
+        sim.forces().setSpringPass(springs);
+        sim.projection().setSweeps(links);
+    }
+
+    /** Installs with the automatic node order ({@link ParallelSpringPass.Order#AUTO}). */
+    public static Parallelism install(Simulation sim, int threads) {
+        return install(sim, threads, ParallelSpringPass.Order.AUTO);
+    }
+
+    /**
+     * Installs a pool of {@code threads} (>= 1, the calling thread included) on sim.
+     * The step must then be called from one thread at a time.
+     */
+    public static Parallelism install(Simulation sim, int threads, ParallelSpringPass.Order order) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("thread count must be >= 1, got " + threads);
+        }
+        return new Parallelism(sim, threads, order);
+    }
+
+    /** Number of cores the JVM sees: the default thread count. */
+    public static int availableCores() {
+        return Runtime.getRuntime().availableProcessors();
+    }
+
+    public int threads() {
+        return pool.size();
+    }
+
+    public WorkerPool pool() {
+        return pool;
+    }
+
+    public ParallelSpringPass springPass() {
+        return springs;
+    }
+
+    /** The link sweeps, or null when the state has no rigid links. */
+    public ParallelLinkSweeps linkSweeps() {
+        return links;
+    }
+
+    /** Restores the built-in loops and stops the threads. */
+    @Override
+    public void close() {
+        if (sim.forces().springPass() == springs) {
+            sim.forces().setSpringPass(null);
+        }
+        if (links != null && sim.projection().sweeps() == links) {
+            sim.projection().setSweeps(null);
+        }
+        pool.close();
+    }
+}
