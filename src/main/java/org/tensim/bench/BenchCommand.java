@@ -1,43 +1,77 @@
 package org.tensim.bench;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.io.Json;
-import org.tensim.solver.MidpointRK2;
+import org.tensim.solver.parallel.ParallelSpringPass;
+import org.tensim.solver.parallel.Parallelism;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
-/** {@code tensim bench}: figures of the force pass and of whole steps on the lattice. */
+/** {@code tensim bench}: figures of the force pass and of whole steps, per scene, size and thread count. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Benchmark on the lattice cube of n x n x n nodes (axis and face-diagonal springs,",
-            "bottom fixed, gravity). Prints one JSON line per case. Figures only: nothing is asserted."})
+            "bottom fixed, gravity). Prints one JSON line per case (size x threads); with --out, also",
+            "writes bench.jsonl and, for two sizes or more, the scaling chart scaling.png.",
+            "Figures only: nothing is asserted. See docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
+    @Option(names = "--scene", paramLabel = "NAME",
+            description = "scene: lattice or diaphragm (default: ${DEFAULT-VALUE})")
+    String scene = "lattice";
+
     @Option(names = "--n", split = ",", paramLabel = "N[,N...]",
             description = "lattice sizes, nodes per side (default: ${DEFAULT-VALUE})")
     List<Integer> sizes = List.of(11, 21, 31);
 
     @Option(names = "--threads", split = ",", paramLabel = "T[,T...]",
-            description = "thread counts (default: ${DEFAULT-VALUE}; the step is single-threaded for now)")
-    List<Integer> threads = List.of(1);
+            description = "thread counts (default: all cores, here ${DEFAULT-VALUE})")
+    List<Integer> threads = List.of(Parallelism.availableCores());
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: ${DEFAULT-VALUE})")
-    double dt = 1e-3;
-
-    @Option(names = "--steps", paramLabel = "K", description = "timed steps per repetition (default: ${DEFAULT-VALUE})")
-    int steps = 100;
-
-    @Option(names = "--repeats", paramLabel = "R", description = "repetitions; best and median reported (default: ${DEFAULT-VALUE})")
-    int repeats = 5;
+    @Option(names = "--integrator", paramLabel = "NAME",
+            description = "integrator (default: ${DEFAULT-VALUE}, the paper's midpoint RK2)")
+    String integrator = "rk2";
 
     @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
     boolean links;
 
+    @Option(names = "--order", paramLabel = "ORDER",
+            description = "internal node order: auto, authored or rcm (default: ${DEFAULT-VALUE})")
+    String order = "auto";
+
+    @Option(names = "--shuffle", description = "number the scene's nodes, springs and links randomly first "
+            + "(an arbitrarily numbered mesh; default: off)")
+    boolean shuffle;
+
+    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: ${DEFAULT-VALUE})")
+    double dt = 1e-3;
+
+    @Option(names = "--steps", paramLabel = "K",
+            description = "timed steps per repetition; 0 = about 2e7 spring evaluations (default: ${DEFAULT-VALUE})")
+    int steps = 0;
+
+    @Option(names = "--repeats", paramLabel = "R", description = "repetitions; best and median reported (default: ${DEFAULT-VALUE})")
+    int repeats = 5;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "also write DIR/bench.jsonl and DIR/scaling.png")
+    Path out;
+
     @Override
-    public Integer call() {
+    public Integer call() throws IOException {
+        if (!"lattice".equals(scene)) {
+            if ("diaphragm".equals(scene)) {
+                throw new IllegalArgumentException("--scene diaphragm: this build has no diaphragm scene yet; "
+                        + "use --scene lattice");
+            }
+            throw new IllegalArgumentException("--scene " + scene + ": expected lattice or diaphragm");
+        }
         for (int t : threads) {
-            if (t != 1) {
-                throw new IllegalArgumentException("--threads " + t + ": only 1 thread is implemented so far");
+            if (t < 1) {
+                throw new IllegalArgumentException("--threads " + t + ": a thread count must be >= 1");
             }
         }
         for (int n : sizes) {
@@ -45,13 +79,46 @@ public final class BenchCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--n " + n + ": a lattice needs at least 2 nodes per side");
             }
         }
-        if (steps < 1 || repeats < 1) {
-            throw new IllegalArgumentException("--steps and --repeats must be >= 1, got " + steps + " and " + repeats);
+        if (steps < 0 || repeats < 1) {
+            throw new IllegalArgumentException("--steps must be >= 0 and --repeats >= 1, got " + steps + " and "
+                    + repeats);
+        }
+        if (!(dt > 0) || !Double.isFinite(dt)) {
+            throw new IllegalArgumentException("--dt " + dt + ": the time step must be a finite number > 0 s");
+        }
+        ParallelSpringPass.Order ord = parseOrder(order);
+        IntegratorChoice.create(integrator); // fails early on an unknown name
+        List<Map<String, Object>> results = new ArrayList<>();
+        if (out != null) {
+            Files.createDirectories(out);
+            Files.deleteIfExists(out.resolve("bench.jsonl"));
         }
         for (int n : sizes) {
-            Map<String, Object> r = LatticeBenchmark.run(n, links, new MidpointRK2(), dt, steps, repeats);
-            System.out.println(Json.line(r));
+            for (int t : threads) {
+                LatticeBenchmark.Case c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links),
+                        shuffle, IntegratorChoice.create(integrator), t, ord, dt, steps, repeats);
+                Map<String, Object> r = LatticeBenchmark.run(c);
+                results.add(r);
+                String line = Json.line(r);
+                System.out.println(line);
+                if (out != null) {
+                    Files.writeString(out.resolve("bench.jsonl"), line + "\n", java.nio.charset.StandardCharsets.UTF_8,
+                            java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND);
+                }
+            }
+        }
+        if (out != null && sizes.size() >= 2) {
+            ScalingChart.write(results, out.resolve("scaling.png"));
         }
         return 0;
+    }
+
+    static ParallelSpringPass.Order parseOrder(String s) {
+        for (ParallelSpringPass.Order o : ParallelSpringPass.Order.values()) {
+            if (o.name().equalsIgnoreCase(s)) {
+                return o;
+            }
+        }
+        throw new IllegalArgumentException("--order " + s + ": expected auto, authored or rcm");
     }
 }

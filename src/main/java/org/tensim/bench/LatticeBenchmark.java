@@ -1,21 +1,27 @@
 package org.tensim.bench;
 
+import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.tensim.model.Topology;
 import org.tensim.scene.LatticeScene;
+import org.tensim.scene.ShuffledScene;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.Stage;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.parallel.ParallelSpringPass;
+import org.tensim.solver.parallel.Parallelism;
 
 /**
- * Times the force pass and whole steps on the benchmark lattice
- * ({@link LatticeScene}: spacing 0.1 m, 1 kg nodes, 1000 N/m springs, no spring
- * damping, gravity, bottom fixed). Reports the best and the median of repeated
- * runs, so that noise from a shared machine shows.
+ * Times the force pass and whole steps of one case (a scene, an integrator, a
+ * thread count). The benchmark lattice ({@link LatticeScene}: spacing 0.1 m, 1 kg
+ * nodes, 1000 N/m springs, no spring damping, gravity, bottom fixed) is built here;
+ * other scenes come in as topologies. Reports the best and the median of repeated
+ * runs, so that noise from a shared machine shows; the state is reset to rest
+ * before each repetition so that long runs of the undamped lattice stay bounded.
  */
 public final class LatticeBenchmark {
     /** Lattice spacing, m. */
@@ -24,77 +30,112 @@ public final class LatticeBenchmark {
     public static final double MASS_KG = 1;
     /** Spring stiffness, N/m: w_max h stays about 0.2 at dt = 1e-3 s. */
     public static final double STIFFNESS_N_PER_M = 1000;
+    /** Spring evaluations aimed at per timed repetition: about 0.1-0.3 s of work. */
+    static final double WORK_PER_REPEAT = 2e7;
 
     private LatticeBenchmark() {
     }
 
-    /**
-     * Runs one case and returns its figures (keys as printed).
-     *
-     * @param n         nodes per side
-     * @param links     add a rigid link along one body diagonal of every cell
-     * @param dt        time step, s
-     * @param steps     timed steps per repetition
-     * @param repeats   repetitions (best and median are reported)
-     */
-    public static Map<String, Object> run(int n, boolean links, Integrator integrator, double dt, int steps,
-            int repeats) {
-        Topology t = LatticeScene.build(n, SPACING_M, MASS_KG, STIFFNESS_N_PER_M, 0, links);
-        SystemState s = SystemState.compile(t);
-        Simulation sim = new Simulation(s, integrator);
-        ForceModel fm = sim.forces();
-        double[] f = new double[s.x.length];
+    /** The benchmark lattice of n nodes per side, optionally with rigid body diagonals. */
+    public static Topology lattice(int n, boolean links) {
+        return LatticeScene.build(n, SPACING_M, MASS_KG, STIFFNESS_N_PER_M, 0, links);
+    }
 
-        // Force pass: warm up, then best/median over repeats of enough passes for ~0.2 s.
-        int passes = (int) Math.max(5, 4e7 / Math.max(1, s.springCount()));
-        for (int i = 0; i < 3 * passes; i++) {
-            fm.computeForces(0, s.x, s.v, f);
-        }
-        double[] forceRate = new double[repeats];
-        for (int r = 0; r < repeats; r++) {
-            long t0 = System.nanoTime();
-            for (int i = 0; i < passes; i++) {
+    /** One case: what to run and how long. */
+    public record Case(String scene, int n, Topology topology, boolean shuffled, Integrator integrator,
+            int threads, ParallelSpringPass.Order order, double dt, int steps, int repeats) {
+    }
+
+    /** Runs one case and returns its figures (keys as printed). */
+    public static Map<String, Object> run(Case c) {
+        Topology t = c.shuffled() ? ShuffledScene.shuffle(c.topology(), 1234) : c.topology();
+        SystemState s = SystemState.compile(t);
+        Simulation sim = new Simulation(s, c.integrator());
+        int ns = Math.max(1, s.springCount());
+        int steps = c.steps() > 0 ? c.steps()
+                : (int) Math.max(10, Math.min(5000, WORK_PER_REPEAT / ns / c.integrator().forceEvaluationsPerStep()));
+        Map<String, Object> m = new LinkedHashMap<>();
+        try (Parallelism par = Parallelism.install(sim, c.threads(), c.order())) {
+            ForceModel fm = sim.forces();
+            double[] f = new double[s.x.length];
+
+            // Force pass: warm up, then best/median over repeats.
+            int passes = (int) Math.max(5, WORK_PER_REPEAT / ns);
+            for (int i = 0; i < 2 * passes; i++) {
                 fm.computeForces(0, s.x, s.v, f);
             }
-            forceRate[r] = (double) s.springCount() * passes / ((System.nanoTime() - t0) / 1e9);
-        }
-
-        // Whole steps (all stages), after a warm-up.
-        for (int i = 0; i < Math.min(steps, 50); i++) {
-            sim.step(dt);
-        }
-        double[] msPerStep = new double[repeats];
-        double[] projMs = new double[repeats];
-        for (int r = 0; r < repeats; r++) {
-            sim.profile().reset();
-            long t0 = System.nanoTime();
-            for (int i = 0; i < steps; i++) {
-                sim.step(dt);
+            double[] forceRate = new double[c.repeats()];
+            for (int r = 0; r < c.repeats(); r++) {
+                long t0 = System.nanoTime();
+                for (int i = 0; i < passes; i++) {
+                    fm.computeForces(0, s.x, s.v, f);
+                }
+                forceRate[r] = (double) s.springCount() * passes / ((System.nanoTime() - t0) / 1e9);
             }
-            msPerStep[r] = (System.nanoTime() - t0) / 1e6 / steps;
-            projMs[r] = sim.profile().meanMillis(Stage.PROJECT);
-        }
 
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("scene", "lattice");
-        m.put("n", n);
-        m.put("nodes", s.nodeCount);
-        m.put("springs", s.springCount());
-        m.put("links", s.linkCount());
-        m.put("threads", 1);
-        m.put("integrator", integrator.name());
-        m.put("dt_s", dt);
-        m.put("steps", steps);
-        m.put("repeats", repeats);
-        m.put("ms_per_step", median(msPerStep));
-        m.put("ms_per_step_best", min(msPerStep));
-        m.put("force_pass_springs_per_s", max(forceRate));
-        m.put("force_pass_springs_per_s_median", median(forceRate));
-        m.put("step_springs_per_s", s.springCount() / (min(msPerStep) / 1e3));
-        m.put("step_springs_per_s_median", s.springCount() / (median(msPerStep) / 1e3));
-        m.put("projection_ms_per_step", median(projMs));
-        m.put("projection_iterations_last", sim.projection().iterations());
+            // Whole steps (all stages, the scene-graph sync included), after a warm-up.
+            SceneGraphSync sync = new SceneGraphSync(s.nodeCount);
+            long[] iterations = new long[1];
+            sim.addListener(sync);
+            sim.addListener(x -> iterations[0] += x.projection().iterations());
+            rest(s);
+            for (int i = 0; i < Math.max(10, steps / 2); i++) {
+                sim.step(c.dt());
+            }
+            double[] msPerStep = new double[c.repeats()];
+            double[] projMs = new double[c.repeats()];
+            double[] syncMs = new double[c.repeats()];
+            for (int r = 0; r < c.repeats(); r++) {
+                rest(s);
+                sim.profile().reset();
+                sync.reset();
+                iterations[0] = 0;
+                long t0 = System.nanoTime();
+                for (int i = 0; i < steps; i++) {
+                    sim.step(c.dt());
+                }
+                msPerStep[r] = (System.nanoTime() - t0) / 1e6 / steps;
+                projMs[r] = sim.profile().meanMillis(Stage.PROJECT);
+                syncMs[r] = sync.meanMillis();
+            }
+
+            m.put("scene", c.scene());
+            m.put("n", c.n());
+            m.put("nodes", s.nodeCount);
+            m.put("springs", s.springCount());
+            m.put("links", s.linkCount());
+            m.put("threads", c.threads());
+            m.put("integrator", c.integrator().name());
+            m.put("order", c.order().name().toLowerCase());
+            m.put("shuffled", c.shuffled());
+            m.put("permuted", par.springPass().permuted());
+            m.put("dt_s", c.dt());
+            m.put("steps", steps);
+            m.put("repeats", c.repeats());
+            m.put("ms_per_step", median(msPerStep));
+            m.put("ms_per_step_best", min(msPerStep));
+            m.put("force_pass_springs_per_s", max(forceRate));
+            m.put("force_pass_springs_per_s_median", median(forceRate));
+            m.put("step_springs_per_s", s.springCount() / (min(msPerStep) / 1e3));
+            m.put("step_springs_per_s_median", s.springCount() / (median(msPerStep) / 1e3));
+            m.put("ns_per_spring_step", min(msPerStep) * 1e6 / ns);
+            m.put("projection_ms_per_step", median(projMs));
+            m.put("projection_ms_per_step_best", min(projMs));
+            m.put("projection_iterations_per_step", (double) iterations[0] / steps);
+            m.put("link_colours", par.linkSweeps() == null ? 0 : par.linkSweeps().colours());
+            m.put("sync_ms_per_step", median(syncMs));
+            m.put("sync_ms_per_step_best", min(syncMs));
+            m.put("duplicated_springs", par.springPass().duplicatedSprings());
+            m.put("load_average", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+            m.put("check", sync.coords().length > 0 ? sync.coords()[sync.coords().length - 1] : 0);
+        }
         return m;
+    }
+
+    /** Back to the initial positions, at rest (outside the timed region). */
+    private static void rest(SystemState s) {
+        System.arraycopy(s.x0, 0, s.x, 0, s.x.length);
+        Arrays.fill(s.v, 0);
     }
 
     static double median(double[] a) {

@@ -25,6 +25,8 @@ public final class Simulation {
     private final ForceModel forces;
     private final RigidLinkProjection projection = new RigidLinkProjection();
     private final List<StepListener> listeners = new CopyOnWriteArrayList<>();
+    // Notified from this array: iterating the list would allocate an iterator per step.
+    private volatile StepListener[] listenerSnapshot = new StepListener[0];
     private final StepProfile profile = new StepProfile();
     private final double[] unconstrained;
     private Integrator integrator;
@@ -95,11 +97,17 @@ public final class Simulation {
     }
 
     public void addListener(StepListener l) {
-        listeners.add(l);
+        synchronized (listeners) {
+            listeners.add(l);
+            listenerSnapshot = listeners.toArray(new StepListener[0]);
+        }
     }
 
     public void removeListener(StepListener l) {
-        listeners.remove(l);
+        synchronized (listeners) {
+            listeners.remove(l);
+            listenerSnapshot = listeners.toArray(new StepListener[0]);
+        }
     }
 
     /**
@@ -139,7 +147,7 @@ public final class Simulation {
         long t4 = System.nanoTime();
         profile.record(Stage.CHECK, t4 - t3);
 
-        for (StepListener l : listeners) {
+        for (StepListener l : listenerSnapshot) {
             l.afterStep(this);
         }
         profile.record(Stage.NOTIFY, System.nanoTime() - t4);

@@ -21,6 +21,7 @@ public final class ParallelLinkSweeps implements LinkSweeps {
     public static final int MIN_PARALLEL_LINKS = 2048;
 
     private final WorkerPool pool;
+    private final int minParallel;
     private final int[] colourStart; // links of colour c: [colourStart[c], colourStart[c+1])
     private final int[] la; // node ids
     private final int[] lb;
@@ -39,7 +40,19 @@ public final class ParallelLinkSweeps implements LinkSweeps {
 
     /** Colours the links of {@code s} and lays them out by colour. */
     public ParallelLinkSweeps(SystemState s, WorkerPool pool) {
+        this(s, pool, MIN_PARALLEL_LINKS);
+    }
+
+    /**
+     * As {@link #ParallelLinkSweeps(SystemState, WorkerPool)}, with the number of
+     * links (>= 1) from which a colour, or the measure, is split among the threads.
+     */
+    public ParallelLinkSweeps(SystemState s, WorkerPool pool, int minParallelLinks) {
+        if (minParallelLinks < 1) {
+            throw new IllegalArgumentException("minParallelLinks must be >= 1, got " + minParallelLinks);
+        }
         this.pool = pool;
+        this.minParallel = minParallelLinks;
         final int m = s.linkCount();
         LinkColoring col = LinkColoring.greedy(s.nodeCount, s.linkA, s.linkB);
         int k = col.colours();
@@ -83,7 +96,7 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         w = s.invMass;
         for (int c = 0; c < colourStart.length - 1; c++) {
             colour = c;
-            if (colourStart[c + 1] - colourStart[c] < MIN_PARALLEL_LINKS) {
+            if (colourStart[c + 1] - colourStart[c] < minParallel) {
                 sweepRange(colourStart[c], colourStart[c + 1]);
             } else {
                 pool.run(sweepTask);
@@ -134,13 +147,13 @@ public final class ParallelLinkSweeps implements LinkSweeps {
     @Override
     public double measure(SystemState s, double[] x) {
         px = x;
-        if (la3.length < MIN_PARALLEL_LINKS) {
+        if (la3.length < minParallel) {
             measureRange(0, 0, la3.length);
         } else {
             pool.run(measureTask);
         }
         px = null;
-        int parts = la3.length < MIN_PARALLEL_LINKS ? 1 : pool.size();
+        int parts = la3.length < minParallel ? 1 : pool.size();
         double worst = 0;
         int index = -1;
         for (int p = 0; p < parts; p++) {
