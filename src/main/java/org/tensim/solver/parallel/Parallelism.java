@@ -1,13 +1,17 @@
 package org.tensim.solver.parallel;
 
+import org.tensim.solver.Integrator;
+import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
 /**
  * Puts a {@link Simulation} on several threads: its force model gets a
  * {@link ParallelSpringPass} and, when there are rigid links, its projection gets
- * {@link ParallelLinkSweeps}, both on one {@link WorkerPool}. Close it to stop the
- * threads and restore the single-threaded loops.
+ * {@link ParallelLinkSweeps}, both on one {@link WorkerPool}; the paper's
+ * {@link MidpointRK2} is swapped for {@link ParallelMidpointRK2} (same arithmetic,
+ * node loops split). Other integrators keep their own node loops, single-threaded.
+ * Close it to stop the threads and restore the single-threaded loops and integrator.
  *
  * <pre>
  *   try (Parallelism p = Parallelism.install(sim, 2)) {
@@ -23,6 +27,8 @@ public final class Parallelism implements AutoCloseable {
     private final WorkerPool pool;
     private final ParallelSpringPass springs;
     private final ParallelLinkSweeps links;
+    private final Integrator replaced;
+    private final Integrator installed;
 
     private Parallelism(Simulation sim, int threads, ParallelSpringPass.Order order) {
         this.sim = sim;
@@ -32,6 +38,14 @@ public final class Parallelism implements AutoCloseable {
         this.links = s.linkCount() > 0 ? new ParallelLinkSweeps(s, pool) : null;
         sim.forces().setSpringPass(springs);
         sim.projection().setSweeps(links);
+        if (sim.integrator() instanceof MidpointRK2) {
+            replaced = sim.integrator();
+            installed = new ParallelMidpointRK2(pool);
+            sim.setIntegrator(installed);
+        } else {
+            replaced = null;
+            installed = null;
+        }
     }
 
     /** Installs with the automatic node order ({@link ParallelSpringPass.Order#AUTO}). */
@@ -80,6 +94,9 @@ public final class Parallelism implements AutoCloseable {
         }
         if (links != null && sim.projection().sweeps() == links) {
             sim.projection().setSweeps(null);
+        }
+        if (installed != null && sim.integrator() == installed) {
+            sim.setIntegrator(replaced);
         }
         pool.close();
     }
