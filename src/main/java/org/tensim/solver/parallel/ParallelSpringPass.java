@@ -69,8 +69,10 @@ public final class ParallelSpringPass implements SpringForcePass {
         int first;
         int last; // touched internal nodes [first, last]
         int count;
-        int[] ab;
-        double[] kl;
+        int[] sa; // 3 x (internal node - first)
+        int[] sb;
+        double[] k;
+        double[] rl;
         double[] c;
         int[] src; // authored spring index of each entry
         double[] ft;
@@ -142,14 +144,16 @@ public final class ParallelSpringPass implements SpringForcePass {
             b.first = first;
             b.last = Math.max(last, first);
             b.count = cnt;
-            b.ab = new int[2 * cnt];
-            b.kl = new double[2 * cnt];
+            b.sa = new int[cnt];
+            b.sb = new int[cnt];
+            b.k = new double[cnt];
+            b.rl = new double[cnt];
             b.c = new double[cnt];
             b.src = new int[cnt];
             for (int i = 0, k = 0; i < ns; i++) {
                 if (owns(b, ia[i]) || owns(b, ib[i])) {
-                    b.ab[2 * k] = 3 * (ia[i] - b.first);
-                    b.ab[2 * k + 1] = 3 * (ib[i] - b.first);
+                    b.sa[k] = 3 * (ia[i] - b.first);
+                    b.sb[k] = 3 * (ib[i] - b.first);
                     b.src[k] = sorted[i];
                     k++;
                 }
@@ -179,8 +183,8 @@ public final class ParallelSpringPass implements SpringForcePass {
         for (Block b : blocks) {
             for (int k = 0; k < b.count; k++) {
                 int i = b.src[k];
-                b.kl[2 * k] = s.springK[i];
-                b.kl[2 * k + 1] = s.springL[i];
+                b.k[k] = s.springK[i];
+                b.rl[k] = s.springL[i];
                 b.c[k] = s.springC[i];
                 d |= s.springC[i] != 0;
             }
@@ -235,9 +239,9 @@ public final class ParallelSpringPass implements SpringForcePass {
         final double[] out = f;
         if (direct) {
             if (damped) {
-                SpringKernels.springsDamped(b.ab, b.kl, b.c, b.count, x, v, 0, out);
+                SpringKernels.springsDamped(b.sa, b.sb, b.k, b.rl, b.c, b.count, x, v, 0, out);
             } else {
-                SpringKernels.springs(b.ab, b.kl, b.count, x, 0, out);
+                SpringKernels.springs(b.sa, b.sb, b.k, b.rl, b.count, x, 0, out);
             }
             return;
         }
@@ -250,9 +254,9 @@ public final class ParallelSpringPass implements SpringForcePass {
             System.arraycopy(out, 3 * b.lo, ft, own, ownEnd - own);
             Arrays.fill(ft, ownEnd, ft.length, 0.0);
             if (damped) {
-                SpringKernels.springsDamped(b.ab, b.kl, b.c, b.count, x, v, 3 * b.first, ft);
+                SpringKernels.springsDamped(b.sa, b.sb, b.k, b.rl, b.c, b.count, x, v, 3 * b.first, ft);
             } else {
-                SpringKernels.springs(b.ab, b.kl, b.count, x, 3 * b.first, ft);
+                SpringKernels.springs(b.sa, b.sb, b.k, b.rl, b.count, x, 3 * b.first, ft);
             }
             System.arraycopy(ft, own, out, 3 * b.lo, ownEnd - own);
             return;
@@ -277,9 +281,9 @@ public final class ParallelSpringPass implements SpringForcePass {
                 vt[k + 1] = v[o + 1];
                 vt[k + 2] = v[o + 2];
             }
-            SpringKernels.springsDamped(b.ab, b.kl, b.c, b.count, xt, vt, 0, ft);
+            SpringKernels.springsDamped(b.sa, b.sb, b.k, b.rl, b.c, b.count, xt, vt, 0, ft);
         } else {
-            SpringKernels.springs(b.ab, b.kl, b.count, xt, 0, ft);
+            SpringKernels.springs(b.sa, b.sb, b.k, b.rl, b.count, xt, 0, ft);
         }
         for (int j = b.lo, k = own; j < b.hi; j++, k += 3) {
             final int o = 3 * ord[j];
