@@ -127,7 +127,6 @@ public final class LatticeBenchmark {
             m.put("sync_ms_per_step_best", min(syncMs));
             m.put("duplicated_springs", par.springPass().duplicatedSprings());
             m.put("load_average", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
-            m.put("check", sync.coords().length > 0 ? sync.coords()[sync.coords().length - 1] : 0);
         }
         return m;
     }
