@@ -43,6 +43,11 @@ public final class BenchCommand implements Callable<Integer> {
             description = "internal node order: auto, authored or rcm (default: ${DEFAULT-VALUE})")
     String order = "auto";
 
+    @Option(names = "--solver", paramLabel = "NAME",
+            description = "parallel (the multi-threaded step) or builtin (the single-threaded loops, for "
+                + "before/after figures; --threads and --order are then ignored) (default: ${DEFAULT-VALUE})")
+    String solver = "parallel";
+
     @Option(names = "--shuffle", description = "number the scene's nodes, springs and links randomly first "
             + "(an arbitrarily numbered mesh; default: off)")
     boolean shuffle;
@@ -87,6 +92,11 @@ public final class BenchCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--dt " + dt + ": the time step must be a finite number > 0 s");
         }
         ParallelSpringPass.Order ord = parseOrder(order);
+        if (!"parallel".equals(solver) && !"builtin".equals(solver)) {
+            throw new IllegalArgumentException("--solver " + solver + ": expected parallel or builtin");
+        }
+        boolean builtin = "builtin".equals(solver);
+        List<Integer> threadCounts = builtin ? List.of(1) : threads;
         IntegratorChoice.create(integrator); // fails early on an unknown name
         List<Map<String, Object>> results = new ArrayList<>();
         if (out != null) {
@@ -94,9 +104,9 @@ public final class BenchCommand implements Callable<Integer> {
             Files.deleteIfExists(out.resolve("bench.jsonl"));
         }
         for (int n : sizes) {
-            for (int t : threads) {
+            for (int t : threadCounts) {
                 LatticeBenchmark.Case c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links),
-                        shuffle, IntegratorChoice.create(integrator), t, ord, dt, steps, repeats);
+                        shuffle, IntegratorChoice.create(integrator), t, ord, builtin, dt, steps, repeats);
                 Map<String, Object> r = LatticeBenchmark.run(c);
                 results.add(r);
                 String line = Json.line(r);

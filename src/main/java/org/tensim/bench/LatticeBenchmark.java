@@ -43,7 +43,7 @@ public final class LatticeBenchmark {
 
     /** One case: what to run and how long. */
     public record Case(String scene, int n, Topology topology, boolean shuffled, Integrator integrator,
-            int threads, ParallelSpringPass.Order order, double dt, int steps, int repeats) {
+            int threads, ParallelSpringPass.Order order, boolean builtin, double dt, int steps, int repeats) {
     }
 
     /** Runs one case and returns its figures (keys as printed). */
@@ -55,7 +55,8 @@ public final class LatticeBenchmark {
         int steps = c.steps() > 0 ? c.steps()
                 : (int) Math.max(10, Math.min(5000, WORK_PER_REPEAT / ns / c.integrator().forceEvaluationsPerStep()));
         Map<String, Object> m = new LinkedHashMap<>();
-        try (Parallelism par = Parallelism.install(sim, c.threads(), c.order())) {
+        // builtin: the single-threaded loops of ForceModel and RigidLinkProjection, for before/after figures.
+        try (Parallelism par = c.builtin() ? null : Parallelism.install(sim, c.threads(), c.order())) {
             ForceModel fm = sim.forces();
             double[] f = new double[s.x.length];
 
@@ -104,11 +105,12 @@ public final class LatticeBenchmark {
             m.put("nodes", s.nodeCount);
             m.put("springs", s.springCount());
             m.put("links", s.linkCount());
-            m.put("threads", c.threads());
+            m.put("threads", c.builtin() ? 1 : c.threads());
+            m.put("solver", c.builtin() ? "builtin" : "parallel");
             m.put("integrator", c.integrator().name());
             m.put("order", c.order().name().toLowerCase());
             m.put("shuffled", c.shuffled());
-            m.put("permuted", par.springPass().permuted());
+            m.put("permuted", par != null && par.springPass().permuted());
             m.put("dt_s", c.dt());
             m.put("steps", steps);
             m.put("repeats", c.repeats());
@@ -122,10 +124,10 @@ public final class LatticeBenchmark {
             m.put("projection_ms_per_step", median(projMs));
             m.put("projection_ms_per_step_best", min(projMs));
             m.put("projection_iterations_per_step", (double) iterations[0] / steps);
-            m.put("link_colours", par.linkSweeps() == null ? 0 : par.linkSweeps().colours());
+            m.put("link_colours", par == null || par.linkSweeps() == null ? 0 : par.linkSweeps().colours());
             m.put("sync_ms_per_step", median(syncMs));
             m.put("sync_ms_per_step_best", min(syncMs));
-            m.put("duplicated_springs", par.springPass().duplicatedSprings());
+            m.put("duplicated_springs", par == null ? 0 : par.springPass().duplicatedSprings());
             m.put("load_average", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         }
         return m;

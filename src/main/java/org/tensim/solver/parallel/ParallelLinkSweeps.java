@@ -11,6 +11,13 @@ import org.tensim.solver.SystemState;
  * their lower node), not the authored order: the converged positions satisfy the
  * same tolerance but differ from the authored-order sweep's within it.
  *
+ * <p>Colours are swept from the smallest to the largest. After a sweep, the links of
+ * the last colour are exact to rounding (each was just corrected, and no later
+ * correction moved its nodes), so the measure that follows a sweep skips them: with
+ * the two or three colours of chains and lattices that saves a third to a half of
+ * the measure. A link of that colour left uncorrected (both ends immovable, or zero
+ * length) makes the measure cover every link again.
+ *
  * <p>The correction per link is the one of {@code RigidLinkProjection}: the ends move
  * along the link, in inverse proportion to their masses; fixed and driven nodes
  * (inverse mass 0) never move. A colour with fewer than {@link #MIN_PARALLEL_LINKS}
@@ -33,6 +40,10 @@ public final class ParallelLinkSweeps implements LinkSweeps {
     private final int[] worstIndex;
     private final WorkerPool.Task sweepTask = this::sweepSlice;
     private final WorkerPool.Task measureTask = this::measureSlice;
+    private final int[] skipped; // per worker, one cache line apart: last colour's links left uncorrected
+    private final boolean lastColourHasImmovable;
+    private double[] swept; // the array of the last sweep, until the next measure
+    private int measureEnd;
     private int worstLink = -1;
     private int colour;
     private double[] px;
@@ -56,9 +67,26 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         final int m = s.linkCount();
         LinkColoring col = LinkColoring.greedy(s.nodeCount, s.linkA, s.linkB);
         int k = col.colours();
+        // Colours swept from the smallest to the largest: after a sweep the last colour's
+        // links are exact (they share no node and nothing moves them afterwards), so the
+        // measure skips the largest colour.
+        int[] size = new int[k];
+        for (int i = 0; i < m; i++) {
+            size[col.colour(i)]++;
+        }
+        Integer[] bySize = new Integer[k];
+        for (int c = 0; c < k; c++) {
+            bySize[c] = c;
+        }
+        java.util.Arrays.sort(bySize, (p, q) -> size[p] != size[q] ? Integer.compare(size[p], size[q])
+                : Integer.compare(p, q));
+        final int[] slot = new int[k];
+        for (int c = 0; c < k; c++) {
+            slot[bySize[c]] = c;
+        }
         colourStart = new int[k + 1];
         for (int i = 0; i < m; i++) {
-            colourStart[col.colour(i) + 1]++;
+            colourStart[slot[col.colour(i)] + 1]++;
         }
         for (int c = 0; c < k; c++) {
             colourStart[c + 1] += colourStart[c];
@@ -73,7 +101,7 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         len = new double[m];
         src = new int[m];
         for (int i : byLower) {
-            int p = fill[col.colour(i)]++;
+            int p = fill[slot[col.colour(i)]]++;
             la[p] = s.linkA[i];
             lb[p] = s.linkB[i];
             la3[p] = 3 * s.linkA[i];
@@ -83,6 +111,12 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         }
         worstError = new double[16 * pool.size()]; // one cache line apart per worker
         worstIndex = new int[16 * pool.size()];
+        skipped = new int[16 * pool.size()];
+        boolean immovable = false;
+        for (int i = k == 0 ? 0 : colourStart[k - 1]; i < m; i++) {
+            immovable |= s.invMass[la[i]] + s.invMass[lb[i]] == 0;
+        }
+        lastColourHasImmovable = immovable;
     }
 
     /** Number of link colours. */
@@ -94,26 +128,29 @@ public final class ParallelLinkSweeps implements LinkSweeps {
     public void sweep(SystemState s, double[] x) {
         px = x;
         w = s.invMass;
+        java.util.Arrays.fill(skipped, 0);
         for (int c = 0; c < colourStart.length - 1; c++) {
             colour = c;
             if (colourStart[c + 1] - colourStart[c] < minParallel) {
-                sweepRange(colourStart[c], colourStart[c + 1]);
+                sweepRange(0, colourStart[c], colourStart[c + 1]);
             } else {
                 pool.run(sweepTask);
             }
         }
         px = null;
         w = null;
+        swept = x;
     }
 
     private void sweepSlice(int worker) {
         int from = colourStart[colour];
         int count = colourStart[colour + 1] - from;
         int t = pool.size();
-        sweepRange(from + (int) ((long) count * worker / t), from + (int) ((long) count * (worker + 1) / t));
+        sweepRange(worker, from + (int) ((long) count * worker / t),
+                from + (int) ((long) count * (worker + 1) / t));
     }
 
-    private void sweepRange(int from, int to) {
+    private void sweepRange(int worker, int from, int to) {
         final double[] x = px;
         final double[] wm = w;
         for (int i = from; i < to; i++) {
@@ -123,6 +160,7 @@ public final class ParallelLinkSweeps implements LinkSweeps {
             final double wb = wm[lb[i]];
             final double wsum = wa + wb;
             if (wsum == 0) {
+                skipped[16 * worker] = 1;
                 continue; // both ends immovable: the error is reported by measure()
             }
             final double dx = x[b3] - x[a3];
@@ -130,6 +168,7 @@ public final class ParallelLinkSweeps implements LinkSweeps {
             final double dz = x[b3 + 2] - x[a3 + 2];
             final double l = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (l == 0) {
+                skipped[16 * worker] = 1;
                 continue; // direction undefined; left to the next sweep after neighbours move
             }
             final double r = (l - len[i]) / (l * wsum);
@@ -147,13 +186,19 @@ public final class ParallelLinkSweeps implements LinkSweeps {
     @Override
     public double measure(SystemState s, double[] x) {
         px = x;
-        if (la3.length < minParallel) {
-            measureRange(0, 0, la3.length);
-        } else {
+        // Right after a sweep of x in which every link of the last colour was corrected,
+        // those links are exact to rounding (1e-16 relative): only the others are measured.
+        boolean skipLast = swept == x && !lastColourHasImmovable && colourStart.length > 1 && !anySkipped();
+        measureEnd = skipLast ? colourStart[colourStart.length - 2] : la3.length;
+        swept = null;
+        boolean parallel = measureEnd >= minParallel;
+        if (parallel) {
             pool.run(measureTask);
+        } else {
+            measureRange(0, 0, measureEnd);
         }
         px = null;
-        int parts = la3.length < minParallel ? 1 : pool.size();
+        int parts = parallel ? pool.size() : 1;
         double worst = 0;
         int index = -1;
         for (int p = 0; p < parts; p++) {
@@ -174,9 +219,18 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         return worst;
     }
 
+    private boolean anySkipped() {
+        for (int p = 0; p < skipped.length; p += 16) {
+            if (skipped[p] != 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private void measureSlice(int worker) {
         int t = pool.size();
-        int m = la3.length;
+        int m = measureEnd;
         measureRange(worker, (int) ((long) m * worker / t), (int) ((long) m * (worker + 1) / t));
     }
 

@@ -118,6 +118,59 @@ class ParallelLinkSweepsTest {
         }
     }
 
+    static double fullMeasure(SystemState s, double[] x) {
+        double worst = 0;
+        for (int i = 0; i < s.linkCount(); i++) {
+            int a = 3 * s.linkA[i];
+            int b = 3 * s.linkB[i];
+            double l = Math.sqrt(Math.pow(x[b] - x[a], 2) + Math.pow(x[b + 1] - x[a + 1], 2)
+                    + Math.pow(x[b + 2] - x[a + 2], 2));
+            worst = Math.max(worst, Math.abs(l - s.linkL[i]) / s.linkL[i]);
+        }
+        return worst;
+    }
+
+    @Test
+    void measureAfterASweepSkipsOnlyLinksThatAreExact() {
+        SystemState s = linked(7, 10);
+        SystemState tie = free(5);
+        for (SystemState st : new SystemState[] {s, tie}) {
+            double[] x = perturbed(st, 11);
+            try (WorkerPool pool = new WorkerPool(2, "test")) {
+                ParallelLinkSweeps w = new ParallelLinkSweeps(st, pool, 1);
+                for (int sweep = 0; sweep < 5; sweep++) {
+                    w.sweep(st, x);
+                    double fast = w.measure(st, x);
+                    double full = fullMeasure(st, x);
+                    assertTrue(Math.abs(fast - full) <= 1e-14 + 1e-9 * full, fast + " vs " + full);
+                }
+            }
+        }
+        // A link between two fixed nodes is never corrected: the measure must still see it,
+        // whether it is swept first or last.
+        for (boolean immovableFirst : new boolean[] {true, false}) {
+            Topology t = new Topology();
+            org.tensim.model.Node a = t.addNode(0, 0, 0, 1).fix();
+            org.tensim.model.Node b = t.addNode(1, 0, 0, 1).fix();
+            org.tensim.model.Node c = t.addNode(2, 0, 0, 1);
+            if (!immovableFirst) {
+                t.addRigidLink(b.id(), c.id(), 1);
+            }
+            t.addRigidLink(a.id(), b.id(), 1.5); // wrong length, cannot be fixed
+            if (immovableFirst) {
+                t.addRigidLink(b.id(), c.id(), 1);
+            }
+            SystemState st = SystemState.compile(t);
+            try (WorkerPool pool = new WorkerPool(2, "test")) {
+                ParallelLinkSweeps w = new ParallelLinkSweeps(st, pool, 1);
+                double[] x = st.x.clone();
+                w.sweep(st, x);
+                assertEquals(1 / 3.0, w.measure(st, x), 1e-12);
+                assertEquals(immovableFirst ? 0 : 1, w.worstLink());
+            }
+        }
+    }
+
     @Test
     void worstLinkIsReportedByAuthoredIndex() {
         SystemState s = linked(5, 6);
