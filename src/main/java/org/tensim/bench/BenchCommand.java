@@ -15,9 +15,9 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim bench}: figures of the force pass and of whole steps, per scene, size and thread count. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = {"Benchmark on the lattice cube of n x n x n nodes (axis and face-diagonal springs,",
-            "bottom fixed, gravity). Prints one JSON line per case (size x threads); with --out, also",
-            "writes bench.jsonl and, for two sizes or more, the scaling chart scaling.png.",
+        description = {"Benchmark on the lattice cube of n x n x n nodes (axis and face-diagonal",
+            "springs, bottom fixed, gravity). One JSON line per case (size x threads).",
+            "With --out: DIR/bench.jsonl, and DIR/scaling.png for two sizes or more.",
             "Figures only: nothing is asserted. See docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--scene", paramLabel = "NAME",
