@@ -50,6 +50,14 @@ public final class ParallelMidpointRK2 implements Integrator {
         return 2;
     }
 
+    /**
+     * 0, as for {@link MidpointRK2}: undamped, RK2 grows at every step size
+     * (|R(i w h)| &gt; 1). Used by critical time step checks that ask integrators.
+     */
+    public double undampedStabilityLimit() {
+        return 0;
+    }
+
     @Override
     public void step(ForceModel model, double t, double dt) {
         SystemState st = model.state();
