@@ -21,6 +21,7 @@ public final class ParallelMidpointRK2 implements Integrator {
     static final int MIN_PARALLEL_NODES = 4096;
 
     private final WorkerPool pool;
+    private final int minParallel;
     private final WorkerPool.Task half = this::halfStep;
     private final WorkerPool.Task full = this::fullStep;
     private final double[] scratch = new double[6];
@@ -32,7 +33,16 @@ public final class ParallelMidpointRK2 implements Integrator {
 
     /** @param pool the threads that share the node loops (not closed by this integrator) */
     public ParallelMidpointRK2(WorkerPool pool) {
+        this(pool, MIN_PARALLEL_NODES);
+    }
+
+    /** As {@link #ParallelMidpointRK2(WorkerPool)}, splitting the loops from {@code minParallelNodes} nodes on. */
+    public ParallelMidpointRK2(WorkerPool pool, int minParallelNodes) {
+        if (minParallelNodes < 1) {
+            throw new IllegalArgumentException("minParallelNodes must be >= 1, got " + minParallelNodes);
+        }
         this.pool = pool;
+        this.minParallel = minParallelNodes;
     }
 
     @Override
@@ -82,7 +92,7 @@ public final class ParallelMidpointRK2 implements Integrator {
     }
 
     private void dispatch(WorkerPool.Task task, int nodes) {
-        if (nodes < MIN_PARALLEL_NODES || pool.size() == 1) {
+        if (nodes < minParallel || pool.size() == 1) {
             // The whole range on this thread: worker 0 of a team of one.
             if (task == half) {
                 halfRange(0, nodes);

@@ -46,6 +46,13 @@ public final class ParallelSpringPass implements SpringForcePass {
     /** Span ratio above which {@link Order#AUTO} permutes: below it the gather costs more than it saves. */
     public static final double AUTO_GAIN = 4;
 
+    /**
+     * Springs below which the pass runs on the calling thread alone (a pass of 4,096
+     * springs takes about 25 microseconds: waking a worker and copying buffers would
+     * eat the gain). The results are the same bits either way.
+     */
+    public static final int MIN_PARALLEL_SPRINGS = 4096;
+
     private final SystemState s;
     private final WorkerPool pool;
     private final int[] order; // internal position -> authored id; null when authored
@@ -88,6 +95,14 @@ public final class ParallelSpringPass implements SpringForcePass {
      * @param o     internal node order
      */
     public ParallelSpringPass(SystemState state, WorkerPool pool, Order o) {
+        this(state, pool, o, MIN_PARALLEL_SPRINGS);
+    }
+
+    /**
+     * As {@link #ParallelSpringPass(SystemState, WorkerPool, Order)}, splitting the
+     * springs among the threads only from {@code minParallelSprings} springs on.
+     */
+    public ParallelSpringPass(SystemState state, WorkerPool pool, Order o, int minParallelSprings) {
         this.s = state;
         this.pool = pool;
         final int n = state.nodeCount;
@@ -116,7 +131,7 @@ public final class ParallelSpringPass implements SpringForcePass {
             ib[i] = rank == null ? sb[sorted[i]] : rank[sb[sorted[i]]];
         }
 
-        final int threads = pool.size();
+        final int threads = ns < minParallelSprings ? 1 : pool.size();
         blocks = new Block[threads];
         // Owned ranges: split the sorted springs into equal counts, at node boundaries.
         int[] bounds = new int[threads + 1];
@@ -193,7 +208,7 @@ public final class ParallelSpringPass implements SpringForcePass {
         version = s.springParameterVersion();
     }
 
-    /** Threads used. */
+    /** Threads used (1 below {@link #MIN_PARALLEL_SPRINGS} springs). */
     public int threads() {
         return blocks.length;
     }
@@ -226,7 +241,11 @@ public final class ParallelSpringPass implements SpringForcePass {
         px = x;
         pv = v;
         f = forces;
-        pool.run(task);
+        if (blocks.length == 1) {
+            work(0);
+        } else {
+            pool.run(task);
+        }
         px = null;
         pv = null;
         f = null;

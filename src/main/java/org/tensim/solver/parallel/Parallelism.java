@@ -30,17 +30,20 @@ public final class Parallelism implements AutoCloseable {
     private final Integrator replaced;
     private final Integrator installed;
 
-    private Parallelism(Simulation sim, int threads, ParallelSpringPass.Order order) {
+    private Parallelism(Simulation sim, int threads, ParallelSpringPass.Order order, int minWork) {
         this.sim = sim;
         this.pool = new WorkerPool(threads, "tensim-step");
         SystemState s = sim.state();
-        this.springs = new ParallelSpringPass(s, pool, order);
-        this.links = s.linkCount() > 0 ? new ParallelLinkSweeps(s, pool) : null;
+        boolean defaults = minWork <= 0;
+        this.springs = new ParallelSpringPass(s, pool, order,
+                defaults ? ParallelSpringPass.MIN_PARALLEL_SPRINGS : minWork);
+        this.links = s.linkCount() == 0 ? null
+                : new ParallelLinkSweeps(s, pool, defaults ? ParallelLinkSweeps.MIN_PARALLEL_LINKS : minWork);
         sim.forces().setSpringPass(springs);
         sim.projection().setSweeps(links);
         if (sim.integrator() instanceof MidpointRK2) {
             replaced = sim.integrator();
-            installed = new ParallelMidpointRK2(pool);
+            installed = new ParallelMidpointRK2(pool, defaults ? ParallelMidpointRK2.MIN_PARALLEL_NODES : minWork);
             sim.setIntegrator(installed);
         } else {
             replaced = null;
@@ -61,7 +64,24 @@ public final class Parallelism implements AutoCloseable {
         if (threads < 1) {
             throw new IllegalArgumentException("thread count must be >= 1, got " + threads);
         }
-        return new Parallelism(sim, threads, order);
+        return new Parallelism(sim, threads, order, 0);
+    }
+
+    /**
+     * As {@link #install(Simulation, int, ParallelSpringPass.Order)}, with one threshold
+     * for the springs, nodes and links (>= 1) from which work is split among the threads
+     * (the defaults keep small scenes on one thread, where a dispatch costs more than it
+     * saves; 1 splits everything, as tests of thread-count independence need).
+     */
+    public static Parallelism install(Simulation sim, int threads, ParallelSpringPass.Order order,
+            int minParallelWork) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("thread count must be >= 1, got " + threads);
+        }
+        if (minParallelWork < 1) {
+            throw new IllegalArgumentException("minParallelWork must be >= 1, got " + minParallelWork);
+        }
+        return new Parallelism(sim, threads, order, minParallelWork);
     }
 
     /** Number of cores the JVM sees: the default thread count. */

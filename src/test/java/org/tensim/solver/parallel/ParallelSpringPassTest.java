@@ -40,7 +40,7 @@ class ParallelSpringPassTest {
     static double[] parallel(SystemState s, int threads, ParallelSpringPass.Order order) {
         try (WorkerPool pool = new WorkerPool(threads, "test")) {
             ForceModel fm = new ForceModel(s);
-            fm.setSpringPass(new ParallelSpringPass(s, pool, order));
+            fm.setSpringPass(new ParallelSpringPass(s, pool, order, 1)); // split however small
             double[] f = new double[s.x.length];
             fm.computeForces(0.3, s.x, s.v, f);
             // A second pass into the same array must give the same result (buffers reset).
@@ -112,7 +112,7 @@ class ParallelSpringPassTest {
         SystemState s = perturbed(LatticeScene.build(5, 0.1, 1, 1000, 0, false), 3);
         try (WorkerPool pool = new WorkerPool(2, "test")) {
             ForceModel fm = new ForceModel(s);
-            fm.setSpringPass(new ParallelSpringPass(s, pool, ParallelSpringPass.Order.RCM));
+            fm.setSpringPass(new ParallelSpringPass(s, pool, ParallelSpringPass.Order.RCM, 1));
             double[] f = new double[s.x.length];
             fm.computeForces(0, s.x, s.v, f);
             s.setSpringStiffness(10, 5000);

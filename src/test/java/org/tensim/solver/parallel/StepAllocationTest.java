@@ -32,7 +32,7 @@ class StepAllocationTest {
         mx.setThreadAllocatedMemoryEnabled(true);
 
         Simulation sim = new Simulation(SystemState.compile(LatticeScene.build(8, 0.1, 1, 1000, 0.5, true)));
-        try (Parallelism p = Parallelism.install(sim, 2)) {
+        try (Parallelism p = Parallelism.install(sim, 2, ParallelSpringPass.Order.AUTO, 1)) {
             long[] workers = p.pool().workerThreadIds();
             long[] ids = new long[workers.length + 1];
             ids[0] = Thread.currentThread().getId();
