@@ -1,0 +1,120 @@
+package org.tensim.solver;
+
+import org.tensim.model.Check;
+
+/**
+ * The divergence checks of {@link Simulation}, run after every step:
+ * <ul>
+ * <li>every position and velocity finite;</li>
+ * <li>every {@link #energyCheckInterval()} steps, the internal energy E (kinetic +
+ * spring, J; gravity's potential left out since a falling body legitimately turns
+ * it into these) at most {@link #energyGrowthLimit()} times
+ * {@code max(E at the previous check, energy floor)}. The floor (J) is the energy
+ * of every spring strained by 1 % of its rest length, so that a body starting
+ * from rest under a growing load is not mistaken for a blow-up. A stable scheme
+ * under bounded loads does not multiply its energy by 100 within 100 steps;
+ * one beyond its critical step does, long before the numbers overflow.</li>
+ * </ul>
+ * Allocation-free except when it throws.
+ */
+final class DivergenceMonitor {
+    /** Default energy growth factor allowed between two checks: 100. */
+    static final double DEFAULT_GROWTH_LIMIT = 100;
+    /** Default steps between energy checks: 100. */
+    static final int DEFAULT_INTERVAL = 100;
+    /** Strain of every spring whose energy is the floor of the reference: 1 %. */
+    static final double FLOOR_STRAIN = 0.01;
+
+    private double growthLimit = DEFAULT_GROWTH_LIMIT;
+    private int interval = DEFAULT_INTERVAL;
+    private double floor = Double.NaN;
+    private double lastEnergy = Double.NaN;
+
+    double energyGrowthLimit() {
+        return growthLimit;
+    }
+
+    void setEnergyGrowthLimit(double factor) {
+        if (!(factor > 1)) {
+            throw new IllegalArgumentException("energy growth limit must be a factor > 1 (or Infinity to turn the"
+                    + " check off), got " + factor);
+        }
+        growthLimit = factor;
+    }
+
+    int energyCheckInterval() {
+        return interval;
+    }
+
+    void setEnergyCheckInterval(int steps) {
+        interval = Check.atLeast("energy check interval (steps)", steps, 1);
+    }
+
+    /**
+     * Checks the state after step number {@code step} at time t.
+     *
+     * @param criticalStep the critical time step estimate for the integrator in use, s
+     *                     (evaluated only when throwing)
+     */
+    void check(SystemState s, ForceModel forces, long step, double t, java.util.function.DoubleSupplier criticalStep) {
+        final double[] x = s.x;
+        final double[] v = s.v;
+        for (int k = 0; k < x.length; k++) {
+            // A sum of the two is not finite if either is not: one branch per coordinate.
+            if (!Double.isFinite(x[k] + v[k])) {
+                int node = k / 3;
+                throw new SimulationDivergedException(step, t, node, "has position (" + x[3 * node] + ", "
+                        + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity (" + v[3 * node] + ", "
+                        + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
+                        criticalStep.getAsDouble());
+            }
+        }
+        if (growthLimit == Double.POSITIVE_INFINITY || step % interval != 0) {
+            return;
+        }
+        if (Double.isNaN(floor)) {
+            floor = floor(s);
+        }
+        double e = forces.kineticEnergy() + forces.springEnergy(x);
+        double ref = Double.isNaN(lastEnergy) ? floor : Math.max(lastEnergy, floor);
+        if (e > growthLimit * ref) {
+            int node = fastest(s);
+            throw new SimulationDivergedException(step, t, node, "is the fastest node ("
+                    + Math.sqrt(speed2(v, node)) + " m/s): the kinetic + spring energy grew to " + e
+                    + " J, more than " + growthLimit + " times " + ref + " J within " + interval + " steps; "
+                    + advice(criticalStep), criticalStep.getAsDouble());
+        }
+        lastEnergy = e;
+    }
+
+    private static String advice(java.util.function.DoubleSupplier criticalStep) {
+        return "the critical time step estimate is " + criticalStep.getAsDouble()
+                + " s; reduce the time step or add damping";
+    }
+
+    private static double floor(SystemState s) {
+        double e = 0;
+        for (int i = 0; i < s.springCount(); i++) {
+            double d = FLOOR_STRAIN * s.springL[i];
+            e += 0.5 * s.springK[i] * d * d;
+        }
+        return e > 0 ? e : Double.MIN_NORMAL;
+    }
+
+    private static int fastest(SystemState s) {
+        int best = 0;
+        double top = -1;
+        for (int i = 0; i < s.nodeCount; i++) {
+            double v2 = speed2(s.v, i);
+            if (v2 > top) {
+                top = v2;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    private static double speed2(double[] v, int i) {
+        return v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2];
+    }
+}
