@@ -27,6 +27,18 @@ public final class Charts {
         chart.addSeries(name, x, y).setMarker(SeriesMarkers.NONE);
     }
 
+    /** Adds a line series with a marker at every point (for measured data). */
+    public static void addLineWithMarkers(XYChart chart, String name, double[] x, double[] y) {
+        chart.addSeries(name, x, y).setMarker(SeriesMarkers.CIRCLE);
+        chart.getStyler().setMarkerSize(6);
+    }
+
+    /** Makes both axes logarithmic (every plotted value must then be > 0). */
+    public static void logLog(XYChart chart) {
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+    }
+
     /** Saves the chart as a PNG file at {@code path} (the name should end in .png). */
     public static void savePng(XYChart chart, Path path) throws IOException {
         Files.createDirectories(path.toAbsolutePath().getParent());

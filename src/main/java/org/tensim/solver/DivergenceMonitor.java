@@ -9,7 +9,8 @@ import org.tensim.model.Check;
  * <li>every {@link #energyCheckInterval()} steps, the internal energy E (kinetic +
  * spring, J; gravity's potential left out since a falling body legitimately turns
  * it into these) at most {@link #energyGrowthLimit()} times
- * {@code max(E at the previous check, energy floor)}. The floor (J) is the energy
+ * {@code max(E at the previous check, energy floor)}, the first reference being
+ * the energy after the first step. The floor (J) is the energy
  * of every spring strained by 1 % of its rest length, so that a body starting
  * from rest under a growing load is not mistaken for a blow-up. A stable scheme
  * under bounded loads does not multiply its energy by 100 within 100 steps;
@@ -69,14 +70,20 @@ final class DivergenceMonitor {
                         criticalStep.getAsDouble());
             }
         }
-        if (growthLimit == Double.POSITIVE_INFINITY || step % interval != 0) {
+        if (growthLimit == Double.POSITIVE_INFINITY) {
             return;
         }
-        if (Double.isNaN(floor)) {
+        if (Double.isNaN(lastEnergy)) {
+            // First step: the energy the run starts with (e.g. a released stretch) is the first reference.
             floor = floor(s);
+            lastEnergy = forces.kineticEnergy() + forces.springEnergy(x);
+            return;
+        }
+        if (step % interval != 0) {
+            return;
         }
         double e = forces.kineticEnergy() + forces.springEnergy(x);
-        double ref = Double.isNaN(lastEnergy) ? floor : Math.max(lastEnergy, floor);
+        double ref = Math.max(lastEnergy, floor);
         if (e > growthLimit * ref) {
             int node = fastest(s);
             throw new SimulationDivergedException(step, t, node, "is the fastest node ("
