@@ -16,18 +16,26 @@ import org.tensim.solver.integrators.Integrators;
  *
  * <p>Stable means bounded and finite over a fixed number of periods: the run
  * covers {@code periods} periods of the oscillation (2 pi / w each, at least
- * {@link #MIN_STEPS} steps), every position stays finite, and the largest
- * displacement from rest over the last quarter of the steps is at most
+ * {@link #MIN_STEPS} steps), every position stays finite, no displacement from
+ * the initial positions exceeds {@link #ESCAPE_FACTOR} times the initial amplitude,
+ * and the largest displacement over the last quarter of the steps is at most
  * {@link #GROWTH_FACTOR} times the largest over the first quarter. A method
  * bounded but not contractive (symplectic Euler, Verlet below their limit) keeps
  * the ratio near 1; one beyond its limit grows geometrically and exceeds it within
- * a few periods. Methods that grow slowly at every step (forward Euler, undamped
+ * a few periods. The escape bound matters: the scene must stay in its linear
+ * range (a spring's mass that overshoots its anchor moves in a bounded, chaotic
+ * double well and would otherwise look stable), so the initial amplitude is tiny
+ * ({@link #SPRING_STRETCH_M} on a 1 m spring). Methods that grow slowly at every step (forward Euler, undamped
  * RK2) get a measured limit that shrinks as the number of periods grows: the
  * bisection finds where their growth over that many periods reaches the factor.
  */
 public final class StabilityStudy {
     /** Largest allowed growth of the displacement from the first to the last quarter of the run. */
     public static final double GROWTH_FACTOR = 2;
+    /** A displacement this many times the initial amplitude counts as unstable (and ends the trial). */
+    public static final double ESCAPE_FACTOR = 1e4;
+    /** Initial stretch of the test spring, m (rest length 1 m): small, so that the escape bound stays linear. */
+    public static final double SPRING_STRETCH_M = 1e-6;
     /** Fewest steps of a run. */
     public static final int MIN_STEPS = 40;
     /** Lower end of the w h bracket: below it a method is reported as never stable (0). */
@@ -49,8 +57,9 @@ public final class StabilityStudy {
             double relativeTolerance) {
         Check.atLeast("stability periods", periods, 1);
         Check.positive("bisection tolerance", "", relativeTolerance);
-        Topology t = SpringScene.build(omega, zeta, 0.01);
-        return criticalOmegaH(t, integrator, omega, 2 * Math.PI / omega * periods, relativeTolerance);
+        Topology t = SpringScene.build(omega, zeta, SPRING_STRETCH_M);
+        return criticalOmegaH(t, integrator, omega, 2 * Math.PI / omega * periods, SPRING_STRETCH_M,
+                relativeTolerance);
     }
 
     /**
@@ -58,21 +67,22 @@ public final class StabilityStudy {
      * {@link #OMEGA_H_MAX}] / omega, each trial a run of {@code durationS}.
      *
      * @param omega the frequency that scales the steps (the scene's highest), rad/s
+     * @param amplitudeM the initial displacement amplitude of the scene, m (see {@link #ESCAPE_FACTOR})
      * @return the critical w h: 0 when unstable at the lower end, infinite when stable at the upper end
      */
     public static double criticalOmegaH(Topology t, String integrator, double omega, double durationS,
-            double relativeTolerance) {
+            double amplitudeM, double relativeTolerance) {
         double lo = OMEGA_H_MIN;
         double hi = OMEGA_H_MAX;
-        if (!stable(t, integrator, lo / omega, durationS)) {
+        if (!stable(t, integrator, lo / omega, durationS, amplitudeM)) {
             return 0;
         }
-        if (stable(t, integrator, hi / omega, durationS)) {
+        if (stable(t, integrator, hi / omega, durationS, amplitudeM)) {
             return Double.POSITIVE_INFINITY;
         }
         while (hi / lo > 1 + relativeTolerance) {
             double mid = Math.sqrt(lo * hi);
-            if (stable(t, integrator, mid / omega, durationS)) {
+            if (stable(t, integrator, mid / omega, durationS, amplitudeM)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -81,8 +91,12 @@ public final class StabilityStudy {
         return Math.sqrt(lo * hi);
     }
 
-    /** Whether a run of the scene with step h (s) over durationS (s) stays bounded and finite. */
-    public static boolean stable(Topology t, String integrator, double h, double durationS) {
+    /**
+     * Whether a run of the scene with step h (s) over durationS (s) stays bounded and finite.
+     *
+     * @param amplitudeM initial displacement amplitude, m
+     */
+    public static boolean stable(Topology t, String integrator, double h, double durationS, double amplitudeM) {
         SystemState s = SystemState.compile(t);
         Simulation sim = new Simulation(s, Integrators.create(integrator));
         sim.setStepLimitSeverity(Severity.IGNORE);
@@ -101,8 +115,8 @@ public final class StabilityStudy {
                 } else if (i >= steps - quarter) {
                     last = Math.max(last, d);
                 }
-                if (d > 1e6 * (first + Double.MIN_NORMAL) && i >= quarter) {
-                    return false; // already far beyond any growth factor: no need to wait for overflow
+                if (d > ESCAPE_FACTOR * amplitudeM) {
+                    return false;
                 }
             }
         } catch (SimulationDivergedException e) {

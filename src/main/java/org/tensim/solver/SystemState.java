@@ -205,6 +205,11 @@ public final class SystemState {
         parameterVersion++;
     }
 
+    /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
+    public boolean velocityDependentForces() {
+        return axialDamping || viscousDamping != 0;
+    }
+
     /** Global viscous damping, N s/m per node. */
     public double viscousDamping() {
         return viscousDamping;
