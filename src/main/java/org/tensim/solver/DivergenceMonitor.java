@@ -6,13 +6,15 @@ import org.tensim.model.Check;
  * The divergence checks of {@link Simulation}, run after every step:
  * <ul>
  * <li>every position and velocity finite;</li>
- * <li>every {@link #energyCheckInterval()} steps, the internal energy E (kinetic +
- * spring, J; gravity's potential left out since a falling body legitimately turns
- * it into these) at most {@link #energyGrowthLimit()} times
- * {@code max(E at the previous check, energy floor)}, the first reference being
- * the energy after the first step. The floor (J) is the energy
- * of every spring strained by 1 % of its rest length, so that a body starting
- * from rest under a growing load is not mistaken for a blow-up. A stable scheme
+ * <li>every {@link #energyCheckInterval()} steps, the mechanical energy
+ * E = kinetic + spring + change of gravity's potential since the first step (J)
+ * at most {@link #energyGrowthLimit()} times
+ * {@code max(E at the previous check, floor)}, the first reference being the
+ * energy after the first step. The floor is the larger of the energy of every
+ * spring strained by 1 % of its rest length (so that a body starting from rest
+ * under a growing load is not mistaken for a blow-up) and 1e-3 of the energy
+ * exchanged, kinetic + spring + |change of gravity's potential| (so that the
+ * round-off of a free fall, whose E stays near 0, is not either). A stable scheme
  * under bounded loads does not multiply its energy by 100 within 100 steps;
  * one beyond its critical step does, long before the numbers overflow.</li>
  * </ul>
@@ -30,6 +32,9 @@ final class DivergenceMonitor {
     private int interval = DEFAULT_INTERVAL;
     private double floor = Double.NaN;
     private double lastEnergy = Double.NaN;
+    private double gravity0;
+    /** Fraction of the energy exchanged below which changes of E are round-off. */
+    static final double EXCHANGE_FRACTION = 1e-3;
 
     double energyGrowthLimit() {
         return growthLimit;
@@ -63,7 +68,7 @@ final class DivergenceMonitor {
         for (int k = 0; k < x.length; k++) {
             // A sum of the two is not finite if either is not: one branch per coordinate.
             if (!Double.isFinite(x[k] + v[k])) {
-                int node = k / 3;
+                int node = worstNonFinite(s, k / 3);
                 throw new SimulationDivergedException(step, t, node, "has position (" + x[3 * node] + ", "
                         + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity (" + v[3 * node] + ", "
                         + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
@@ -76,18 +81,23 @@ final class DivergenceMonitor {
         if (Double.isNaN(lastEnergy)) {
             // First step: the energy the run starts with (e.g. a released stretch) is the first reference.
             floor = floor(s);
+            gravity0 = forces.gravityEnergy();
             lastEnergy = forces.kineticEnergy() + forces.springEnergy(x);
             return;
         }
         if (step % interval != 0) {
             return;
         }
-        double e = forces.kineticEnergy() + forces.springEnergy(x);
-        double ref = Math.max(lastEnergy, floor);
+        double kinetic = forces.kineticEnergy();
+        double spring = forces.springEnergy(x);
+        double dGravity = forces.gravityEnergy() - gravity0;
+        double e = kinetic + spring + dGravity;
+        double exchanged = kinetic + spring + Math.abs(dGravity);
+        double ref = Math.max(lastEnergy, Math.max(floor, EXCHANGE_FRACTION * exchanged));
         if (e > growthLimit * ref) {
             int node = fastest(s);
             throw new SimulationDivergedException(step, t, node, "is the fastest node ("
-                    + Math.sqrt(speed2(v, node)) + " m/s): the kinetic + spring energy grew to " + e
+                    + Math.sqrt(speed2(v, node)) + " m/s): the mechanical energy grew to " + e
                     + " J, more than " + growthLimit + " times " + ref + " J within " + interval + " steps; "
                     + advice(criticalStep), criticalStep.getAsDouble());
         }
@@ -106,6 +116,21 @@ final class DivergenceMonitor {
             e += 0.5 * s.springK[i] * d * d;
         }
         return e > 0 ? e : Double.MIN_NORMAL;
+    }
+
+    /**
+     * The first free node with a non-finite value, else {@code first}: a fixed
+     * node's velocity turns NaN only because its (unused) force did, which a free
+     * neighbour caused.
+     */
+    private static int worstNonFinite(SystemState s, int first) {
+        for (int i = first; i < s.nodeCount; i++) {
+            if (s.invMass[i] != 0 && !Double.isFinite(s.x[3 * i] + s.x[3 * i + 1] + s.x[3 * i + 2] + s.v[3 * i]
+                    + s.v[3 * i + 1] + s.v[3 * i + 2])) {
+                return i;
+            }
+        }
+        return first;
     }
 
     private static int fastest(SystemState s) {
