@@ -63,8 +63,9 @@ public final class StabilityStudy {
     }
 
     /**
-     * Measured critical w h on any scene: bisection on h in [{@link #OMEGA_H_MIN},
-     * {@link #OMEGA_H_MAX}] / omega, each trial a run of {@code durationS}.
+     * Measured critical w h on any scene: bisection (geometric) on h in
+     * [{@link #OMEGA_H_MIN}, {@link #OMEGA_H_MAX}] / omega, each trial a run of
+     * {@code durationS}.
      *
      * @param omega the frequency that scales the steps (the scene's highest), rad/s
      * @param amplitudeM the initial displacement amplitude of the scene, m (see {@link #ESCAPE_FACTOR})
@@ -72,8 +73,26 @@ public final class StabilityStudy {
      */
     public static double criticalOmegaH(Topology t, String integrator, double omega, double durationS,
             double amplitudeM, double relativeTolerance) {
-        double lo = OMEGA_H_MIN;
-        double hi = OMEGA_H_MAX;
+        return criticalOmegaH(t, integrator, omega, durationS, amplitudeM, relativeTolerance, OMEGA_H_MIN,
+                OMEGA_H_MAX);
+    }
+
+    /**
+     * As above, with the w h bracket given: trials at small w h take many steps, so a
+     * caller that knows roughly where the limit lies saves most of the time.
+     *
+     * @param omegaHMin lower end of the bracket (0 is returned when unstable there)
+     * @param omegaHMax upper end of the bracket (infinity is returned when stable there)
+     */
+    public static double criticalOmegaH(Topology t, String integrator, double omega, double durationS,
+            double amplitudeM, double relativeTolerance, double omegaHMin, double omegaHMax) {
+        Check.positive("lower end of the w h bracket", "", omegaHMin);
+        if (!(omegaHMax > omegaHMin)) {
+            throw new IllegalArgumentException("upper end of the w h bracket must exceed the lower end " + omegaHMin
+                    + ", got " + omegaHMax);
+        }
+        double lo = omegaHMin;
+        double hi = omegaHMax;
         if (!stable(t, integrator, lo / omega, durationS, amplitudeM)) {
             return 0;
         }
