@@ -28,7 +28,7 @@ import org.tensim.solver.integrators.Integrators;
  * difference with RK4 at twice that step (an overestimate unless the scheme is
  * first order, which it is with rigid links: see docs/accuracy.md).</li>
  * </ul>
- * Cost: the wall time of the run (best of a few repeats for runs under 50 ms)
+ * Cost: the wall time of the run (after a warm-up, best of up to 5 repeats within 0.3 s)
  * and the force evaluations counted by the force model (plus, for implicit Euler,
  * its CG matrix-vector products, each about one spring pass).
  *
@@ -121,6 +121,10 @@ public final class AccuracyStudy {
         Map<String, Double> orders = new LinkedHashMap<>();
         Map<String, Integer> expected = new LinkedHashMap<>();
         for (String name : integrators) {
+            // Warm-up (JIT) on the largest step, so that the first timed rung is not the slowest.
+            for (int w = 0; w < 3; w++) {
+                oneRun(scene, name, ladder[0], ref);
+            }
             double[] err = new double[ladder.length];
             for (int r = 0; r < ladder.length; r++) {
                 Run run = timedRun(scene, name, ladder[r], ref);
@@ -182,11 +186,14 @@ public final class AccuracyStudy {
         return Double.isFinite(e) && e > floor && e < ceiling;
     }
 
-    /** One run, timed: repeated (best time kept) while a single run is under 50 ms. */
+    /**
+     * One run, timed: repeated (best time kept, which is the least disturbed by other
+     * work on the machine) up to 5 times while the runs so far took under 0.3 s.
+     */
     static Run timedRun(AccuracyScene scene, String integrator, double dt, double[] ref) {
         Run best = null;
         double spent = 0;
-        for (int rep = 0; rep < 10 && spent < 0.05; rep++) {
+        for (int rep = 0; rep < 5 && spent < 0.3; rep++) {
             Run r = oneRun(scene, integrator, dt, ref);
             spent += r.wallS();
             if (best == null || r.wallS() < best.wallS()) {

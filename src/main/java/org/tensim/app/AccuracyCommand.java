@@ -23,7 +23,8 @@ import picocli.CommandLine.Option;
             "the largest node position error at the end time against a reference (exact, Dormand-Prince",
             "8(5,3), or for scenes with rigid links RK4 at the finest step), the wall time and the force",
             "evaluations. Writes per scene accuracy-SCENE.csv, SCENE-work-precision.png (error against",
-            "wall time) and SCENE-convergence.png (error against dt) to --out, prints the measured order",
+            "wall time), SCENE-evaluations.png (error against force evaluations) and",
+            "SCENE-convergence.png (error against dt) to --out, prints the measured order",
             "of each method, and as the last line one JSON object with, per integrator, the measured",
             "`order` (first scene), `expected_order` and `order_by_scene`."})
 public final class AccuracyCommand implements Callable<Integer> {
@@ -118,13 +119,17 @@ public final class AccuracyCommand implements Callable<Integer> {
                 900, 600);
         XYChart conv = Charts.lineChart("Convergence: " + name + " (reference: " + r.reference() + ")",
                 "time step dt (s)", "largest node position error (m)", 900, 600);
+        XYChart evals = Charts.lineChart("Work-precision by force evaluations: " + name,
+                "force evaluations (+ CG products for implicit Euler)", "largest node position error (m)", 900, 600);
         Charts.logLog(work);
         Charts.logLog(conv);
+        Charts.logLog(evals);
         for (String i : integrators) {
             List<double[]> pts = new ArrayList<>();
             for (AccuracyStudy.Run run : r.runs()) {
                 if (run.integrator().equals(i) && Double.isFinite(run.errorM()) && run.errorM() > 0) {
-                    pts.add(new double[] {run.wallS(), run.dtS(), run.errorM()});
+                    pts.add(new double[] {run.wallS(), run.dtS(), run.errorM(),
+                        run.forceEvaluations() + run.linearProducts()});
                 }
             }
             if (pts.isEmpty()) {
@@ -133,12 +138,21 @@ public final class AccuracyCommand implements Callable<Integer> {
             double[] wall = pts.stream().mapToDouble(p -> Math.max(p[0], 1e-6)).toArray();
             double[] dt = pts.stream().mapToDouble(p -> p[1]).toArray();
             double[] err = pts.stream().mapToDouble(p -> p[2]).toArray();
+            double[] cost = pts.stream().mapToDouble(p -> p[3]).toArray();
             String label = String.format("%s (order %.2f)", i, r.measuredOrder().get(i));
+            java.awt.Color color = Charts.color(Integrators.names().indexOf(i));
             Charts.addLineWithMarkers(work, label, wall, err);
             Charts.addLineWithMarkers(conv, label, dt, err);
+            Charts.addLineWithMarkers(evals, label, cost, err);
+            for (XYChart c : List.of(work, conv, evals)) {
+                var series = c.getSeriesMap().get(label);
+                series.setLineColor(color);
+                series.setMarkerColor(color);
+            }
         }
         Charts.savePng(work, out.resolve(name + "-work-precision.png"));
         Charts.savePng(conv, out.resolve(name + "-convergence.png"));
+        Charts.savePng(evals, out.resolve(name + "-evaluations.png"));
         System.out.println("wrote " + csv + ", " + out.resolve(name + "-work-precision.png") + ", "
                 + out.resolve(name + "-convergence.png"));
     }

@@ -97,8 +97,9 @@ public final class StabilityCommand implements Callable<Integer> {
                     System.out.println(String.format("%-16s w = %8.1f rad/s  zeta = %-5.2f critical w h: measured %8.4f, "
                             + "theory %8.4f", name, REF_OMEGA, zeta, m, th));
                 }
-                plot(byOmega, name, om, true);
-                plot(byZeta, name, zs, false);
+                java.awt.Color color = Charts.color(Integrators.names().indexOf(name));
+                plot(byOmega, name, om, true, color);
+                plot(byZeta, name, zs, false, color);
                 double measured = StabilityStudy.criticalOmegaH(name, REF_OMEGA, 0, periods, TOL);
                 double theory = StabilityTheory.undampedLimit(name);
                 Map<String, Object> e = new LinkedHashMap<>();
@@ -118,7 +119,7 @@ public final class StabilityCommand implements Callable<Integer> {
     }
 
     /** Measured points and the theory line of one integrator; only finite, positive values can be drawn. */
-    private static void plot(XYChart chart, String name, List<double[]> rows, boolean asStep) {
+    private static void plot(XYChart chart, String name, List<double[]> rows, boolean asStep, java.awt.Color color) {
         List<double[]> meas = new ArrayList<>();
         List<double[]> theo = new ArrayList<>();
         for (double[] r : rows) {
@@ -131,15 +132,17 @@ public final class StabilityCommand implements Callable<Integer> {
             }
         }
         if (!meas.isEmpty()) {
-            chart.addSeries(name + " measured", meas.stream().mapToDouble(p -> p[0]).toArray(),
-                    meas.stream().mapToDouble(p -> p[1]).toArray())
-                    .setXYSeriesRenderStyle(org.knowm.xchart.XYSeries.XYSeriesRenderStyle.Scatter);
+            var m = chart.addSeries(name + " measured", meas.stream().mapToDouble(p -> p[0]).toArray(),
+                    meas.stream().mapToDouble(p -> p[1]).toArray());
+            m.setXYSeriesRenderStyle(org.knowm.xchart.XYSeries.XYSeriesRenderStyle.Scatter);
+            m.setMarkerColor(color);
             chart.getStyler().setMarkerSize(8);
         }
         if (!theo.isEmpty()) {
             var s = chart.addSeries(name + " theory", theo.stream().mapToDouble(p -> p[0]).toArray(),
                     theo.stream().mapToDouble(p -> p[1]).toArray());
             s.setMarker(org.knowm.xchart.style.markers.SeriesMarkers.NONE);
+            s.setLineColor(color);
             s.setLineStyle(new java.awt.BasicStroke(1.5f, java.awt.BasicStroke.CAP_BUTT,
                     java.awt.BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
         }
