@@ -290,7 +290,8 @@ public final class Simulation {
         String msg = "rigid-link projection at step " + (steps + 1) + " (t = " + (time + dt) + " s) stopped after "
                 + projection.iterations() + " sweeps with a relative length error of "
                 + projection.maxRelativeError() + " on link " + projection.worstLink() + " (tolerance "
-                + projection.tolerance() + "); the links may contradict each other";
+                + projection.tolerance() + "): the links contradict each other, or need more sweeps than the cap"
+                + " (projection().setMaxIterations) or a looser tolerance";
         if (projectionSeverity == Severity.ERROR) {
             throw new ProjectionFailedException(steps + 1, projection.worstLink(), projection.maxRelativeError(),
                     msg);
