@@ -19,14 +19,15 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim accuracy}: work-precision of every integrator on named scenes. */
 @Command(name = "accuracy", mixinStandardHelpOptions = true,
-        description = {"Runs every integrator on a ladder of time steps (each half the previous) and measures",
-            "the largest node position error at the end time against a reference (exact, Dormand-Prince",
-            "8(5,3), or for scenes with rigid links RK4 at the finest step), the wall time and the force",
-            "evaluations. Writes per scene accuracy-SCENE.csv, SCENE-work-precision.png (error against",
-            "wall time), SCENE-evaluations.png (error against force evaluations) and",
-            "SCENE-convergence.png (error against dt) to --out, prints the measured order",
-            "of each method, and as the last line one JSON object with, per integrator, the measured",
-            "`order` (first scene), `expected_order` and `order_by_scene`."})
+        description = {"Runs every integrator on a ladder of time steps (each half the previous)",
+            "and measures the largest node position error at the end time against a",
+            "reference (exact; Hipparchus Dormand-Prince 8(5,3); or, with rigid links,",
+            "RK4 at the finest step), the wall time and the force evaluations.",
+            "Writes per scene to --out: accuracy-SCENE.csv, SCENE-work-precision.png",
+            "(error against wall time), SCENE-evaluations.png (error against force",
+            "evaluations), SCENE-convergence.png (error against dt). Prints the measured",
+            "order of each method; the last line is one JSON object with, per",
+            "integrator, `order` (first scene), `expected_order` and `order_by_scene`."})
 public final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
             description = "scenes (default: all of ${COMPLETION-CANDIDATES})", completionCandidates = SceneNames.class)

@@ -19,13 +19,15 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim stability}: the largest stable step of every integrator, measured against theory. */
 @Command(name = "stability", mixinStandardHelpOptions = true,
-        description = {"Finds by bisection the largest stable time step of every integrator on one spring",
-            "(stable = finite, and the displacement over the last quarter of the run at most twice that over",
-            "the first, over --periods periods), across stiffness-to-mass ratios (w = sqrt(k/m)) and damping",
-            "ratios, and compares it with linear stability theory (PHYSICS.md). Writes stability.csv,",
-            "stability-omega.png and stability-damping.png to --out; the last line is one JSON object with,",
-            "per integrator, the measured `critical_omega_h` and the `theory_omega_h` of the undamped",
-            "spring (null = stable at every step tried, flagged by `stable_at_every_step`)."})
+        description = {"Finds by bisection the largest stable time step of every integrator on",
+            "one spring (stable: finite, and the displacement over the last quarter of",
+            "the run at most twice that over the first, over --periods periods), across",
+            "stiffness-to-mass ratios (w = sqrt(k/m)) and damping ratios, against",
+            "linear stability theory (PHYSICS.md). Writes stability.csv,",
+            "stability-omega.png and stability-damping.png to --out. The last line is",
+            "one JSON object with, per integrator, the measured `critical_omega_h` and",
+            "the `theory_omega_h` of the undamped spring (null = stable at every step",
+            "tried, flagged by `stable_at_every_step`)."})
 public final class StabilityCommand implements Callable<Integer> {
     @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
             description = "integrators (default: all)")
