@@ -30,7 +30,7 @@ import org.tensim.solver.SystemState;
  * The arrays passed in are by authored node id; with a node permutation, each thread
  * gathers the positions (and velocities) of its nodes into private arrays in the
  * internal order and scatters its owned forces back. Spring parameters are private,
- * reordered copies, refreshed when {@link SystemState#springParameterVersion()} moves.
+ * reordered copies, refreshed when {@link SystemState#parameterVersion()} moves.
  */
 public final class ParallelSpringPass implements SpringForcePass {
     /** How nodes are ordered internally. */
@@ -62,7 +62,7 @@ public final class ParallelSpringPass implements SpringForcePass {
     private final double internalSpan;
     private final int duplicated;
     private final WorkerPool.Task task = this::work;
-    private int version;
+    private long version;
     private boolean damped;
     // Arguments of the current pass, read by the workers (published by the pool's dispatch).
     private double[] px;
@@ -205,7 +205,7 @@ public final class ParallelSpringPass implements SpringForcePass {
             }
         }
         damped = d;
-        version = s.springParameterVersion();
+        version = s.parameterVersion();
     }
 
     /** Threads used (1 below {@link #MIN_PARALLEL_SPRINGS} springs). */
@@ -235,7 +235,7 @@ public final class ParallelSpringPass implements SpringForcePass {
 
     @Override
     public void addSpringForces(double[] x, double[] v, double[] forces) {
-        if (version != s.springParameterVersion()) {
+        if (version != s.parameterVersion()) {
             refresh();
         }
         px = x;

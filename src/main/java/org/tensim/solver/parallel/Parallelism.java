@@ -4,13 +4,16 @@ import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.integrators.SymplecticEuler;
 
 /**
  * Puts a {@link Simulation} on several threads: its force model gets a
  * {@link ParallelSpringPass} and, when there are rigid links, its projection gets
  * {@link ParallelLinkSweeps}, both on one {@link WorkerPool}; the paper's
- * {@link MidpointRK2} is swapped for {@link ParallelMidpointRK2} (same arithmetic,
- * node loops split). Other integrators keep their own node loops, single-threaded.
+ * {@link MidpointRK2} is swapped for {@link ParallelMidpointRK2} and
+ * {@link SymplecticEuler} for {@link ParallelSymplecticEuler} (same arithmetic, node
+ * loops split). Other integrators keep their own node loops, single-threaded; their
+ * force passes are parallel all the same.
  * Close it to stop the threads and restore the single-threaded loops and integrator.
  *
  * <pre>
@@ -41,9 +44,14 @@ public final class Parallelism implements AutoCloseable {
                 : new ParallelLinkSweeps(s, pool, defaults ? ParallelLinkSweeps.MIN_PARALLEL_LINKS : minWork);
         sim.forces().setSpringPass(springs);
         sim.projection().setSweeps(links);
+        int minNodes = defaults ? ParallelMidpointRK2.MIN_PARALLEL_NODES : minWork;
         if (sim.integrator() instanceof MidpointRK2) {
             replaced = sim.integrator();
-            installed = new ParallelMidpointRK2(pool, defaults ? ParallelMidpointRK2.MIN_PARALLEL_NODES : minWork);
+            installed = new ParallelMidpointRK2(pool, minNodes);
+            sim.setIntegrator(installed);
+        } else if (sim.integrator() instanceof SymplecticEuler) {
+            replaced = sim.integrator();
+            installed = new ParallelSymplecticEuler(pool, minNodes);
             sim.setIntegrator(installed);
         } else {
             replaced = null;

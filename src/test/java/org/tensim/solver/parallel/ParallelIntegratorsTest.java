@@ -13,9 +13,10 @@ import org.tensim.scene.LatticeScene;
 import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.integrators.SymplecticEuler;
 
-/** The split RK2 is the paper's RK2, bit for bit, whatever the split. */
-class ParallelMidpointRK2Test {
+/** The split RK2 and symplectic Euler are the originals, bit for bit, whatever the split. */
+class ParallelIntegratorsTest {
     /** A lattice large enough to be split, with a driven node and a sinusoidal force. */
     static Topology scene() {
         Topology t = LatticeScene.build(17, 0.1, 1, 1000, 0.5, false);
@@ -42,6 +43,26 @@ class ParallelMidpointRK2Test {
                 assertArrayEquals(reference.state().v, sim.state().v, "velocities, threads " + threads);
             }
         }
+    }
+
+    @Test
+    void sameBitsAsSymplecticEulerForAnyThreadCount() {
+        Topology t = scene();
+        Simulation reference = new Simulation(SystemState.compile(t), new SymplecticEuler());
+        reference.runUntil(0.05, 1e-3);
+        for (int threads = 1; threads <= 3; threads++) {
+            try (WorkerPool pool = new WorkerPool(threads, "test")) {
+                Simulation sim = new Simulation(SystemState.compile(t), new ParallelSymplecticEuler(pool, 1));
+                sim.runUntil(0.05, 1e-3);
+                assertArrayEquals(reference.state().x, sim.state().x, "positions, threads " + threads);
+                assertArrayEquals(reference.state().v, sim.state().v, "velocities, threads " + threads);
+            }
+        }
+        Simulation swapped = new Simulation(SystemState.compile(t), new SymplecticEuler());
+        try (Parallelism p = Parallelism.install(swapped, 2)) {
+            assertTrue(swapped.integrator() instanceof ParallelSymplecticEuler);
+        }
+        assertTrue(swapped.integrator() instanceof SymplecticEuler);
     }
 
     @Test
