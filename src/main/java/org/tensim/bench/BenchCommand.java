@@ -33,7 +33,8 @@ public final class BenchCommand implements Callable<Integer> {
     List<Integer> threads = List.of(Parallelism.availableCores());
 
     @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator (default: ${DEFAULT-VALUE}, the paper's midpoint RK2)")
+            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
+                    + " (default: ${DEFAULT-VALUE})")
     String integrator = "rk2";
 
     @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
