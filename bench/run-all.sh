@@ -24,7 +24,7 @@ run shuffled-authored ./tensim bench --n 31,49 --threads 1 --shuffle --order aut
 run shuffled-builtin ./tensim bench --n 31,49 --shuffle --solver builtin --repeats 5
 run lattice-rcm ./tensim bench --n 31,49 --threads 1 --order rcm --repeats 5
 run scaling     ./tensim bench --n 6,8,11,16,21,26,31,41,49 --threads 1,2 --repeats 5 --out "$OUT/scaling"
-run c           bench/c/run.sh 11,21,31 1,2 7
+run c           timeout 600 bench/c/run.sh 11,21,31 1,2 7
 echo "== jmh" | tee -a "$OUT/commands.txt"
 gradle -q jmh -PjmhArgs='-f 1 -wi 3 -w 1s -i 5 -r 1s -p n=31' 2>&1 | grep -v -E '^(openjdk|OpenJDK)' \
   | tee "$OUT/jmh.txt"
