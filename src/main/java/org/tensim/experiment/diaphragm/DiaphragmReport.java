@@ -151,6 +151,7 @@ public final class DiaphragmReport {
         summary.put("attached_nodes", scene.attachedNodes());
         summary.put("attached_to_ribs", scene.attachedToRibs());
         summary.put("attached_to_cartilage_or_sternum", scene.attachedToCartilage());
+        summary.put("attached_to_spine", scene.attachedToSpine());
         summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
         if (metrics.complete()) {

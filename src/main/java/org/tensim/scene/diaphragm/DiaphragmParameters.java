@@ -29,11 +29,13 @@ import org.tensim.model.Vec3;
  * @param abdominalSupportPaPerM stiffness per unit area of the abdominal contents under the diaphragm, Pa/m
  *                             (an elastic foundation: each free node of the lower surface is tied to its rest
  *                             position by a spring of stiffness K A_i); 0 turns it off
+ * @param bendingFactor        stiffness of the bending springs (across each edge, between the opposite
+ *                             vertices) relative to the membrane formula; 0 turns them off
  */
 public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, double tendonYoungPa,
         double highDampingRatio, double viscousPerS, double tendonAreaFraction, Vec3 tendonNormal, Vec3 tendonPoint,
         double attachThresholdM, double structureStiffness, double structureNodeMassKg, double attachStiffness,
-        double ribQuietFraction, double ribTranslationM, double abdominalSupportPaPerM) {
+        double ribQuietFraction, double ribTranslationM, double abdominalSupportPaPerM, double bendingFactor) {
     public DiaphragmParameters {
         Check.positive("tissue density", "kg/m^3", densityKgPerM3);
         Check.positive("muscle Young's modulus", "Pa", muscleYoungPa);
@@ -57,41 +59,42 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
         Check.nonNegative("quiet-breathing rib fraction", "", ribQuietFraction);
         Check.finite("rib translation", "m", ribTranslationM);
         Check.nonNegative("abdominal support stiffness", "Pa/m", abdominalSupportPaPerM);
+        Check.nonNegative("bending spring factor", "", bendingFactor);
     }
 
     /** The defaults (docs/diaphragm.md). */
     public static DiaphragmParameters defaults() {
-        return new DiaphragmParameters(1060, 40e3, 160e3, 0.3, 30, 0.12, new Vec3(0, 0, 1), null, 0.012, 5000,
-                0.01, 10, 0.3, 0.0005, 50e3);
+        return new DiaphragmParameters(1060, 40e3, 160e3, 0.3, 30, 0.12, new Vec3(0, 0, 1), null, 0.020, 5000,
+                0.01, 100, 0.3, 0.0005, 50e3, 1);
     }
 
     public DiaphragmParameters withAttachThreshold(double m) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, m, structureStiffness, structureNodeMassKg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
     }
 
     public DiaphragmParameters withViscous(double perS) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, perS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
     }
 
     public DiaphragmParameters withTendonPlane(Vec3 normal, Vec3 point) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, normal, point, attachThresholdM, structureStiffness, structureNodeMassKg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
     }
 
     public DiaphragmParameters withAbdominalSupport(double paPerM) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM, bendingFactor);
     }
 
     public DiaphragmParameters withMuscleYoung(double pa) {
         return new DiaphragmParameters(densityKgPerM3, pa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
     }
 }

@@ -69,6 +69,7 @@ public final class DiaphragmScene {
     private final ActionLines actionLines;
     private final int attachedToRibs;
     private final int attachedToCartilage;
+    private final int attachedToSpine;
     private final double omegaMax;
     private final double timeStep;
     private final double tendonAreaFraction;
@@ -85,6 +86,7 @@ public final class DiaphragmScene {
         this.actionLines = b.lines;
         this.attachedToRibs = b.attachedRibs;
         this.attachedToCartilage = b.attachedCartilage;
+        this.attachedToSpine = b.attachedSpine;
         this.omegaMax = b.omegaMax;
         this.timeStep = b.dt;
         this.tendonAreaFraction = b.tendonFraction;
@@ -234,8 +236,13 @@ public final class DiaphragmScene {
         return attachedToCartilage;
     }
 
+    /** Diaphragm nodes fixed to the spine (crura). */
+    public int attachedToSpine() {
+        return attachedToSpine;
+    }
+
     public int attachedNodes() {
-        return attachedToRibs + attachedToCartilage;
+        return attachedToRibs + attachedToCartilage + attachedToSpine;
     }
 
     /** Share of the upper surface's area that is tendon. */
@@ -273,6 +280,7 @@ public final class DiaphragmScene {
         ActionLines lines;
         int attachedRibs;
         int attachedCartilage;
+        int attachedSpine;
         double omegaMax;
         double dt;
         double tendonFraction;
@@ -370,6 +378,36 @@ public final class DiaphragmScene {
                 double len = TwoSurfaces.distance(mesh, i, j);
                 springs.add(i, j, young(i, j) * (thickness / 2) * edgeArea.get(e)[0] / (len * len));
             }
+            bendingSprings(edgeArea);
+        }
+
+        /**
+         * Across every edge shared by two triangles of the same face, a spring between the two
+         * opposite vertices: it resists folding about the edge (as in cloth models), which keeps
+         * the thin compressed walls from buckling at the scale of the mesh.
+         */
+        private void bendingSprings(java.util.Map<Long, double[]> edgeArea) {
+            if (p.bendingFactor() == 0) {
+                return;
+            }
+            java.util.Map<Long, Integer> firstOpposite = new java.util.HashMap<>();
+            for (int tr = 0; tr < mesh.triangleCount(); tr++) {
+                for (int k = 0; k < 3; k++) {
+                    int i = mesh.corner(tr, k);
+                    int j = mesh.corner(tr, (k + 1) % 3);
+                    int o = mesh.corner(tr, (k + 2) % 3);
+                    if (surfaces.isUpper(i) != surfaces.isUpper(o) || surfaces.isUpper(j) != surfaces.isUpper(o)
+                            || surfaces.isUpper(i) != surfaces.isUpper(j)) {
+                        continue;
+                    }
+                    Integer other = firstOpposite.putIfAbsent(key(i, j), o);
+                    if (other != null && other != o) {
+                        double len = TwoSurfaces.distance(mesh, o, other);
+                        double a = edgeArea.get(key(i, j))[0];
+                        springs.add(o, other, p.bendingFactor() * young(o, other) * (thickness / 2) * a / (len * len));
+                    }
+                }
+            }
         }
 
         void rigidLinks() {
@@ -464,6 +502,9 @@ public final class DiaphragmScene {
                 if (best.kind() == RibCage.Kind.RIB) {
                     t.node(v).drive(best.motion());
                     attachedRibs++;
+                } else if (best.kind() == RibCage.Kind.SPINE) {
+                    t.node(v).fix();
+                    attachedSpine++;
                 } else {
                     springs.add(v, best.a(), p.attachStiffness());
                     springs.add(v, best.b(), p.attachStiffness());
@@ -478,10 +519,13 @@ public final class DiaphragmScene {
             for (int i : cage.ribNodes()) {
                 all[i] = RIB;
             }
+            for (int i : cage.spineNodes()) {
+                all[i] = RIB;
+            }
             labels = all;
             for (int v = 0; v < nv; v++) {
                 Node n = t.node(v);
-                if (surfaces.isUpper(v) && !n.isDriven() && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
+                if (surfaces.isUpper(v) && !n.isDriven() && !n.isFixed() && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
                     apex = v;
                 }
             }
@@ -490,7 +534,7 @@ public final class DiaphragmScene {
         void muscle(List<ActionLines.Line> l) {
             lines = new ActionLines(l, cycle, controls);
             for (int v = 0; v < nv; v++) {
-                if (labels[v] != MUSCLE || t.node(v).isDriven()) {
+                if (labels[v] != MUSCLE || t.node(v).isDriven() || t.node(v).isFixed()) {
                     continue;
                 }
                 double w = lines.weight(mesh.coord(v, 0), mesh.coord(v, 1));
@@ -508,7 +552,7 @@ public final class DiaphragmScene {
             }
             for (int v = 0; v < nv; v++) {
                 Node n = t.node(v);
-                if (surfaces.isUpper(v) || n.isDriven()) {
+                if (surfaces.isUpper(v) || n.isDriven() || n.isFixed()) {
                     continue;
                 }
                 Node anchor = t.addNode(n.position(), n.mass()).fix();

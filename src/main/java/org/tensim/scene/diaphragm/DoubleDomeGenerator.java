@@ -72,11 +72,11 @@ public final class DoubleDomeGenerator {
 
         /**
          * An adult diaphragm in the BodyParts3D frame: 240 x 176 mm footprint, rim at
-         * z 1015 mm (sides) to 1100 mm (front), right dome top near 1190 mm, left
+         * z 1015 mm (sides) to 1165 mm (front, at the xiphoid), right dome top near 1190 mm, left
          * 12 mm lower, 2.5 mm thick, 43 rings.
          */
         public static Shape adult() {
-            return new Shape(43, 0.120, 0.088, -0.118, 1.015, 0.085, 0.025, 1.170, 0.021, 0.009, 0.0025);
+            return new Shape(43, 0.120, 0.088, -0.118, 1.015, 0.15, 0.025, 1.170, 0.021, 0.009, 0.0025);
         }
 
         public Shape withRings(int n) {

@@ -17,16 +17,16 @@ import org.tensim.model.Vec3;
  * box) sweeping laterally and forwards while descending to the anterior end (front,
  * bottom of the box): with {@code phi} from 0 to {@code phiEnd},
  * {@code |x| = medial + (lateral - medial) sin(phi)},
- * {@code y = yMax - (yMax - yMin) (1 - cos phi) / (1 - cos phiEnd)}, and z likewise
- * from zMax down to zMin ({@code phiEnd} = 0.8 pi; 0.55 pi for the floating ribs 11
- * and 12). Every rib node follows its rib's {@link HelicalAxisMotion}.
+ * {@code y = yMax - (yMax - yMin) (1 - cos phi) / (1 - cos phiEnd)} and
+ * {@code z = zMax - (zMax - zMin) sin(pi phi / (2 phiEnd))} ({@code phiEnd} = 0.8 pi;
+ * 0.55 pi for the floating ribs 11 and 12). Every rib node follows its rib's {@link HelicalAxisMotion}.
  *
  * <p><b>Finite helical axis per rib.</b> Wilson et al. (J Appl Physiol 1987)
  * measured from relaxed expiration to full inspiration a pump-handle rotation
  * (about a transverse axis through the rib head: raises the anterior end, which
  * moves forwards) of 11 degrees at rib 3 falling to 7 at rib 7, and a bucket-handle
- * rotation (about the axis from the head to the anterior end: raises the lateral
- * part, which moves outwards) of 13 falling to 10 degrees. Both are interpolated
+ * rotation (about an axis through the head along the rib: raises the lateral part,
+ * which moves outwards) of 13 falling to 10 degrees. Both are interpolated
  * linearly in the rib number (ribs 1-2 as rib 3; extrapolated below rib 7, at
  * least 2 and 4 degrees) and scaled by {@code ribQuietFraction} for quiet
  * breathing. The two small rotations compose into one helical axis through the
@@ -39,6 +39,10 @@ import org.tensim.model.Vec3;
  * the next and the next-but-one node); costal cartilage is a spring from the
  * anterior end of each of ribs 1-7 to the two nearest sternum nodes, and from ribs
  * 8-10 to the anterior end of the rib above (the costal margin).
+ *
+ * <p><b>Spine.</b> A fixed vertical segment in front of the heads of ribs 9-12 (the
+ * paper's Fig. 4 shows the spine's influence): diaphragm nodes near it (the crura)
+ * are fixed.
  */
 public final class RibCage {
     /** Nodes per simplified rib. */
@@ -47,7 +51,7 @@ public final class RibCage {
     public static final int STERNUM_NODES = 8;
 
     /** What a segment of the cage is. */
-    public enum Kind { RIB, CARTILAGE, STERNUM }
+    public enum Kind { RIB, CARTILAGE, STERNUM, SPINE }
 
     /**
      * A segment between two cage nodes; diaphragm nodes are attached to the nearest one.
@@ -62,7 +66,11 @@ public final class RibCage {
     private final int[] sternumNodes;
     private final Map<String, HelicalAxisMotion> motions;
 
-    private RibCage(List<Segment> segments, int[] ribNodes, int[] sternumNodes, Map<String, HelicalAxisMotion> m) {
+    private final int[] spineNodes;
+
+    private RibCage(List<Segment> segments, int[] ribNodes, int[] sternumNodes, Map<String, HelicalAxisMotion> m,
+            int[] spineNodes) {
+        this.spineNodes = spineNodes;
         this.segments = segments;
         this.ribNodes = ribNodes;
         this.sternumNodes = sternumNodes;
@@ -75,6 +83,11 @@ public final class RibCage {
 
     public int[] ribNodes() {
         return ribNodes.clone();
+    }
+
+    /** The two fixed nodes of the spine segment. */
+    public int[] spineNodes() {
+        return spineNodes.clone();
     }
 
     public int[] sternumNodes() {
@@ -96,6 +109,7 @@ public final class RibCage {
             BreathingCycle cycle, DiaphragmControls controls) {
         List<Segment> segs = new ArrayList<>();
         List<Integer> ribs = new ArrayList<>();
+        int[] spineNodes = new int[2];
         Map<String, HelicalAxisMotion> motions = new LinkedHashMap<>();
         double[] sb = null;
         for (Map.Entry<String, double[]> e : boxes.entrySet()) {
@@ -134,7 +148,12 @@ public final class RibCage {
                             + "'; expected rib-r1..rib-r12 and rib-l1..rib-l12");
                 }
                 int[] nodes = ribNodes(t, b, r, side.equals("r") ? -1 : 1, p.structureNodeMassKg());
-                HelicalAxisMotion m = motion(t, nodes, r, p, cycle, controls);
+                // True ribs turn (bucket handle) about the chord from the head to their anterior end,
+                // which keeps that end (and the sternum) in place; lower ribs about a horizontal line.
+                Vec3 head = t.node(nodes[0]).position();
+                Vec3 chord = t.node(nodes[nodes.length - 1]).position().minus(head);
+                Vec3 bucket = r <= 7 ? chord.normalized() : new Vec3(chord.x(), chord.y(), 0).normalized();
+                HelicalAxisMotion m = motion(t, nodes, bucket, r, p, cycle, controls);
                 motions.put(name, m);
                 for (int k = 0; k < nodes.length; k++) {
                     t.node(nodes[k]).drive(m);
@@ -157,7 +176,26 @@ public final class RibCage {
                 prevEnd = end;
             }
         }
-        return new RibCage(List.copyOf(segs), ribs.stream().mapToInt(Integer::intValue).toArray(), sternum, motions);
+        // The spine: a fixed vertical segment at the anterior face of the vertebral bodies, 20 mm in
+        // front of the mean head of ribs 9-12, from their heads down to 100 mm below the lowest rib.
+        double headY = 0;
+        double headZ = Double.POSITIVE_INFINITY;
+        double lowZ = Double.POSITIVE_INFINITY;
+        for (String side : new String[] {"r", "l"}) {
+            for (int r = 9; r <= 12; r++) {
+                double[] b = boxes.get("rib-" + side + r);
+                headY += b[4] / 8;
+                headZ = Math.min(headZ, b[5]);
+                lowZ = Math.min(lowZ, b[2]);
+            }
+        }
+        int top = t.addNode(0, headY - 0.02, headZ, p.structureNodeMassKg()).fix().id();
+        int bottom = t.addNode(0, headY - 0.02, lowZ - 0.1, p.structureNodeMassKg()).fix().id();
+        segs.add(new Segment(top, bottom, Kind.SPINE, null, "spine"));
+        spineNodes[0] = top;
+        spineNodes[1] = bottom;
+        return new RibCage(List.copyOf(segs), ribs.stream().mapToInt(Integer::intValue).toArray(), sternum, motions,
+                spineNodes);
     }
 
     private static int[] ribNodes(Topology t, double[] b, int rib, int sign, double mass) {
@@ -171,7 +209,7 @@ public final class RibCage {
             double x = sign * (medial + (lateral - medial) * Math.sin(phi));
             double f = (1 - Math.cos(phi)) / norm;
             double y = b[4] - (b[4] - b[1]) * f;
-            double z = b[5] - (b[5] - b[2]) * f;
+            double z = b[5] - (b[5] - b[2]) * Math.sin(0.5 * Math.PI * phi / phiEnd);
             ids[k] = t.addNode(x, y, z, mass).id();
         }
         return ids;
@@ -185,13 +223,14 @@ public final class RibCage {
         return new double[] {pump, bucket};
     }
 
-    private static HelicalAxisMotion motion(Topology t, int[] nodes, int rib, DiaphragmParameters p,
+    private static HelicalAxisMotion motion(Topology t, int[] nodes, Vec3 bucketDirection, int rib,
+            DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls) {
         Vec3 head = t.node(nodes[0]).position();
         Vec3 end = t.node(nodes[nodes.length - 1]).position();
         Vec3 mid = t.node(nodes[nodes.length / 2]).position();
         Vec3 pumpAxis = signedToRaise(new Vec3(1, 0, 0), head, end);
-        Vec3 bucketAxis = signedToRaise(end.minus(head).normalized(), head, mid);
+        Vec3 bucketAxis = signedToRaise(bucketDirection, head, mid);
         double[] deg = wilsonDegrees(rib);
         double ap = Math.toRadians(deg[0]) * p.ribQuietFraction();
         double ab = Math.toRadians(deg[1]) * p.ribQuietFraction();
