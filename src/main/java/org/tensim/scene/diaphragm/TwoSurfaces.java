@@ -134,6 +134,15 @@ public final class TwoSurfaces {
         return new TwoSurfaces(new TriangleMesh(xyz, tri), up);
     }
 
+    /** Two surfaces given by a side per vertex (e.g. kept through a simplification); {@code upper[v]} true on top. */
+    public static TwoSurfaces of(TriangleMesh mesh, boolean[] upper) {
+        if (upper.length != mesh.vertexCount()) {
+            throw new IllegalArgumentException("need one side per vertex: got " + upper.length + " for "
+                    + mesh.vertexCount() + " vertices");
+        }
+        return new TwoSurfaces(mesh, upper.clone());
+    }
+
     public TriangleMesh mesh() {
         return mesh;
     }
