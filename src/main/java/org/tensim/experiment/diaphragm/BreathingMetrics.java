@@ -7,10 +7,12 @@ import org.tensim.solver.SystemState;
 
 /**
  * Measures one breathing cycle of a running diaphragm (a {@link StepListener}):
- * the dome apex's superior-inferior travel, and the diaphragm's extents
- * (max - min of its nodes' coordinates: transverse x, antero-posterior y,
- * vertical z) at end-expiration (the cycle's start) and at end-inspiration
- * (start + Ti). The measured cycle is the last complete one of the run
+ * the dome apex's superior-inferior travel, and extents (max - min of node
+ * coordinates: transverse x, antero-posterior y, vertical z) at end-expiration (the
+ * cycle's start) and at end-inspiration (start + Ti), of two node sets: the
+ * attached nodes (the diaphragm's origins on ribs, cartilage, sternum and spine:
+ * the thorax's dimensions at the diaphragm's level, which the paper's claim is
+ * about) and all diaphragm nodes (the organ's own extents). The measured cycle is the last complete one of the run
  * ({@link #measuredCycleStart}), so that earlier cycles serve as warm-up.
  */
 public final class BreathingMetrics implements StepListener {
@@ -22,6 +24,9 @@ public final class BreathingMetrics implements StepListener {
     private final int apex;
     private double[] extentsExp;
     private double[] extentsInsp;
+    private double[] originsExp;
+    private double[] originsInsp;
+    private final boolean[] origin;
     private double apexMin = Double.POSITIVE_INFINITY;
     private double apexMax = Double.NEGATIVE_INFINITY;
     private double apexAtExp = Double.NaN;
@@ -42,6 +47,10 @@ public final class BreathingMetrics implements StepListener {
         this.end = start + period;
         this.nodes = scene.diaphragmNodes();
         this.apex = scene.apexNode();
+        this.origin = new boolean[nodes];
+        for (int v = 0; v < nodes; v++) {
+            origin[v] = scene.isAttached(v);
+        }
     }
 
     /** Start of the last complete cycle in [0, runSeconds] (0 when there is none), s. */
@@ -59,11 +68,13 @@ public final class BreathingMetrics implements StepListener {
         double t = sim.time();
         SystemState s = sim.state();
         if (extentsExp == null && t >= start - 1e-12) {
-            extentsExp = extents(s);
+            extentsExp = extents(s, null);
+            originsExp = extents(s, origin);
             apexAtExp = s.x[3 * apex + 2];
         }
         if (extentsInsp == null && t >= inspirationEnd - 1e-12) {
-            extentsInsp = extents(s);
+            extentsInsp = extents(s, null);
+            originsInsp = extents(s, origin);
             apexAtInsp = s.x[3 * apex + 2];
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
@@ -73,12 +84,15 @@ public final class BreathingMetrics implements StepListener {
         }
     }
 
-    private double[] extents(SystemState s) {
+    private double[] extents(SystemState s, boolean[] only) {
         double[] e = new double[3];
         for (int a = 0; a < 3; a++) {
             double lo = Double.POSITIVE_INFINITY;
             double hi = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < nodes; i++) {
+                if (only != null && !only[i]) {
+                    continue;
+                }
                 double v = s.x[3 * i + a];
                 lo = Math.min(lo, v);
                 hi = Math.max(hi, v);
@@ -111,13 +125,23 @@ public final class BreathingMetrics implements StepListener {
         return apexAtInsp - apexAtExp;
     }
 
-    /** Change of the transverse (x) extent from end-expiration to end-inspiration, m. */
+    /** Change of the transverse (x) extent of the attached nodes (origins), end-expiration to end-inspiration, m. */
     public double transverseChangeM() {
+        return originsInsp[0] - originsExp[0];
+    }
+
+    /** Change of the antero-posterior (y) extent of the attached nodes (origins), m. */
+    public double apChangeM() {
+        return originsInsp[1] - originsExp[1];
+    }
+
+    /** Change of the transverse extent of all diaphragm nodes, m. */
+    public double transverseChangeAllM() {
         return extentsInsp[0] - extentsExp[0];
     }
 
-    /** Change of the antero-posterior (y) extent, m. */
-    public double apChangeM() {
+    /** Change of the antero-posterior extent of all diaphragm nodes, m. */
+    public double apChangeAllM() {
         return extentsInsp[1] - extentsExp[1];
     }
 

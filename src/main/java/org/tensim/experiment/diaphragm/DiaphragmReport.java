@@ -160,6 +160,8 @@ public final class DiaphragmReport {
             summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
             summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
             summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
+            summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
+            summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
             summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
         }
         summary.put("simulated_s", round(sim.time(), 6));

@@ -70,6 +70,7 @@ public final class DiaphragmScene {
     private final int attachedToRibs;
     private final int attachedToCartilage;
     private final int attachedToSpine;
+    private final boolean[] attached;
     private final double omegaMax;
     private final double timeStep;
     private final double tendonAreaFraction;
@@ -87,6 +88,7 @@ public final class DiaphragmScene {
         this.attachedToRibs = b.attachedRibs;
         this.attachedToCartilage = b.attachedCartilage;
         this.attachedToSpine = b.attachedSpine;
+        this.attached = b.attached;
         this.omegaMax = b.omegaMax;
         this.timeStep = b.dt;
         this.tendonAreaFraction = b.tendonFraction;
@@ -241,6 +243,11 @@ public final class DiaphragmScene {
         return attachedToSpine;
     }
 
+    /** Whether diaphragm node v is attached to ribs, cartilage, sternum or spine (its origins). */
+    public boolean isAttached(int v) {
+        return v < attached.length && attached[v];
+    }
+
     public int attachedNodes() {
         return attachedToRibs + attachedToCartilage + attachedToSpine;
     }
@@ -281,6 +288,7 @@ public final class DiaphragmScene {
         int attachedRibs;
         int attachedCartilage;
         int attachedSpine;
+        boolean[] attached;
         double omegaMax;
         double dt;
         double tendonFraction;
@@ -484,6 +492,7 @@ public final class DiaphragmScene {
         }
 
         void attach() {
+            attached = new boolean[nv];
             List<RibCage.Segment> segs = cage.segments();
             for (int v = 0; v < nv; v++) {
                 Vec3 q = t.node(v).position();
@@ -499,6 +508,7 @@ public final class DiaphragmScene {
                 if (best == null || bestD > p.attachThresholdM()) {
                     continue;
                 }
+                attached[v] = true;
                 if (best.kind() == RibCage.Kind.RIB) {
                     t.node(v).drive(best.motion());
                     attachedRibs++;
