@@ -272,7 +272,9 @@ public final class DiaphragmReport {
             ex[i] = Double.parseDouble(f[3]) - Double.parseDouble(lines.get(1).split(",")[3]);
             ey[i] = Double.parseDouble(f[4]) - Double.parseDouble(lines.get(1).split(",")[4]);
         }
-        XYChart c = Charts.lineChart("Breathing: dome apex and diaphragm extents", "t, s", "mm", 900, 500);
+        XYChart c = Charts.lineChart("Breathing: dome apex and diaphragm extents (all nodes)", "t, s", "mm", 900,
+                500);
+        c.getStyler().setXAxisDecimalPattern("0.0");
         Charts.addLine(c, "apex z displacement", t, dz);
         Charts.addLine(c, "transverse extent change", t, ex);
         Charts.addLine(c, "antero-posterior extent change", t, ey);

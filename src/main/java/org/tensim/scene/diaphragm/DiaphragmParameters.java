@@ -64,7 +64,7 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
 
     /** The defaults (docs/diaphragm.md). */
     public static DiaphragmParameters defaults() {
-        return new DiaphragmParameters(1060, 40e3, 160e3, 0.3, 30, 0.12, new Vec3(0, 0, 1), null, 0.020, 5000,
+        return new DiaphragmParameters(1060, 40e3, 160e3, 0.9, 60, 0.12, new Vec3(0, 0, 1), null, 0.020, 5000,
                 0.01, 100, 0.3, 0.0005, 50e3, 1);
     }
 
@@ -72,6 +72,13 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, m, structureStiffness, structureNodeMassKg,
                 attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+    }
+
+    public DiaphragmParameters withDamping(double zetaHigh, double viscousPerS) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, zetaHigh, viscousPerS,
+                tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor);
     }
 
     public DiaphragmParameters withViscous(double perS) {
