@@ -31,7 +31,7 @@ public final class DiaphragmSetup {
     public static final Path DEFAULT_BOXES = Path.of("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
     /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
-    public static final double DEFAULT_MUSCLE_PA = 2300;
+    public static final double DEFAULT_MUSCLE_PA = 2600;
 
     /** How the two boundary surfaces were obtained. */
     public enum SurfaceMode { SHELL, OFFSET }

@@ -64,8 +64,8 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
 
     /** The defaults (docs/diaphragm.md). */
     public static DiaphragmParameters defaults() {
-        return new DiaphragmParameters(1060, 40e3, 160e3, 0.9, 60, 0.12, new Vec3(0, 0, 1), null, 0.020, 5000,
-                0.01, 100, 0.3, 0.0005, 50e3, 1);
+        return new DiaphragmParameters(1060, 40e3, 160e3, 0.9, 60, 0.12, new Vec3(0, 0, 1), null, 0.020, 2e5,
+                0.02, 100, 0.3, 0.0005, 50e3, 1);
     }
 
     public DiaphragmParameters withAttachThreshold(double m) {

@@ -17,7 +17,7 @@ import org.tensim.solver.Simulation;
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class DiaphragmPhysiologyTest {
     static final int RINGS = 14;
-    static final double PA = 2300;
+    static final double PA = 2600;
     private Outcome base;
 
     /**
