@@ -104,6 +104,11 @@ public final class DiaphragmReport {
 
         Map<String, Object> summary = new LinkedHashMap<>();
         long stepNanos = 0;
+        // CPU time of this thread as well as wall time: on a shared machine the wall time also
+        // counts the time the thread waited for a core.
+        java.lang.management.ThreadMXBean cpu = java.lang.management.ManagementFactory.getThreadMXBean();
+        boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
+        long cpuNanos = 0;
         String diverged = null;
         int apex = scene.apexNode();
         try (CsvWriter probe = new CsvWriter(out.resolve("probe.csv"), List.of("t_s", "breathing_level",
@@ -132,15 +137,18 @@ public final class DiaphragmReport {
                 if (t >= o.seconds() - 0.5 * dt) {
                     break;
                 }
+                long c0 = cpuTimed ? cpu.getCurrentThreadCpuTime() : 0;
                 long t0 = System.nanoTime();
                 sim.step(dt);
                 stepNanos += System.nanoTime() - t0;
+                cpuNanos += cpuTimed ? cpu.getCurrentThreadCpuTime() - c0 : 0;
                 metrics.afterStep(sim);
             }
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();
         }
         double wall = stepNanos / 1e9;
+        double cpuS = cpuTimed ? cpuNanos / 1e9 : Double.NaN;
         summary.put("source", built.source());
         summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
         summary.put("nodes", scene.topology().nodeCount());
@@ -173,6 +181,10 @@ public final class DiaphragmReport {
         summary.put("steps", sim.steps());
         summary.put("steps_per_s", round(sim.steps() / Math.max(wall, 1e-9), 1));
         summary.put("realtime_factor", round(sim.time() / Math.max(wall, 1e-9), 4));
+        summary.put("steps_per_cpu_s", round(sim.steps() / cpuS, 1));
+        summary.put("realtime_factor_cpu", round(sim.time() / cpuS, 4));
+        summary.put("load_average", round(java.lang.management.ManagementFactory.getOperatingSystemMXBean()
+                .getSystemLoadAverage(), 2));
         summary.put("rib_amplitude", scene.controls().ribAmplitude());
         summary.put("muscle_force_pa", scene.controls().muscleAmplitudePa());
         summary.put("breathing_period_s", period);
