@@ -192,7 +192,10 @@ public final class DiaphragmScene {
         return topology.nodeCount() - firstAnchor;
     }
 
-    /** Label per node: {@link #MUSCLE}, {@link #TENDON}, {@link #RIB}, {@link #STERNUM_CARTILAGE}. */
+    /**
+     * Label per node, for nodes {@code 0 .. simulatedNodes()-1}: {@link #MUSCLE}, {@link #TENDON},
+     * {@link #RIB} (ribs and spine), {@link #STERNUM_CARTILAGE}.
+     */
     public int[] labels() {
         return labels.clone();
     }
