@@ -1,0 +1,44 @@
+package org.tensim.view;
+
+import org.tensim.model.Vec3;
+import org.tensim.solver.Simulation;
+
+/**
+ * One simulated object of a {@link ViewScene} and what to draw of it. Springs and
+ * rigid links are drawn from the simulation's own state; a surface is drawn from
+ * {@code triangles} when there are any.
+ *
+ * @param name          shown in the chart legend and in warnings
+ * @param simulation    the simulation that moves this body's nodes
+ * @param triangles     node ids, three per triangle (may be empty: no surface)
+ * @param vertexColours RGB in [0, 1] per node (3 per node), or null for one colour
+ * @param offset        where the body is drawn relative to the scene origin, m (e.g. side by side)
+ * @param probeNode     the node whose displacement is charted
+ */
+public record Body(String name, Simulation simulation, int[] triangles, float[] vertexColours, Vec3 offset,
+        int probeNode) {
+    public Body {
+        int n = simulation.state().nodeCount;
+        if (triangles.length % 3 != 0) {
+            throw new IllegalArgumentException(name + ": triangle index count " + triangles.length
+                    + " is not a multiple of 3");
+        }
+        for (int i : triangles) {
+            if (i < 0 || i >= n) {
+                throw new IllegalArgumentException(name + ": triangle node " + i + " is out of range 0.." + (n - 1));
+            }
+        }
+        if (vertexColours != null && vertexColours.length != 3 * n) {
+            throw new IllegalArgumentException(name + ": " + vertexColours.length + " vertex colour values, expected "
+                    + 3 * n + " (3 per node)");
+        }
+        if (probeNode < 0 || probeNode >= n) {
+            throw new IllegalArgumentException(name + ": probe node " + probeNode + " is out of range 0.." + (n - 1));
+        }
+    }
+
+    /** Number of nodes. */
+    public int nodeCount() {
+        return simulation.state().nodeCount;
+    }
+}
