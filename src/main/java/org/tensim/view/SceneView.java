@@ -149,12 +149,17 @@ public final class SceneView {
         Point3d centre = new Point3d((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
         double r = 0.5 * Math.sqrt(sq(hi[0] - lo[0]) + sq(hi[1] - lo[1]) + sq(hi[2] - lo[2]));
         r = Math.max(r, 1e-3);
-        double d = 2.3 * r;
-        Point3d eye = new Point3d(centre.x + 0.35 * d, centre.y + 0.45 * d, centre.z + 0.83 * d);
+        // Java3D's field of view is horizontal; the vertical one is narrower on a wide canvas.
+        View view = universe.getViewer().getView();
+        int w = canvas.getWidth() > 0 ? canvas.getWidth() : canvas.getPreferredSize().width;
+        int h = canvas.getHeight() > 0 ? canvas.getHeight() : canvas.getPreferredSize().height;
+        double halfH = view.getFieldOfView() / 2;
+        double halfV = Math.atan(Math.tan(halfH) * h / Math.max(1, w));
+        double d = 1.1 * r / Math.tan(Math.min(halfH, halfV));
+        Point3d eye = new Point3d(centre.x + 0.2 * d, centre.y + 0.3 * d, centre.z + 0.933 * d);
         Transform3D look = new Transform3D();
         look.lookAt(eye, centre, new Vector3d(0, 1, 0));
         look.invert();
-        View view = universe.getViewer().getView();
         view.setFrontClipDistance(0.01 * r);
         view.setBackClipDistance(20 * r);
         orbit.setRotationCenter(centre);

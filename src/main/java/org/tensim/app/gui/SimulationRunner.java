@@ -82,9 +82,9 @@ public final class SimulationRunner implements Tuning.Target {
         thread.setDaemon(true);
     }
 
-    /** Starts the thread and builds the first scene. */
-    public void start() {
-        rebuild();
+    /** Starts the thread with a first scene (made by the factory, at rest), tuned to the current settings. */
+    public void start(ViewScene first) {
+        install(() -> first);
         thread.start();
     }
 
@@ -169,8 +169,12 @@ public final class SimulationRunner implements Tuning.Target {
     }
 
     private void rebuild() {
+        install(() -> factory.create(tensegrityTendon));
+    }
+
+    private void install(Supplier<ViewScene> source) {
         commands.add(() -> {
-            ViewScene s = factory.create(tensegrityTendon);
+            ViewScene s = source.get();
             Settings now = settings.get();
             IntegratorChoice integrator = IntegratorCatalog.available().stream()
                     .filter(c -> c.name().equals(now.integrator())).findFirst()
