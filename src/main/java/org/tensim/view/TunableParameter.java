@@ -1,6 +1,7 @@
 package org.tensim.view;
 
-import java.util.Locale;
+import java.math.BigDecimal;
+import java.math.MathContext;
 import org.tensim.model.Check;
 
 /**
@@ -87,6 +88,11 @@ public record TunableParameter(String key, String label, String unit, double min
 
     /** A compact, locale-independent rendering of a value of this parameter. */
     public static String format(double v) {
-        return String.format(Locale.ROOT, "%.4g", v).replaceAll("\\.?0+(e|$)", "$1");
+        if (v == 0 || !Double.isFinite(v)) {
+            return v == 0 ? "0" : Double.toString(v);
+        }
+        BigDecimal b = new BigDecimal(v).round(new MathContext(4)).stripTrailingZeros();
+        double a = Math.abs(v);
+        return a >= 1e-5 && a < 1e7 ? b.toPlainString() : b.toString();
     }
 }

@@ -68,12 +68,13 @@ public final class GuiCommand implements Callable<Integer> {
         if (screenshot != null && !(after >= 0 && Double.isFinite(after))) {
             throw new IllegalArgumentException("--after must be a finite number >= 0 s, got " + after);
         }
+        SceneFactory factory = GuiScenes.factory(scene, mesh); // bad names fail before any window
         if (java.awt.GraphicsEnvironment.isHeadless()) {
             throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
                     + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
         }
         setScripted(screenshot != null);
-        GuiWindow w = open(GuiScenes.factory(scene, mesh), fresh ? null : (configDir != null ? configDir : ConfigDir.resolve()),
+        GuiWindow w = open(factory, fresh ? null : (configDir != null ? configDir : ConfigDir.resolve()),
                 configDir != null ? configDir : ConfigDir.resolve(), preset, !paused);
         if (screenshot != null) {
             takeScreenshotAndClose(w, screenshot, after);
