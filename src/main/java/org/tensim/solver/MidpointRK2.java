@@ -54,9 +54,12 @@ public final class MidpointRK2 implements Integrator {
         model.computeForces(t, x, v, f);
         for (int i = 0; i < s.nodeCount; i++) {
             final double w = im[i];
+            // Fixed and driven nodes (w = 0) are not integrated: testing w also keeps an
+            // infinite force on a fixed node from turning its velocity into 0 * inf = NaN.
+            final boolean free = w != 0;
             for (int k = 3 * i; k < 3 * i + 3; k++) {
-                xm[k] = x[k] + hh * v[k];
-                vm[k] = v[k] + hh * w * f[k];
+                xm[k] = free ? x[k] + hh * v[k] : x[k];
+                vm[k] = free ? v[k] + hh * w * f[k] : v[k];
             }
         }
         s.applyMotions(t + hh, xm, vm, scratch);
@@ -64,6 +67,9 @@ public final class MidpointRK2 implements Integrator {
         model.computeForces(t + hh, xm, vm, f);
         for (int i = 0; i < s.nodeCount; i++) {
             final double w = im[i];
+            if (w == 0) {
+                continue;
+            }
             for (int k = 3 * i; k < 3 * i + 3; k++) {
                 x[k] += h * vm[k];
                 v[k] += h * w * f[k];
