@@ -14,11 +14,23 @@ import org.tensim.solver.Simulation;
  * @param vertexColours RGB in [0, 1] per node (3 per node), or null for one colour
  * @param offset        where the body is drawn relative to the scene origin, m (e.g. side by side)
  * @param probeNode     the node whose displacement is charted
+ * @param visibleNodes  nodes {@code 0 .. visibleNodes-1} are drawn, with the springs and links between them;
+ *                      the others (helpers such as fixed anchors) are simulated but not drawn
  */
 public record Body(String name, Simulation simulation, int[] triangles, float[] vertexColours, Vec3 offset,
-        int probeNode) {
+        int probeNode, int visibleNodes) {
+    /** A body whose nodes are all drawn. */
+    public Body(String name, Simulation simulation, int[] triangles, float[] vertexColours, Vec3 offset,
+            int probeNode) {
+        this(name, simulation, triangles, vertexColours, offset, probeNode, simulation.state().nodeCount);
+    }
+
     public Body {
         int n = simulation.state().nodeCount;
+        if (visibleNodes < 1 || visibleNodes > n) {
+            throw new IllegalArgumentException(name + ": visible node count " + visibleNodes + " is out of range 1.."
+                    + n);
+        }
         if (triangles.length % 3 != 0) {
             throw new IllegalArgumentException(name + ": triangle index count " + triangles.length
                     + " is not a multiple of 3");

@@ -84,20 +84,22 @@ final class BodyShapes {
         if (body.triangles().length > 0) {
             addSurface(n);
         }
-        if (s.springCount() > 0) {
-            addLines(Layer.SPRINGS, n, pairs(s.springA, s.springB), new Color3f(0.35f, 0.55f, 0.85f), 1.5f,
-                    body.vertexColours());
+        int visible = body.visibleNodes();
+        int[] springs = pairs(s.springA, s.springB, visible);
+        if (springs.length > 0) {
+            addLines(Layer.SPRINGS, n, springs, new Color3f(0.35f, 0.55f, 0.85f), 1.5f, body.vertexColours());
         }
-        if (s.linkCount() > 0) {
-            addLines(Layer.LINKS, n, pairs(s.linkA, s.linkB), new Color3f(0.9f, 0.15f, 0.1f), 4f, null);
+        int[] links = pairs(s.linkA, s.linkB, visible);
+        if (links.length > 0) {
+            addLines(Layer.LINKS, n, links, new Color3f(0.9f, 0.15f, 0.1f), n > 2000 ? 2f : 4f, null);
         }
-        int[] all = new int[n];
-        for (int i = 0; i < n; i++) {
+        int[] all = new int[visible];
+        for (int i = 0; i < visible; i++) {
             all[i] = i;
         }
         addPoints(Layer.NODES, n, all, new Color3f(0.95f, 0.95f, 0.95f), n > 2000 ? 1.5f : 5f);
         addPoints(Layer.NODES, n, new int[] {body.probeNode()}, new Color3f(1f, 0.85f, 0.1f), 12f);
-        addVectors(n);
+        addVectors(visible);
         update(initial);
     }
 
@@ -126,11 +128,18 @@ final class BodyShapes {
         }
     }
 
-    private static int[] pairs(int[] a, int[] b) {
-        int[] idx = new int[2 * a.length];
+    /** End points of the elements whose both ends are drawn, two per element. */
+    private static int[] pairs(int[] a, int[] b, int visible) {
+        int m = 0;
         for (int i = 0; i < a.length; i++) {
-            idx[2 * i] = a[i];
-            idx[2 * i + 1] = b[i];
+            m += a[i] < visible && b[i] < visible ? 1 : 0;
+        }
+        int[] idx = new int[2 * m];
+        for (int i = 0, k = 0; i < a.length; i++) {
+            if (a[i] < visible && b[i] < visible) {
+                idx[k++] = a[i];
+                idx[k++] = b[i];
+            }
         }
         return idx;
     }

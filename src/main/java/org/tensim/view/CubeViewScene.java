@@ -75,7 +75,7 @@ public final class CubeViewScene implements ViewScene {
             }
 
             @Override
-            public ViewScene create(boolean tensegrityTendon) {
+            public ViewScene create(boolean tensegrityTendon, java.util.Map<String, Double> values) {
                 return CubeViewScene.create();
             }
         };

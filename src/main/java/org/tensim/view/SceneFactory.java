@@ -1,5 +1,7 @@
 package org.tensim.view;
 
+import java.util.Map;
+
 /**
  * Makes fresh instances of one scene, for a start, a reset, or a change that
  * needs a new topology (the tendon's model). Creation may take time (mesh
@@ -16,9 +18,17 @@ public interface SceneFactory {
     boolean hasTendonChoice();
 
     /**
-     * A new scene at rest, with its parameters at their defaults.
+     * A new scene at rest. The values of parameters that need a new scene
+     * ({@link TunableParameter#restarts()}) are taken from {@code values} here;
+     * the others are applied afterwards through {@link ViewScene#apply}.
      *
      * @param tensegrityTendon true: the tendon has rigid links; ignored without a tendon choice
+     * @param values           parameter values by key; missing keys take their defaults
      */
-    ViewScene create(boolean tensegrityTendon);
+    ViewScene create(boolean tensegrityTendon, Map<String, Double> values);
+
+    /** A new scene at rest with every parameter at its default. */
+    default ViewScene create(boolean tensegrityTendon) {
+        return create(tensegrityTendon, Map.of());
+    }
 }

@@ -19,9 +19,11 @@ import org.tensim.model.Check;
  * @param defaultValue the value a new scene starts with, within [min, max]
  * @param logarithmic whether a slider should move along a logarithmic scale (min must be > 0)
  * @param description one sentence on what the parameter does, for tooltips and docs
+ * @param restarts    true when a change needs a new scene (the simulation restarts from rest); false when
+ *                    it takes effect in the running simulation
  */
 public record TunableParameter(String key, String label, String unit, double min, double max, double defaultValue,
-        boolean logarithmic, String description) {
+        boolean logarithmic, String description, boolean restarts) {
     public TunableParameter {
         if (key == null || !key.matches("[A-Za-z][A-Za-z0-9]*")) {
             throw new IllegalArgumentException("parameter key must be letters and digits starting with a letter, got '"
@@ -44,13 +46,18 @@ public record TunableParameter(String key, String label, String unit, double min
     /** A linear parameter. */
     public static TunableParameter linear(String key, String label, String unit, double min, double max,
             double defaultValue, String description) {
-        return new TunableParameter(key, label, unit, min, max, defaultValue, false, description);
+        return new TunableParameter(key, label, unit, min, max, defaultValue, false, description, false);
     }
 
     /** A parameter best moved on a logarithmic scale (stiffness, time step). */
     public static TunableParameter log(String key, String label, String unit, double min, double max,
             double defaultValue, String description) {
-        return new TunableParameter(key, label, unit, min, max, defaultValue, true, description);
+        return new TunableParameter(key, label, unit, min, max, defaultValue, true, description, false);
+    }
+
+    /** The same parameter, marked as needing a new scene when it changes. */
+    public TunableParameter restarting() {
+        return new TunableParameter(key, label, unit, min, max, defaultValue, logarithmic, description, true);
     }
 
     /**

@@ -74,8 +74,9 @@ public final class GuiCommand implements Callable<Integer> {
                     + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
         }
         setScripted(screenshot != null);
-        GuiWindow w = open(factory, fresh ? null : (configDir != null ? configDir : ConfigDir.resolve()),
-                configDir != null ? configDir : ConfigDir.resolve(), preset, !paused);
+        Path dir = configDir != null ? configDir : ConfigDir.resolve();
+        // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
+        GuiWindow w = open(factory, fresh ? null : dir, dir, preset, !paused && screenshot == null);
         if (screenshot != null) {
             takeScreenshotAndClose(w, screenshot, after);
         }
@@ -102,8 +103,13 @@ public final class GuiCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--preset: " + e.getMessage(), e);
             }
         }
-        if (factory.hasTendonChoice() && !tuning.tensegrityTendon()) {
-            first = factory.create(false);
+        // The first scene was made with the defaults: make it again if what was restored needs a new one.
+        boolean remake = factory.hasTendonChoice() && !tuning.tensegrityTendon();
+        for (org.tensim.view.TunableParameter p : first.parameters()) {
+            remake |= p.restarts() && tuning.get(p.key()) != p.defaultValue();
+        }
+        if (remake) {
+            first = factory.create(tuning.tensegrityTendon(), tuning.snapshot().values());
         }
         ViewScene start = first;
         AtomicReference<GuiWindow> w = new AtomicReference<>();
@@ -131,17 +137,31 @@ public final class GuiCommand implements Callable<Integer> {
         }
     }
 
-    /** Waits for the simulated time (at most 10 min of wall time), saves the window as PNG, closes it. */
+    /**
+     * Plays once the view renders, waits for the simulated time (at most 10 min of
+     * wall time), saves the running window as PNG and closes it.
+     */
     static void takeScreenshotAndClose(GuiWindow w, Path file, double afterS) throws Exception {
         long deadline = System.nanoTime() + 600_000_000_000L;
-        while ((w.runner().simTime() < afterS || w.view().shownTime() < afterS * 0.99 || w.scene() == null)
-                && w.runner().divergence() == null && System.nanoTime() < deadline) {
-            Thread.sleep(50);
+        // Java3D takes a moment to show its first frame: start the clock only then.
+        while ((w.scene() == null || w.view().framesRendered() < 3) && System.nanoTime() < deadline) {
+            Thread.sleep(20);
         }
-        Thread.sleep(600); // two chart refreshes and a few frames, so the picture is settled
+        SwingUtilities.invokeAndWait(() -> {
+            w.play(true);
+            w.controls().showPlaying(true);
+        });
+        while ((w.runner().simTime() < afterS || w.view().shownTime() < afterS * 0.99)
+                && w.runner().divergence() == null && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        SwingUtilities.invokeAndWait(() -> w.chart().refresh());
+        Thread.sleep(300); // the status bar's rates refresh every 250 ms
         AtomicReference<Exception> error = new AtomicReference<>();
+        double[] shown = new double[1];
         SwingUtilities.invokeAndWait(() -> {
             try {
+                shown[0] = w.view().shownTime();
                 w.saveScreenshot(file);
             } catch (Exception e) {
                 error.set(e);
@@ -151,6 +171,7 @@ public final class GuiCommand implements Callable<Integer> {
         if (error.get() != null) {
             throw new java.io.IOException("cannot save screenshot " + file + ": " + error.get().getMessage(), error.get());
         }
-        System.out.println("wrote " + file.toAbsolutePath() + " at t = " + w.runner().simTime() + " s");
+        System.out.println("wrote " + file.toAbsolutePath() + " (scene at t = "
+                + String.format(java.util.Locale.ROOT, "%.3f", shown[0]) + " s)");
     }
 }

@@ -39,10 +39,12 @@ final class ParameterControl extends JPanel {
         slider.setName("slider." + p.key());
         field.setName("field." + p.key());
         normal = field.getBackground();
-        JLabel label = new JLabel(p.labelWithUnit());
+        JLabel label = new JLabel(p.labelWithUnit() + (p.restarts() ? ", restarts" : ""));
         String tip = "<html>" + p.description() + "<br>Range " + TunableParameter.format(p.min()) + " to "
                 + TunableParameter.format(p.max()) + " " + p.unit() + (p.logarithmic() ? " (log scale)" : "")
-                + "; default " + TunableParameter.format(p.defaultValue()) + ". Preset key: " + p.key() + "</html>";
+                + "; default " + TunableParameter.format(p.defaultValue()) + ". Preset key: " + p.key()
+                + (p.restarts() ? "<br><b>A change restarts the simulation from rest</b> (it needs a new scene)." : "")
+                + "</html>";
         label.setToolTipText(tip);
         slider.setToolTipText(tip);
         field.setToolTipText(tip);

@@ -41,6 +41,7 @@ final class ProbeChart {
         chart.getStyler().setChartBackgroundColor(Color.WHITE);
         chart.getStyler().setPlotGridLinesVisible(true);
         chart.getStyler().setXAxisDecimalPattern("0.##");
+        chart.getStyler().setXAxisMaxLabelCount(12); // readable time labels on a long window
         chart.getStyler().setYAxisDecimalPattern("0.###");
         chart.getStyler().setChartTitleFont(chart.getStyler().getChartTitleFont().deriveFont(12f));
         panel = new XChartPanel<>(chart);

@@ -141,7 +141,13 @@ public final class SimulationRunner implements Tuning.Target {
             commands.add(() -> { });
         } else {
             commands.add(() -> {
-                if (scene != null) {
+                if (scene == null) {
+                    return;
+                }
+                if (restarts(scene, key)) {
+                    // Cannot change in a running simulation: a new scene with the value, from rest.
+                    rebuild();
+                } else {
                     scene.apply(key, value);
                     updateCriticalStep();
                 }
@@ -168,8 +174,12 @@ public final class SimulationRunner implements Tuning.Target {
         rebuild();
     }
 
+    private static boolean restarts(ViewScene s, String key) {
+        return s.parameters().stream().anyMatch(p -> p.key().equals(key) && p.restarts());
+    }
+
     private void rebuild() {
-        install(() -> factory.create(tensegrityTendon));
+        install(() -> factory.create(tensegrityTendon, settings.get().values()));
     }
 
     private void install(Supplier<ViewScene> source) {
@@ -180,7 +190,7 @@ public final class SimulationRunner implements Tuning.Target {
                     .filter(c -> c.name().equals(now.integrator())).findFirst()
                     .orElse(IntegratorCatalog.available().get(0));
             for (Map.Entry<String, Double> e : now.values().entrySet()) {
-                if (!e.getKey().equals(Tuning.TIME_STEP)) {
+                if (!e.getKey().equals(Tuning.TIME_STEP) && !restarts(s, e.getKey())) {
                     s.apply(e.getKey(), e.getValue());
                 }
             }

@@ -53,8 +53,14 @@ final class StatusBar extends JPanel {
             double sps = Math.max(0, steps - lastSteps) / wall;
             double rtf = Math.max(0, sim - lastSim) / wall;
             double fps = (framesRendered - lastFrames) / wall;
-            numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   %,.0f steps/s   |   real-time x%.2f   |   %.0f fps"
-                    + "   |   h = %s s", sim, sps, rtf, fps, org.tensim.view.TunableParameter.format(r.timeStep())));
+            String h = org.tensim.view.TunableParameter.format(r.timeStep());
+            if (r.isPlaying()) {
+                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   %,.0f steps/s   |   real-time x%.2f   |   "
+                        + "%.0f fps   |   h = %s s", sim, sps, rtf, fps, h));
+            } else {
+                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   paused (%,d steps)   |   %.0f fps   |   h = %s s",
+                        sim, steps, fps, h));
+            }
         }
         lastNanos = now;
         lastSteps = steps;

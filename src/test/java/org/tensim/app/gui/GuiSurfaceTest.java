@@ -83,6 +83,13 @@ class GuiSurfaceTest {
             assertTrue(!w.tuning().tensegrityTendon());
             waitFor("frames of the new scene", () -> w.view().shownTime() > 0.2);
             assertDrawn(w.view().capture(), "the rebuilt membrane");
+
+            // A parameter that needs a new scene: typed in, the scene is rebuilt with it, the tendon choice kept.
+            var third = w.scene();
+            onEdt(() -> w.controls().control(MembraneTestScene.GRAVITY).enter("2"));
+            waitFor("the scene rebuilt with the new gravity", () -> w.scene() != third);
+            assertEquals(-2, w.scene().bodies().get(0).simulation().state().gravity().y(), 0);
+            assertEquals(0, w.scene().bodies().get(0).simulation().state().linkCount());
         } finally {
             onEdt(w::close);
         }

@@ -21,11 +21,16 @@ final class MembraneTestScene implements ViewScene {
     static final int N = 12;
     static final double SPACING_M = 0.1;
     static final String STIFFNESS = "stiffnessNPerM";
+    /** Needs a new scene: gravity is set when the topology is built (a stand-in for a new mesh or cycle). */
+    static final String GRAVITY = "gravityMPerS2";
+    static final List<TunableParameter> PARAMETERS = List.of(
+            TunableParameter.log(STIFFNESS, "Stiffness", "N/m", 1, 1000, 50, "every spring"),
+            TunableParameter.linear(GRAVITY, "Gravity", "m/s^2", 0, 20, 9.81, "set at build").restarting());
 
     private final Simulation sim;
     private final List<Body> bodies;
 
-    MembraneTestScene(boolean tensegrity) {
+    MembraneTestScene(boolean tensegrity, double gravity) {
         Topology t = new Topology();
         Node[][] g = new Node[N][N];
         float[] colours = new float[3 * N * N];
@@ -59,7 +64,7 @@ final class MembraneTestScene implements ViewScene {
                 }
             }
         }
-        t.setGravity(new Vec3(0, -9.81, 0));
+        t.setGravity(new Vec3(0, -gravity, 0));
         t.setViscousDamping(0.02);
         sim = Simulation.of(t);
         bodies = List.of(new Body("membrane", sim, tri.stream().mapToInt(Integer::intValue).toArray(), colours,
@@ -91,8 +96,8 @@ final class MembraneTestScene implements ViewScene {
             }
 
             @Override
-            public ViewScene create(boolean tensegrityTendon) {
-                return new MembraneTestScene(tensegrityTendon);
+            public ViewScene create(boolean tensegrityTendon, java.util.Map<String, Double> values) {
+                return new MembraneTestScene(tensegrityTendon, values.getOrDefault(GRAVITY, 9.81));
             }
         };
     }
@@ -114,7 +119,7 @@ final class MembraneTestScene implements ViewScene {
 
     @Override
     public List<TunableParameter> parameters() {
-        return List.of(TunableParameter.log(STIFFNESS, "Stiffness", "N/m", 1, 1000, 50, "every spring"));
+        return PARAMETERS;
     }
 
     @Override

@@ -63,7 +63,7 @@ class ParameterBindingTest {
     }
 
     static List<SceneFactory> factories() {
-        return List.of(CubeViewScene.factory());
+        return List.of(CubeViewScene.factory(), MembraneTestScene.factory());
     }
 
     static SceneFactory factory(String name) {
@@ -95,6 +95,10 @@ class ParameterBindingTest {
     @MethodSource("sceneParameters")
     void everyParameterChangesTheSimulation(String sceneName, String key) {
         SceneFactory f = factory(sceneName);
+        if (f.create(true).parameters().stream().anyMatch(q -> q.key().equals(key) && q.restarts())) {
+            restartingParameterReachesTheNewScene(f, key);
+            return;
+        }
         ViewScene reference = f.create(true);
         ViewScene same = f.create(true);
         ViewScene changed = f.create(true);
@@ -124,6 +128,23 @@ class ParameterBindingTest {
         }
         assertTrue(diff > 1e-9, key + " changed from " + p.defaultValue() + " to " + changedTuning.get(key)
                 + " but the positions moved by at most " + diff + " m");
+    }
+
+    /** A parameter that needs a new scene: the factory must build it with the value. */
+    static void restartingParameterReachesTheNewScene(SceneFactory f, String key) {
+        ViewScene reference = f.create(true);
+        TunableParameter p = reference.parameters().stream().filter(q -> q.key().equals(key)).findFirst().orElseThrow();
+        ViewScene same = f.create(true, java.util.Map.of(key, p.defaultValue()));
+        ViewScene changed = f.create(true, java.util.Map.of(key, other(p, p.defaultValue())));
+        double dt = reference.defaultTimeStep();
+        double[] a = run(reference, dt, 300);
+        assertArrayEquals(a, run(same, dt, 300), "the default value given explicitly must change nothing");
+        double[] c = run(changed, dt, 300);
+        double diff = 0;
+        for (int i = 0; i < a.length; i++) {
+            diff = Math.max(diff, Math.abs(a[i] - c[i]));
+        }
+        assertTrue(diff > 1e-9, key + " given to the factory changed nothing");
     }
 
     @Test
