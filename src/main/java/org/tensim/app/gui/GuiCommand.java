@@ -14,8 +14,9 @@ import picocli.CommandLine.Option;
 /** {@code tensim gui}: the interactive window. */
 @Command(name = "gui", mixinStandardHelpOptions = true,
         description = {"Interactive simulation in a Java3D window: tune parameters while it runs,",
-            "watch a probe node's displacement, save and load presets. Last-used parameters are",
-            "restored from $XDG_CONFIG_HOME/tensim/ (or ~/.config/tensim/). Guide: docs/gui.md"})
+            "watch a probe node's displacement, save and load presets.",
+            "Last-used parameters are restored from $XDG_CONFIG_HOME/tensim/ (or ~/.config/tensim/).",
+            "Guide: docs/gui.md"})
 public final class GuiCommand implements Callable<Integer> {
     private static volatile boolean scripted;
 
