@@ -16,13 +16,16 @@ import org.tensim.solver.Simulation;
  * @param probeNode     the node whose displacement is charted
  * @param visibleNodes  nodes {@code 0 .. visibleNodes-1} are drawn, with the springs and links between them;
  *                      the others (helpers such as fixed anchors) are simulated but not drawn
+ * @param structureEdges node id pairs drawn as a separate layer of bone-coloured lines (ribs, sternum,
+ *                      cartilage); may be empty
  */
 public record Body(String name, Simulation simulation, int[] triangles, float[] vertexColours, Vec3 offset,
-        int probeNode, int visibleNodes) {
-    /** A body whose nodes are all drawn. */
+        int probeNode, int visibleNodes, int[] structureEdges) {
+    /** A body whose nodes are all drawn, without structure lines. */
     public Body(String name, Simulation simulation, int[] triangles, float[] vertexColours, Vec3 offset,
             int probeNode) {
-        this(name, simulation, triangles, vertexColours, offset, probeNode, simulation.state().nodeCount);
+        this(name, simulation, triangles, vertexColours, offset, probeNode, simulation.state().nodeCount,
+                new int[0]);
     }
 
     public Body {
@@ -43,6 +46,16 @@ public record Body(String name, Simulation simulation, int[] triangles, float[] 
         if (vertexColours != null && vertexColours.length != 3 * n) {
             throw new IllegalArgumentException(name + ": " + vertexColours.length + " vertex colour values, expected "
                     + 3 * n + " (3 per node)");
+        }
+        if (structureEdges.length % 2 != 0) {
+            throw new IllegalArgumentException(name + ": structure edge index count " + structureEdges.length
+                    + " is not even (two nodes per edge)");
+        }
+        for (int i : structureEdges) {
+            if (i < 0 || i >= visibleNodes) {
+                throw new IllegalArgumentException(name + ": structure edge node " + i + " is out of range 0.."
+                        + (visibleNodes - 1));
+            }
         }
         if (probeNode < 0 || probeNode >= n) {
             throw new IllegalArgumentException(name + ": probe node " + probeNode + " is out of range 0.." + (n - 1));

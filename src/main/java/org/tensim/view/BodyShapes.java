@@ -29,7 +29,7 @@ import org.tensim.solver.SystemState;
  */
 final class BodyShapes {
     /** The layers a user can show or hide. */
-    enum Layer { SURFACE, SPRINGS, LINKS, NODES, VECTORS }
+    enum Layer { SURFACE, SPRINGS, LINKS, NODES, VECTORS, STRUCTURE }
 
     private static final int REF = GeometryArray.COORDINATES | GeometryArray.BY_REFERENCE;
     private static final int REF_INDEXED = REF | GeometryArray.USE_COORD_INDEX_ONLY;
@@ -92,6 +92,9 @@ final class BodyShapes {
         int[] links = pairs(s.linkA, s.linkB, visible);
         if (links.length > 0) {
             addLines(Layer.LINKS, n, links, new Color3f(0.9f, 0.15f, 0.1f), n > 2000 ? 2f : 4f, null);
+        }
+        if (body.structureEdges().length > 0) {
+            addLines(Layer.STRUCTURE, n, body.structureEdges(), new Color3f(0.93f, 0.89f, 0.76f), 3f, null);
         }
         int[] all = new int[visible];
         for (int i = 0; i < visible; i++) {

@@ -194,6 +194,11 @@ public final class SceneView {
         setVisible(BodyShapes.Layer.NODES, on);
     }
 
+    /** Ribs, sternum and cartilage (the bodies' structure lines). */
+    public void showStructure(boolean on) {
+        setVisible(BodyShapes.Layer.STRUCTURE, on);
+    }
+
     /** Displacement vectors, scaled by the scene's displacement scale. */
     public void showVectors(boolean on) {
         setVisible(BodyShapes.Layer.VECTORS, on);

@@ -137,6 +137,7 @@ final class ControlPanel extends JPanel {
         layers.add(check("Springs", "layer.springs", true, on -> actions.layer("springs", on)));
         layers.add(check("Rigid links", "layer.links", true, on -> actions.layer("links", on)));
         layers.add(check("Nodes", "layer.nodes", true, on -> actions.layer("nodes", on)));
+        layers.add(check("Ribs, sternum", "layer.structure", true, on -> actions.layer("structure", on)));
         layers.add(check("Displacements", "layer.vectors", false, on -> actions.layer("vectors", on)));
         view.add(left(layers));
         JComboBox<String> axis = new JComboBox<>(new String[] {"x", "y", "z", "magnitude"});

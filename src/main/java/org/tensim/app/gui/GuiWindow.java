@@ -209,6 +209,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             case "links" -> view.showLinks(on);
             case "nodes" -> view.showNodes(on);
             case "vectors" -> view.showVectors(on);
+            case "structure" -> view.showStructure(on);
             default -> throw new IllegalArgumentException("unknown layer " + layer);
         }
     }
