@@ -27,6 +27,7 @@ import org.jogamp.vecmath.Color3f;
 import org.jogamp.vecmath.Point3d;
 import org.jogamp.vecmath.Vector3d;
 import org.jogamp.vecmath.Vector3f;
+import org.tensim.model.Vec3;
 
 /**
  * The Java3D view of a scene: a {@link Canvas3D} in a universe whose content is
@@ -88,7 +89,7 @@ public final class SceneView {
      * Replaces what is drawn with the bodies of {@code frames}, at their current
      * positions, and frames them in the home view. Call on the Swing thread.
      */
-    public void show(FrameBuffer frames, double displacementScale) {
+    public void show(FrameBuffer frames, double displacementScale, Vec3 up, Vec3 viewFrom) {
         if (content != null) {
             content.detach();
         }
@@ -138,14 +139,14 @@ public final class SceneView {
         for (Map.Entry<BodyShapes.Layer, Boolean> e : visible.entrySet()) {
             setVisible(e.getKey(), e.getValue());
         }
-        frame(lo, hi);
+        frame(lo, hi, up.normalized(), viewFrom.normalized());
         root.compile();
         universe.addBranchGraph(root);
         content = root;
     }
 
-    /** Sets the home view to frame the box [lo, hi] (m) from the front, slightly above, and goes there. */
-    private void frame(double[] lo, double[] hi) {
+    /** Sets the home view to frame the box [lo, hi] (m), seen from direction {@code from}, and goes there. */
+    private void frame(double[] lo, double[] hi, Vec3 up, Vec3 from) {
         Point3d centre = new Point3d((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
         double r = 0.5 * Math.sqrt(sq(hi[0] - lo[0]) + sq(hi[1] - lo[1]) + sq(hi[2] - lo[2]));
         r = Math.max(r, 1e-3);
@@ -156,9 +157,9 @@ public final class SceneView {
         double halfH = view.getFieldOfView() / 2;
         double halfV = Math.atan(Math.tan(halfH) * h / Math.max(1, w));
         double d = 1.1 * r / Math.tan(Math.min(halfH, halfV));
-        Point3d eye = new Point3d(centre.x + 0.2 * d, centre.y + 0.3 * d, centre.z + 0.933 * d);
+        Point3d eye = new Point3d(centre.x + from.x() * d, centre.y + from.y() * d, centre.z + from.z() * d);
         Transform3D look = new Transform3D();
-        look.lookAt(eye, centre, new Vector3d(0, 1, 0));
+        look.lookAt(eye, centre, new Vector3d(up.x(), up.y(), up.z()));
         look.invert();
         view.setFrontClipDistance(0.01 * r);
         view.setBackClipDistance(20 * r);

@@ -1,6 +1,7 @@
 package org.tensim.view;
 
 import java.util.List;
+import org.tensim.model.Vec3;
 
 /**
  * A scene as the GUI sees it: the bodies to simulate and draw, and the
@@ -44,5 +45,15 @@ public interface ViewScene {
     /** Scale of the displacement vectors drawn (the paper's Fig. 5 uses 100). */
     default double displacementScale() {
         return 1;
+    }
+
+    /** The scene's up direction, shown upwards in the home view. Default: +y. */
+    default Vec3 up() {
+        return new Vec3(0, 1, 0);
+    }
+
+    /** Direction from the scene's centre towards the eye in the home view. Default: front (+z), a little right and above. */
+    default Vec3 viewFrom() {
+        return new Vec3(0.2, 0.3, 0.933);
     }
 }

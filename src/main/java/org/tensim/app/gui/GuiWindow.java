@@ -153,7 +153,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
                 return;
             }
             scene = s;
-            view.show(frames, s.displacementScale());
+            view.show(frames, s.displacementScale(), s.up(), s.viewFrom());
             chart.attach(probes, s.bodies());
             frame.setTitle("tensim: " + s.title());
         });
