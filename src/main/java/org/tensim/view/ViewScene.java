@@ -47,6 +47,14 @@ public interface ViewScene {
         return 1;
     }
 
+    /**
+     * Whether springs and nodes are drawn at first. Default: only when no body has a
+     * surface (a dense wireframe over a shaded surface hides it and slows drawing).
+     */
+    default boolean wireframeAtStart() {
+        return bodies().stream().allMatch(b -> b.triangles().length == 0);
+    }
+
     /** The scene's up direction, shown upwards in the home view. Default: +y. */
     default Vec3 up() {
         return new Vec3(0, 1, 0);

@@ -50,6 +50,8 @@ final class ControlPanel extends JPanel {
     }
 
     private final Tuning tuning;
+    private final Actions actions;
+    private final java.util.Map<String, JCheckBox> layerBoxes = new java.util.HashMap<>();
     private final List<ParameterControl> controls = new ArrayList<>();
     private final JToggleButton play = new JToggleButton("Play");
     private final JComboBox<IntegratorChoice> integrator;
@@ -59,6 +61,7 @@ final class ControlPanel extends JPanel {
 
     ControlPanel(Tuning tuning, Actions actions, int probeAxis, Consumer<String> errors) {
         this.tuning = tuning;
+        this.actions = actions;
         setLayout(new BoxLayout(this, BoxLayout.Y_AXIS));
         setBorder(BorderFactory.createEmptyBorder(6, 8, 6, 8));
 
@@ -133,12 +136,12 @@ final class ControlPanel extends JPanel {
         JPanel view = column();
         view.add(left(button("Reset view", "resetView", "Back to the initial camera", actions::resetView)));
         JPanel layers = new JPanel(new GridLayout(0, 2));
-        layers.add(check("Surface", "layer.surface", true, on -> actions.layer("surface", on)));
-        layers.add(check("Springs", "layer.springs", true, on -> actions.layer("springs", on)));
-        layers.add(check("Rigid links", "layer.links", true, on -> actions.layer("links", on)));
-        layers.add(check("Nodes", "layer.nodes", true, on -> actions.layer("nodes", on)));
-        layers.add(check("Ribs, sternum", "layer.structure", true, on -> actions.layer("structure", on)));
-        layers.add(check("Displacements", "layer.vectors", false, on -> actions.layer("vectors", on)));
+        layers.add(layerBox("Surface", "surface", true));
+        layers.add(layerBox("Springs", "springs", true));
+        layers.add(layerBox("Rigid links", "links", true));
+        layers.add(layerBox("Nodes", "nodes", true));
+        layers.add(layerBox("Ribs, sternum", "structure", true));
+        layers.add(layerBox("Displacements", "vectors", false));
         view.add(left(layers));
         JComboBox<String> axis = new JComboBox<>(new String[] {"x", "y", "z", "magnitude"});
         axis.setName("probeAxis");
@@ -175,6 +178,13 @@ final class ControlPanel extends JPanel {
         }
     }
 
+    /** Ticks or unticks a view layer's box and applies it ("springs", "nodes", ...). */
+    void setLayer(String layer, boolean on) {
+        JCheckBox box = layerBoxes.get(layer);
+        box.setSelected(on);
+        actions.layer(layer, on);
+    }
+
     /** Sets the play button's state without firing it. */
     void showPlaying(boolean on) {
         play.setSelected(on);
@@ -197,6 +207,12 @@ final class ControlPanel extends JPanel {
         b.setToolTipText(tip);
         b.addActionListener(e -> r.run());
         return b;
+    }
+
+    private JCheckBox layerBox(String text, String layer, boolean on) {
+        JCheckBox c = check(text, "layer." + layer, on, v -> actions.layer(layer, v));
+        layerBoxes.put(layer, c);
+        return c;
     }
 
     private static JCheckBox check(String text, String name, boolean on, Consumer<Boolean> r) {

@@ -56,6 +56,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private final CountDownLatch closed = new CountDownLatch(1);
     private volatile ViewScene scene;
     private volatile boolean shutDown;
+    private boolean layersSet;
 
     /**
      * Builds and shows the window and starts the simulation with {@code first}.
@@ -154,6 +155,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             }
             scene = s;
             view.show(frames, s.displacementScale(), s.up(), s.viewFrom());
+            if (!layersSet) { // the scene's choice at first; the user's afterwards
+                layersSet = true;
+                controls.setLayer("springs", s.wireframeAtStart());
+                controls.setLayer("nodes", s.wireframeAtStart());
+            }
             chart.attach(probes, s.bodies());
             frame.setTitle("tensim: " + s.title());
         });

@@ -60,8 +60,14 @@ class GuiSurfaceTest {
             waitFor("frames", () -> w.scene() != null && w.view().shownTime() > 0.3);
             assertTrue(w.tuning().tensegrityTendon());
             assertTrue(w.scene().bodies().get(0).simulation().state().linkCount() > 0);
-            onEdt(() -> w.layer("springs", false));
-            onEdt(() -> w.layer("nodes", false));
+            // A scene with a surface starts without the spring wireframe and the nodes (read on the Swing thread,
+            // after the scene was shown).
+            boolean[] ticked = new boolean[2];
+            onEdt(() -> {
+                ticked[0] = ((AbstractButton) GuiWindowTest.find(w.controls(), "layer.springs")).isSelected();
+                ticked[1] = ((AbstractButton) GuiWindowTest.find(w.controls(), "layer.nodes")).isSelected();
+            });
+            assertTrue(!ticked[0] && !ticked[1], "springs and nodes hidden at start over a surface");
             Thread.sleep(300);
             BufferedImage img = w.view().capture();
             assertDrawn(img, "the membrane");
