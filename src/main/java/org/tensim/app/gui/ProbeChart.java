@@ -40,9 +40,10 @@ final class ProbeChart {
         chart.getStyler().setMarkerSize(0);
         chart.getStyler().setChartBackgroundColor(Color.WHITE);
         chart.getStyler().setPlotGridLinesVisible(true);
+        // No decimal pattern on y: XChart 3.8.8 loops forever computing ticks when a pattern cannot tell
+        // tiny values apart (a probe that has moved by nanometres). Its default formatting copes.
         chart.getStyler().setXAxisDecimalPattern("0.##");
         chart.getStyler().setXAxisMaxLabelCount(12); // readable time labels on a long window
-        chart.getStyler().setYAxisDecimalPattern("0.###");
         chart.getStyler().setChartTitleFont(chart.getStyler().getChartTitleFont().deriveFont(12f));
         panel = new XChartPanel<>(chart);
         panel.setName("probeChart");
@@ -88,15 +89,23 @@ final class ProbeChart {
         if (recorder == null) {
             return;
         }
-        recorder.drain((t, d) -> {
-            double[] row = new double[1 + 3 * d.length];
-            row[0] = t;
-            for (int b = 0; b < d.length; b++) {
-                System.arraycopy(d[b], 0, row, 1 + 3 * b, 3);
-            }
-            samples.addLast(row);
-            dirty = true;
-        });
+        recorder.drain(this::add);
+        redraw();
+    }
+
+    /** Adds one sample: time (s) and per body the displacement (m). */
+    void add(double t, double[][] d) {
+        double[] row = new double[1 + 3 * d.length];
+        row[0] = t;
+        for (int b = 0; b < d.length; b++) {
+            System.arraycopy(d[b], 0, row, 1 + 3 * b, 3);
+        }
+        samples.addLast(row);
+        dirty = true;
+    }
+
+    /** Puts the samples held into the chart's series, when they changed. */
+    void redraw() {
         if (!dirty || samples.isEmpty()) {
             return;
         }
@@ -123,6 +132,9 @@ final class ProbeChart {
         for (int b = 0; b < bodies.size(); b++) {
             chart.updateXYSeries(seriesName(bodies.get(b)), t, y[b], null);
         }
+        // At least 0.1 s of time axis, so that the "0.##" time labels stay distinct.
+        chart.getStyler().setXAxisMin(t[0]);
+        chart.getStyler().setXAxisMax(Math.max(t[n - 1], t[0] + 0.1));
         dirty = false;
         panel.revalidate();
         panel.repaint();
@@ -134,6 +146,11 @@ final class ProbeChart {
             return row[o + axis];
         }
         return Math.sqrt(row[o] * row[o] + row[o + 1] * row[o + 1] + row[o + 2] * row[o + 2]);
+    }
+
+    /** Draws the chart into an image (tests, and what the panel paints). */
+    java.awt.image.BufferedImage render() {
+        return org.knowm.xchart.BitmapEncoder.getBufferedImage(chart);
     }
 
     /** Samples currently held (for tests). */
