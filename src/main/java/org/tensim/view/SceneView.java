@@ -101,10 +101,17 @@ public final class SceneView {
         AmbientLight ambient = new AmbientLight(new Color3f(0.35f, 0.35f, 0.35f));
         ambient.setInfluencingBounds(EVERYWHERE);
         root.addChild(ambient);
-        DirectionalLight key = new DirectionalLight(new Color3f(0.85f, 0.85f, 0.8f), new Vector3f(-0.4f, -0.7f, -0.6f));
+        // Lights placed for the home view: a key light from above the eye and to its right, a dim fill from
+        // the other side, whatever the scene's up direction.
+        Vec3 u = up.normalized();
+        Vec3 f = viewFrom.normalized();
+        Vec3 right = new Vec3(u.y() * f.z() - u.z() * f.y(), u.z() * f.x() - u.x() * f.z(), u.x() * f.y() - u.y() * f.x());
+        Vec3 keyFrom = f.plus(u.times(0.8)).plus(right.times(0.4));
+        Vec3 fillFrom = f.times(0.5).minus(right.times(0.8)).minus(u.times(0.3));
+        DirectionalLight key = new DirectionalLight(new Color3f(0.85f, 0.85f, 0.8f), toward(keyFrom));
         key.setInfluencingBounds(EVERYWHERE);
         root.addChild(key);
-        DirectionalLight fill = new DirectionalLight(new Color3f(0.3f, 0.32f, 0.4f), new Vector3f(0.5f, 0.3f, 0.8f));
+        DirectionalLight fill = new DirectionalLight(new Color3f(0.35f, 0.36f, 0.42f), toward(fillFrom));
         fill.setInfluencingBounds(EVERYWHERE);
         root.addChild(fill);
 
@@ -112,14 +119,23 @@ public final class SceneView {
         List<BodyShapes> made = new ArrayList<>();
         double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
         double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        // Frame what matters: the surfaces when there are any (not the ribs around them), else every node drawn.
+        boolean surfaces = bodies.stream().anyMatch(b -> b.triangles().length > 0);
         for (Body b : bodies) {
             double[] x = b.simulation().state().x;
             float[] initial = new float[x.length];
             double[] off = {b.offset().x(), b.offset().y(), b.offset().z()};
             for (int k = 0; k < x.length; k++) {
                 initial[k] = (float) x[k];
-                lo[k % 3] = Math.min(lo[k % 3], x[k] + off[k % 3]);
-                hi[k % 3] = Math.max(hi[k % 3], x[k] + off[k % 3]);
+            }
+            int[] framed = surfaces ? b.triangles() : null;
+            int count = surfaces ? framed.length : b.visibleNodes();
+            for (int j = 0; j < count; j++) {
+                int node = surfaces ? framed[j] : j;
+                for (int a = 0; a < 3; a++) {
+                    lo[a] = Math.min(lo[a], x[3 * node + a] + off[a]);
+                    hi[a] = Math.max(hi[a], x[3 * node + a] + off[a]);
+                }
             }
             BodyShapes s = new BodyShapes(b, initial, displacementScale);
             Transform3D t = new Transform3D();
@@ -131,11 +147,11 @@ public final class SceneView {
             root.addChild(tg);
             made.add(s);
         }
-        FrameUpdateBehavior u = new FrameUpdateBehavior(frames, made);
-        u.setSchedulingBounds(EVERYWHERE);
-        root.addChild(u);
+        FrameUpdateBehavior behaviour = new FrameUpdateBehavior(frames, made);
+        behaviour.setSchedulingBounds(EVERYWHERE);
+        root.addChild(behaviour);
         shapes = made;
-        updater = u;
+        updater = behaviour;
         for (Map.Entry<BodyShapes.Layer, Boolean> e : visible.entrySet()) {
             setVisible(e.getKey(), e.getValue());
         }
@@ -167,6 +183,11 @@ public final class SceneView {
         orbit.setHomeTransform(look);
         orbit.setMinRadius(0.01 * r);
         orbit.goHome();
+    }
+
+    /** The direction a light shines in, from where it comes from. */
+    private static Vector3f toward(Vec3 from) {
+        return new Vector3f((float) -from.x(), (float) -from.y(), (float) -from.z());
     }
 
     private static double sq(double v) {

@@ -24,8 +24,26 @@ public final class GuiCommand implements Callable<Integer> {
             completionCandidates = SceneNames.class)
     String scene = GuiScenes.names().get(0);
 
-    @Option(names = "--mesh", paramLabel = "FILE", description = "mesh file for the diaphragm scene (default: its built-in mesh)")
+    @Option(names = "--mesh", paramLabel = "FILE",
+            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
+                    + " (default: the generated double dome)")
     Path mesh;
+
+    @Option(names = "--units", paramLabel = "mm|m", description = "units of the --mesh file (default: ${DEFAULT-VALUE})")
+    String units = GuiScenes.Source.defaults().units();
+
+    @Option(names = "--thickness", paramLabel = "MM",
+            description = "thickness given to a single-surface --mesh, mm (default: ${DEFAULT-VALUE})")
+    double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
+
+    @Option(names = "--resolution", paramLabel = "RINGS",
+            description = "rings per face of the generated double dome: 20 gives about 2,500 nodes (interactive),"
+                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE})")
+    int rings = GuiScenes.Source.defaults().rings();
+
+    @Option(names = "--boxes", paramLabel = "FILE",
+            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
+    Path boxes = GuiScenes.Source.defaults().boxes();
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
     Path preset;
@@ -69,7 +87,8 @@ public final class GuiCommand implements Callable<Integer> {
         if (screenshot != null && !(after >= 0 && Double.isFinite(after))) {
             throw new IllegalArgumentException("--after must be a finite number >= 0 s, got " + after);
         }
-        SceneFactory factory = GuiScenes.factory(scene, mesh); // bad names fail before any window
+        // Bad names and files fail here, before any window.
+        SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
         if (java.awt.GraphicsEnvironment.isHeadless()) {
             throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
                     + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
