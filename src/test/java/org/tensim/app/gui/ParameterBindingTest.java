@@ -63,7 +63,13 @@ class ParameterBindingTest {
     }
 
     static List<SceneFactory> factories() {
-        return List.of(CubeViewScene.factory(), MembraneTestScene.factory());
+        return List.of(CubeViewScene.factory(), MembraneTestScene.factory(), coarseDiaphragm());
+    }
+
+    /** The diaphragm at a coarse resolution (6 rings per face), quick to build and step. */
+    static SceneFactory coarseDiaphragm() {
+        return GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 6,
+                GuiScenes.Source.defaults().boxes()));
     }
 
     static SceneFactory factory(String name) {
@@ -207,5 +213,34 @@ class ParameterBindingTest {
         assertEquals(2, s.bodies().size());
         assertEquals(0, s.bodies().get(0).simulation().state().linkCount(), "left cube: mass-spring only");
         assertEquals(6, s.bodies().get(1).simulation().state().linkCount(), "right cube: six rigid links");
+    }
+
+    @Test
+    void diaphragmControlsReachItsSceneAndTissueSpringsScale() {
+        SceneFactory f = coarseDiaphragm();
+        org.tensim.view.DiaphragmViewScene s = (org.tensim.view.DiaphragmViewScene) f.create(true);
+        Tuning t = tuning(s, f);
+        t.bind(new DirectTarget(s));
+        t.set(org.tensim.view.DiaphragmViewScene.RIB_AMPLITUDE, 2.5);
+        t.set(org.tensim.view.DiaphragmViewScene.MUSCLE_ACTION, 12000);
+        assertEquals(2.5, s.scene().controls().ribAmplitude());
+        assertEquals(12000, s.scene().controls().muscleAmplitudePa());
+        var state = s.bodies().get(0).simulation().state();
+        double[] k0 = state.springK.clone();
+        double[] c0 = state.springC.clone();
+        double e0 = t.get(org.tensim.view.DiaphragmViewScene.TISSUE_STIFFNESS);
+        t.set(org.tensim.view.DiaphragmViewScene.TISSUE_STIFFNESS, 4 * e0);
+        int n = s.scene().diaphragmNodes();
+        int tissue = 0;
+        for (int i = 0; i < k0.length; i++) {
+            boolean isTissue = state.springA[i] < n && state.springB[i] < n;
+            tissue += isTissue ? 1 : 0;
+            // E x4: tissue springs x4, their damping x2 (w_max grows as sqrt(E)); the others as built.
+            assertEquals(isTissue ? 4 * k0[i] : k0[i], state.springK[i], 1e-9 * k0[i]);
+            assertEquals(isTissue ? 2 * c0[i] : c0[i], state.springC[i], 1e-9 * Math.max(c0[i], 1e-30));
+        }
+        assertTrue(tissue > 0 && tissue < k0.length, "tissue and non-tissue springs both exist");
+        assertTrue(s.bodies().get(0).simulation().state().linkCount() > 0, "tensegrity tendon");
+        assertEquals(0, f.create(false).bodies().get(0).simulation().state().linkCount(), "mass-spring tendon");
     }
 }
