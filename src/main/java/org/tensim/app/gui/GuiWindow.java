@@ -84,7 +84,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             }
         });
         view = new SceneView();
-        view.canvas().setPreferredSize(new Dimension(860, 520));
+        view.canvas().setPreferredSize(new Dimension(830, 520));
         view.canvas().setMinimumSize(new Dimension(200, 150));
         chart = new ProbeChart(first.defaultProbeAxis());
         controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
@@ -96,7 +96,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         centre.add(chart.panel(), BorderLayout.SOUTH);
         JScrollPane side = new JScrollPane(controls, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED,
                 JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
-        side.setPreferredSize(new Dimension(340, 700));
+        side.setPreferredSize(new Dimension(375, 700));
         side.getVerticalScrollBar().setUnitIncrement(16);
         frame.setJMenuBar(menus());
         frame.getContentPane().add(centre, BorderLayout.CENTER);
