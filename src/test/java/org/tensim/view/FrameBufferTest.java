@@ -36,7 +36,7 @@ class FrameBufferTest {
 
     @Test
     void readerNeverSeesAHalfUpdatedFrame() throws Exception {
-        Simulation s = clockScene(2000);
+        Simulation s = clockScene(300);
         FrameBuffer fb = new FrameBuffer(List.of(body(s)));
         s.addListener(fb);
         AtomicReference<String> torn = new AtomicReference<>();
@@ -64,7 +64,7 @@ class FrameBufferTest {
             }
         });
         reader.start();
-        for (int i = 0; i < 20000; i++) {
+        for (int i = 0; i < 5000; i++) {
             s.step(1.0 / 1024); // exact in float and double
         }
         reader.interrupt();
