@@ -46,11 +46,16 @@ public final class CubeCommand implements Callable<Integer> {
     @Option(names = "--mass", paramLabel = "KG", description = "mass of every node, kg (default: ${DEFAULT-VALUE})")
     double mass = D.nodeMassKg();
 
+    @Option(names = "--integrator", paramLabel = "NAME",
+            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
+                    + " (default: ${DEFAULT-VALUE})")
+    String integrator = "rk2";
+
     @Override
     public Integer call() throws Exception {
         CubeParameters p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt,
                 duration);
-        CubeReport report = CubeReport.run(p, out);
+        CubeReport report = CubeReport.run(p, integrator, out);
         System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
         System.out.println(report.summaryLine());
         return 0;

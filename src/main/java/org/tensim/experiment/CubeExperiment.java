@@ -4,6 +4,7 @@ import org.tensim.scene.CubeParameters;
 import org.tensim.scene.CubeScene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * The paper's cube comparison (Fig. 3): the mass-spring and the tensegrity cube
@@ -41,12 +42,18 @@ public final class CubeExperiment {
     private final int mssProbe;
     private final int tsProbe;
 
+    /** Both cubes with the paper's RK2 integrator. */
     public CubeExperiment(CubeParameters p) {
+        this(p, "rk2");
+    }
+
+    /** Both cubes with the named integrator (see {@link Integrators#names()}). */
+    public CubeExperiment(CubeParameters p, String integrator) {
         this.p = p;
         CubeScene a = CubeScene.massSpring(p);
         CubeScene b = CubeScene.tensegrity(p);
-        mss = new Simulation(SystemState.compile(a.topology));
-        ts = new Simulation(SystemState.compile(b.topology));
+        mss = new Simulation(SystemState.compile(a.topology), Integrators.create(integrator));
+        ts = new Simulation(SystemState.compile(b.topology), Integrators.create(integrator));
         mssProbe = a.probe.id();
         tsProbe = b.probe.id();
     }

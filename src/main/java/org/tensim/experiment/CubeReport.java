@@ -58,11 +58,16 @@ public final class CubeReport {
      * diverges the CSV keeps the rows written so far and the error names the step.
      */
     public static CubeReport run(CubeParameters p, Path dir) throws IOException {
+        return run(p, "rk2", dir);
+    }
+
+    /** As {@link #run(CubeParameters, Path)} with the named integrator. */
+    public static CubeReport run(CubeParameters p, String integrator, Path dir) throws IOException {
+        CubeExperiment e = new CubeExperiment(p, integrator);
         List<double[]> series = new ArrayList<>();
         CubeExperiment.Result r;
         try (CsvWriter w = new CsvWriter(dir.resolve("cube.csv"), List.of("t_s", "mss_dx_m", "mss_dy_m", "mss_dz_m",
                 "ts_dx_m", "ts_dy_m", "ts_dz_m"), 1000)) {
-            CubeExperiment e = new CubeExperiment(p);
             long every = Math.max(1, p.steps() / 4000);
             long[] count = {0};
             r = e.run((t, m, s) -> {
@@ -85,7 +90,7 @@ public final class CubeReport {
         s.put("steps", r.steps());
         s.put("dt_s", r.dtS());
         s.put("duration_s", p.durationS());
-        s.put("integrator", "rk2");
+        s.put("integrator", integrator);
         s.put("wall_s", r.wallS());
         s.put("parameters", p);
         CubeReport report = new CubeReport(dir, s);

@@ -27,6 +27,31 @@ public final class Charts {
         chart.addSeries(name, x, y).setMarker(SeriesMarkers.NONE);
     }
 
+    /** Adds a line series with a marker at every point (for measured data). */
+    public static void addLineWithMarkers(XYChart chart, String name, double[] x, double[] y) {
+        chart.addSeries(name, x, y).setMarker(SeriesMarkers.CIRCLE);
+        chart.getStyler().setMarkerSize(6);
+    }
+
+    /** Distinct colours for series that belong together (e.g. measured and theory of one method). */
+    private static final java.awt.Color[] PALETTE = {
+        new java.awt.Color(31, 119, 180), new java.awt.Color(255, 127, 14), new java.awt.Color(44, 160, 44),
+        new java.awt.Color(214, 39, 40), new java.awt.Color(148, 103, 189), new java.awt.Color(140, 86, 75),
+        new java.awt.Color(227, 119, 194), new java.awt.Color(127, 127, 127), new java.awt.Color(188, 189, 34),
+        new java.awt.Color(23, 190, 207),
+    };
+
+    /** The i-th colour of the project's palette (cycling). */
+    public static java.awt.Color color(int i) {
+        return PALETTE[Math.floorMod(i, PALETTE.length)];
+    }
+
+    /** Makes both axes logarithmic (every plotted value must then be > 0). */
+    public static void logLog(XYChart chart) {
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+    }
+
     /** Saves the chart as a PNG file at {@code path} (the name should end in .png). */
     public static void savePng(XYChart chart, Path path) throws IOException {
         Files.createDirectories(path.toAbsolutePath().getParent());

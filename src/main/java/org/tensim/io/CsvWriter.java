@@ -68,6 +68,28 @@ public final class CsvWriter implements Closeable {
         }
     }
 
+    /**
+     * Writes one row of already formatted cells (names, numbers); its length must
+     * match the header's. Cells must not contain commas or line breaks.
+     */
+    public void rowText(String... cells) throws IOException {
+        if (cells.length != columns) {
+            throw new IllegalArgumentException("CSV row for " + path + " has " + cells.length
+                    + " values, expected " + columns + " (one per header column)");
+        }
+        for (String c : cells) {
+            if (c.indexOf(',') >= 0 || c.indexOf('\n') >= 0) {
+                throw new IllegalArgumentException("CSV cell for " + path + " contains a comma or line break: '"
+                        + c + "'");
+            }
+        }
+        out.write(String.join(",", cells));
+        out.write('\n');
+        if (++rows % flushEvery == 0) {
+            out.flush();
+        }
+    }
+
     @Override
     public void close() throws IOException {
         out.close();

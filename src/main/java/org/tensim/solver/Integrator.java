@@ -26,4 +26,23 @@ public interface Integrator {
      * and velocities.
      */
     void step(ForceModel model, double t, double dt);
+
+    /**
+     * Whether the method is explicit, so that its step is bounded by the critical
+     * time step ({@link CriticalTimeStep}); the simulation warns beyond it.
+     */
+    default boolean explicit() {
+        return true;
+    }
+
+    /**
+     * Theory: the largest {@code omega h} (dimensionless, omega = sqrt(k/m) in rad/s,
+     * h in s) for which an undamped spring stays bounded. 0 when the method grows at
+     * every step size (forward Euler, RK2), {@link Double#POSITIVE_INFINITY} when it
+     * is unconditionally stable (implicit Euler). The default, 2, is the leapfrog
+     * family's limit (symplectic Euler, velocity Verlet).
+     */
+    default double undampedStabilityLimit() {
+        return 2;
+    }
 }

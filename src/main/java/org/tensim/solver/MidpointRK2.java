@@ -37,6 +37,12 @@ public final class MidpointRK2 implements Integrator {
         return 2;
     }
 
+    /** 0: undamped, RK2 grows at every step size (|R(i w h)| &gt; 1). */
+    @Override
+    public double undampedStabilityLimit() {
+        return 0;
+    }
+
     @Override
     public void step(ForceModel model, double t, double h) {
         SystemState s = model.state();

@@ -19,6 +19,25 @@ import org.tensim.model.Topology;
  * </ol>
  * then checks the state for divergence and notifies the {@link StepListener}s.
  * Every stage is timed into {@link #profile()}.
+ *
+ * <p>Checks, on every run:
+ * <ul>
+ * <li>Critical time step: on the first step with a given integrator and dt, an
+ * explicit integrator stepping beyond {@link CriticalTimeStep#forIntegrator} of
+ * the state's estimate is reported ({@link #setStepLimitSeverity}, default
+ * {@link Severity#WARN}; {@link Severity#ERROR} throws
+ * {@link IllegalArgumentException} naming the estimate).</li>
+ * <li>Divergence: a non-finite position or velocity, or the kinetic + spring
+ * energy growing more than {@link #energyGrowthLimit()} times between checks made
+ * every {@link #energyCheckInterval()} steps, throws
+ * {@link SimulationDivergedException} naming the step, the time, the worst node
+ * and the critical step estimate.</li>
+ * <li>Rigid-link projection: a projection that stops at its iteration cap above
+ * its tolerance is counted and reported with its residual
+ * ({@link #setProjectionFailureSeverity}, default {@link Severity#WARN};
+ * {@link Severity#ERROR} throws {@link ProjectionFailedException}).</li>
+ * </ul>
+ * Warnings go to {@link #setWarningSink} (default: standard error).
  */
 public final class Simulation {
     private final SystemState state;
@@ -31,6 +50,14 @@ public final class Simulation {
     private double time;
     private long steps;
     private long unconvergedProjections;
+    private final DivergenceMonitor monitor = new DivergenceMonitor();
+    private final java.util.function.DoubleSupplier criticalStepOfIntegrator = this::criticalStepOfIntegrator;
+    private Severity stepLimitSeverity = Severity.WARN;
+    private Severity projectionSeverity = Severity.WARN;
+    private java.util.function.Consumer<String> warningSink = m -> System.err.println("tensim: warning: " + m);
+    private Integrator checkedIntegrator;
+    private double checkedDt = Double.NaN;
+    private long stepLimitWarnings;
 
     /** A simulation of a compiled state with the paper's RK2 integrator. */
     public Simulation(SystemState state) {
@@ -94,6 +121,71 @@ public final class Simulation {
         return unconvergedProjections;
     }
 
+    /** Steps whose dt was beyond the critical step estimate of an explicit integrator (counted once per dt). */
+    public long stepLimitWarnings() {
+        return stepLimitWarnings;
+    }
+
+    /** What a step beyond the critical step estimate does (default WARN). */
+    public Simulation setStepLimitSeverity(Severity s) {
+        stepLimitSeverity = java.util.Objects.requireNonNull(s, "step limit severity");
+        return this;
+    }
+
+    public Severity stepLimitSeverity() {
+        return stepLimitSeverity;
+    }
+
+    /** What a projection that misses its tolerance does (default WARN). */
+    public Simulation setProjectionFailureSeverity(Severity s) {
+        projectionSeverity = java.util.Objects.requireNonNull(s, "projection failure severity");
+        return this;
+    }
+
+    public Severity projectionFailureSeverity() {
+        return projectionSeverity;
+    }
+
+    /** Where warnings go (default: standard error, prefixed "tensim: warning: "). */
+    public Simulation setWarningSink(java.util.function.Consumer<String> sink) {
+        warningSink = java.util.Objects.requireNonNull(sink, "warning sink");
+        return this;
+    }
+
+    /**
+     * Energy growth factor (> 1) allowed between two energy checks before the run
+     * is stopped as diverged; {@link Double#POSITIVE_INFINITY} turns the energy check
+     * off (the finiteness check stays). Default 100.
+     */
+    public Simulation setEnergyGrowthLimit(double factor) {
+        monitor.setEnergyGrowthLimit(factor);
+        return this;
+    }
+
+    public double energyGrowthLimit() {
+        return monitor.energyGrowthLimit();
+    }
+
+    /** Steps between energy checks (>= 1, default 100). */
+    public Simulation setEnergyCheckInterval(int steps) {
+        monitor.setEnergyCheckInterval(steps);
+        return this;
+    }
+
+    public int energyCheckInterval() {
+        return monitor.energyCheckInterval();
+    }
+
+    /** The state's critical time step estimate ({@link SystemState#criticalTimeStep()}). */
+    public CriticalTimeStep criticalTimeStep() {
+        return state.criticalTimeStep();
+    }
+
+    /** The step beyond which the current integrator is expected to go unstable on this state, s. */
+    public double criticalStepOfIntegrator() {
+        return state.criticalTimeStep().forIntegrator(integrator);
+    }
+
     public void addListener(StepListener l) {
         listeners.add(l);
     }
@@ -112,6 +204,9 @@ public final class Simulation {
         if (!(dt > 0) || !Double.isFinite(dt)) {
             throw new IllegalArgumentException("time step dt must be a finite number > 0 s, got " + dt);
         }
+        if (dt != checkedDt || integrator != checkedIntegrator) {
+            checkStepLimit(dt);
+        }
         long t0 = System.nanoTime();
         integrator.step(forces, time, dt);
         long t1 = System.nanoTime();
@@ -122,6 +217,7 @@ public final class Simulation {
             System.arraycopy(state.x, 0, unconstrained, 0, unconstrained.length);
             if (!projection.project(state, state.x)) {
                 unconvergedProjections++;
+                projectionFailed(dt);
             }
         }
         long t2 = System.nanoTime();
@@ -135,7 +231,7 @@ public final class Simulation {
 
         time += dt;
         steps++;
-        checkFinite();
+        monitor.check(state, forces, steps, time, criticalStepOfIntegrator);
         long t4 = System.nanoTime();
         profile.record(Stage.CHECK, t4 - t3);
 
@@ -167,18 +263,43 @@ public final class Simulation {
         }
     }
 
-    private void checkFinite() {
-        final double[] x = state.x;
-        final double[] v = state.v;
-        for (int k = 0; k < x.length; k++) {
-            // A sum of the two is not finite if either is not: one branch per coordinate.
-            if (!Double.isFinite(x[k] + v[k])) {
-                int node = k / 3;
-                throw new SimulationDivergedException(steps, time, node, "has position ("
-                        + x[3 * node] + ", " + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity ("
-                        + v[3 * node] + ", " + v[3 * node + 1] + ", " + v[3 * node + 2]
-                        + ") m/s; reduce the time step or add damping");
+    private void checkStepLimit(double dt) {
+        checkedDt = dt;
+        checkedIntegrator = integrator;
+        if (stepLimitSeverity == Severity.IGNORE || !integrator.explicit()) {
+            return;
+        }
+        double limit = criticalStepOfIntegrator();
+        if (dt > limit) {
+            stepLimitWarnings++;
+            CriticalTimeStep c = state.criticalTimeStep();
+            String msg = "time step " + dt + " s is beyond the critical step estimate " + limit + " s of "
+                    + integrator.name() + " on this scene (w_max = " + c.omegaMaxPower() + " rad/s by power iteration, "
+                    + "Gershgorin bound " + c.omegaMaxGershgorin() + " rad/s); expect the run to blow up";
+            if (stepLimitSeverity == Severity.ERROR) {
+                throw new IllegalArgumentException(msg);
             }
+            warningSink.accept(msg);
+        }
+    }
+
+    private void projectionFailed(double dt) {
+        if (projectionSeverity == Severity.IGNORE) {
+            return;
+        }
+        String msg = "rigid-link projection at step " + (steps + 1) + " (t = " + (time + dt) + " s) stopped after "
+                + projection.iterations() + " sweeps with a relative length error of "
+                + projection.maxRelativeError() + " on link " + projection.worstLink() + " (tolerance "
+                + projection.tolerance() + "): the links contradict each other, or need more sweeps than the cap"
+                + " (projection().setMaxIterations) or a looser tolerance";
+        if (projectionSeverity == Severity.ERROR) {
+            throw new ProjectionFailedException(steps + 1, projection.worstLink(), projection.maxRelativeError(),
+                    msg);
+        }
+        long n = unconvergedProjections;
+        // The first failure and then every power of ten: enough to be seen, not a flood.
+        if (n == 1 || (n % 10 == 0 && Long.toString(n).matches("10*"))) {
+            warningSink.accept(msg + (n > 1 ? " (" + n + " such steps so far)" : ""));
         }
     }
 }

@@ -71,6 +71,11 @@ public final class SystemState {
     double gz;
     double viscousDamping;
 
+    /** Incremented by every parameter setter (stiffness, damping, gravity). */
+    private long parameterVersion;
+    /** Cached critical-step estimate at the rest positions (null until asked or after a stiffness change). */
+    private CriticalTimeStep criticalTimeStep;
+
     private SystemState(Topology t) {
         nodeCount = t.nodeCount();
         x = new double[3 * nodeCount];
@@ -197,6 +202,12 @@ public final class SystemState {
         gx = g.x();
         gy = g.y();
         gz = g.z();
+        parameterVersion++;
+    }
+
+    /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
+    public boolean velocityDependentForces() {
+        return axialDamping || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -206,12 +217,15 @@ public final class SystemState {
 
     public void setViscousDamping(double nsPerM) {
         viscousDamping = Check.nonNegative("viscous damping", "N s/m", nsPerM);
+        parameterVersion++;
     }
 
     /** Sets the stiffness (N/m, >= 0) of spring s; takes effect at the next force pass. */
     public void setSpringStiffness(int s, double k) {
         Check.index("spring", s, springK.length);
         springK[s] = Check.nonNegative("spring " + s + " stiffness", "N/m", k);
+        parameterVersion++;
+        criticalTimeStep = null;
     }
 
     /** Sets the axial damping (N s/m, >= 0) of spring s. */
@@ -219,6 +233,29 @@ public final class SystemState {
         Check.index("spring", s, springC.length);
         springC[s] = Check.nonNegative("spring " + s + " damping", "N s/m", c);
         axialDamping |= c != 0;
+        parameterVersion++;
+    }
+
+    /**
+     * Counts parameter changes made through the setters of this state (stiffness,
+     * damping, gravity): an integrator that reuses a force from the previous step
+     * knows by it that the forces may have changed.
+     */
+    public long parameterVersion() {
+        return parameterVersion;
+    }
+
+    /**
+     * The critical time step estimate of this state, linearised at the rest
+     * positions (Gershgorin bound and power iteration on M^-1 K; see
+     * {@link CriticalTimeStep}). Computed on first use and kept until a spring
+     * stiffness changes.
+     */
+    public CriticalTimeStep criticalTimeStep() {
+        if (criticalTimeStep == null) {
+            criticalTimeStep = CriticalTimeStep.estimate(this);
+        }
+        return criticalTimeStep;
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

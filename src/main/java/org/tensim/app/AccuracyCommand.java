@@ -1,0 +1,160 @@
+package org.tensim.app;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.knowm.xchart.XYChart;
+import org.tensim.analysis.AccuracyScenes;
+import org.tensim.analysis.AccuracyStudy;
+import org.tensim.io.Charts;
+import org.tensim.io.CsvWriter;
+import org.tensim.io.Json;
+import org.tensim.solver.integrators.Integrators;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code tensim accuracy}: work-precision of every integrator on named scenes. */
+@Command(name = "accuracy", mixinStandardHelpOptions = true,
+        description = {"Runs every integrator on a ladder of time steps (each half the previous)",
+            "and measures the largest node position error at the end time against a",
+            "reference (exact; Hipparchus Dormand-Prince 8(5,3); or, with rigid links,",
+            "RK4 at the finest step), the wall time and the force evaluations.",
+            "Writes per scene to --out: accuracy-SCENE.csv, SCENE-work-precision.png",
+            "(error against wall time), SCENE-evaluations.png (error against force",
+            "evaluations), SCENE-convergence.png (error against dt). Prints the measured",
+            "order of each method; the last line is one JSON object with, per",
+            "integrator, `order` (first scene), `expected_order` and `order_by_scene`."})
+public final class AccuracyCommand implements Callable<Integer> {
+    @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
+            description = "scenes (default: all of ${COMPLETION-CANDIDATES})", completionCandidates = SceneNames.class)
+    List<String> scenes = AccuracyScenes.names();
+
+    @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
+            description = "integrators (default: all)")
+    List<String> integrators = Integrators.names();
+
+    @Option(names = "--dt", paramLabel = "S", description = "largest time step of the ladder, s (default: the scene's)")
+    Double largestDt;
+
+    @Option(names = "--rungs", paramLabel = "N", description = "number of time steps in the ladder (default: the scene's)")
+    Integer rungs;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
+    Path out = Path.of("out", "accuracy");
+
+    /** Scene names for the help text. */
+    static final class SceneNames extends ArrayList<String> {
+        SceneNames() {
+            super(AccuracyScenes.names());
+        }
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        for (String s : scenes) {
+            AccuracyScenes.get(s); // fail on a bad name before any work
+        }
+        for (String i : integrators) {
+            Integrators.create(i);
+        }
+        if (largestDt != null && !(largestDt > 0)) {
+            throw new IllegalArgumentException("--dt must be a number > 0 s, got " + largestDt);
+        }
+        if (rungs != null && rungs < 2) {
+            throw new IllegalArgumentException("--rungs must be at least 2, got " + rungs);
+        }
+        Map<String, Map<String, Double>> byScene = new LinkedHashMap<>();
+        for (String name : scenes) {
+            var scene = AccuracyScenes.get(name);
+            if (largestDt != null || rungs != null) {
+                scene = scene.withLadder(largestDt != null ? largestDt : scene.largestDtS(),
+                        rungs != null ? rungs : scene.rungs());
+            }
+            AccuracyStudy.Result r = AccuracyStudy.run(scene, integrators, System.out::println);
+            write(r);
+            byScene.put(name, r.measuredOrder());
+            System.out.println(name + ": measured order (slope of log error against log dt, asymptotic range "
+                    + String.format("%.1e", r.floorM()) + " to " + String.format("%.1e", r.ceilingM()) + " m):");
+            for (String i : integrators) {
+                System.out.println(String.format("  %-16s %6.3f   (theory %d)", i, r.measuredOrder().get(i),
+                        r.expectedOrder().get(i)));
+            }
+        }
+        Map<String, Object> json = new LinkedHashMap<>();
+        for (String i : integrators) {
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("order", round(byScene.get(scenes.get(0)).get(i)));
+            e.put("expected_order", Integrators.create(i).order());
+            Map<String, Object> per = new LinkedHashMap<>();
+            byScene.forEach((s, m) -> per.put(s, round(m.get(i))));
+            e.put("order_by_scene", per);
+            json.put(i, e);
+        }
+        System.out.println(Json.line(json));
+        return 0;
+    }
+
+    private static Double round(double v) {
+        return Double.isFinite(v) ? Math.round(v * 1000) / 1000.0 : null;
+    }
+
+    private void write(AccuracyStudy.Result r) throws IOException {
+        String name = r.scene().name();
+        Path csv = out.resolve("accuracy-" + name + ".csv");
+        List<String> header = List.of("integrator", "dt_s", "error_m", "wall_s", "force_evaluations",
+                "cg_products", "steps", "beyond_critical_step", "diverged");
+        try (CsvWriter w = new CsvWriter(csv, header, 1)) {
+            for (AccuracyStudy.Run run : r.runs()) {
+                w.rowText(run.integrator(), Double.toString(run.dtS()), Double.toString(run.errorM()),
+                        Double.toString(run.wallS()), Long.toString(run.forceEvaluations()),
+                        Long.toString(run.linearProducts()), Long.toString(run.steps()),
+                        Boolean.toString(run.beyondCriticalStep()), Boolean.toString(run.diverged()));
+            }
+        }
+        XYChart work = Charts.lineChart("Work-precision: " + name + " (reference: " + r.reference() + ")",
+                "wall time of the run (s)", "largest node position error at t = " + r.scene().endTimeS() + " s (m)",
+                900, 600);
+        XYChart conv = Charts.lineChart("Convergence: " + name + " (reference: " + r.reference() + ")",
+                "time step dt (s)", "largest node position error (m)", 900, 600);
+        XYChart evals = Charts.lineChart("Work-precision by force evaluations: " + name,
+                "force evaluations (+ CG products for implicit Euler)", "largest node position error (m)", 900, 600);
+        Charts.logLog(work);
+        Charts.logLog(conv);
+        Charts.logLog(evals);
+        for (String i : integrators) {
+            List<double[]> pts = new ArrayList<>();
+            for (AccuracyStudy.Run run : r.runs()) {
+                if (run.integrator().equals(i) && Double.isFinite(run.errorM()) && run.errorM() > 0) {
+                    pts.add(new double[] {run.wallS(), run.dtS(), run.errorM(),
+                        run.forceEvaluations() + run.linearProducts()});
+                }
+            }
+            if (pts.isEmpty()) {
+                continue;
+            }
+            double[] wall = pts.stream().mapToDouble(p -> Math.max(p[0], 1e-6)).toArray();
+            double[] dt = pts.stream().mapToDouble(p -> p[1]).toArray();
+            double[] err = pts.stream().mapToDouble(p -> p[2]).toArray();
+            double[] cost = pts.stream().mapToDouble(p -> p[3]).toArray();
+            String label = String.format("%s (order %.2f)", i, r.measuredOrder().get(i));
+            java.awt.Color color = Charts.color(Integrators.names().indexOf(i));
+            Charts.addLineWithMarkers(work, label, wall, err);
+            Charts.addLineWithMarkers(conv, label, dt, err);
+            Charts.addLineWithMarkers(evals, label, cost, err);
+            for (XYChart c : List.of(work, conv, evals)) {
+                var series = c.getSeriesMap().get(label);
+                series.setLineColor(color);
+                series.setMarkerColor(color);
+            }
+        }
+        Charts.savePng(work, out.resolve(name + "-work-precision.png"));
+        Charts.savePng(conv, out.resolve(name + "-convergence.png"));
+        Charts.savePng(evals, out.resolve(name + "-evaluations.png"));
+        System.out.println("wrote " + csv + ", " + out.resolve(name + "-work-precision.png") + ", "
+                + out.resolve(name + "-convergence.png"));
+    }
+}

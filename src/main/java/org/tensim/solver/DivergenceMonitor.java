@@ -1,0 +1,152 @@
+package org.tensim.solver;
+
+import org.tensim.model.Check;
+
+/**
+ * The divergence checks of {@link Simulation}, run after every step:
+ * <ul>
+ * <li>every position and velocity finite;</li>
+ * <li>every {@link #energyCheckInterval()} steps, the mechanical energy
+ * E = kinetic + spring + change of gravity's potential since the first step (J)
+ * at most {@link #energyGrowthLimit()} times
+ * {@code max(E at the previous check, floor)}, the first reference being the
+ * energy after the first step. The floor is the larger of the energy of every
+ * spring strained by 1 % of its rest length (so that a body starting from rest
+ * under a growing load is not mistaken for a blow-up) and 1e-3 of the energy
+ * exchanged, kinetic + spring + |change of gravity's potential| (so that the
+ * round-off of a free fall, whose E stays near 0, is not either). A stable scheme
+ * under bounded loads does not multiply its energy by 100 within 100 steps;
+ * one beyond its critical step does, long before the numbers overflow.</li>
+ * </ul>
+ * Allocation-free except when it throws.
+ */
+final class DivergenceMonitor {
+    /** Default energy growth factor allowed between two checks: 100. */
+    static final double DEFAULT_GROWTH_LIMIT = 100;
+    /** Default steps between energy checks: 100. */
+    static final int DEFAULT_INTERVAL = 100;
+    /** Strain of every spring whose energy is the floor of the reference: 1 %. */
+    static final double FLOOR_STRAIN = 0.01;
+
+    private double growthLimit = DEFAULT_GROWTH_LIMIT;
+    private int interval = DEFAULT_INTERVAL;
+    private double floor = Double.NaN;
+    private double lastEnergy = Double.NaN;
+    private double gravity0;
+    /** Fraction of the energy exchanged below which changes of E are round-off. */
+    static final double EXCHANGE_FRACTION = 1e-3;
+
+    double energyGrowthLimit() {
+        return growthLimit;
+    }
+
+    void setEnergyGrowthLimit(double factor) {
+        if (!(factor > 1)) {
+            throw new IllegalArgumentException("energy growth limit must be a factor > 1 (or Infinity to turn the"
+                    + " check off), got " + factor);
+        }
+        growthLimit = factor;
+    }
+
+    int energyCheckInterval() {
+        return interval;
+    }
+
+    void setEnergyCheckInterval(int steps) {
+        interval = Check.atLeast("energy check interval (steps)", steps, 1);
+    }
+
+    /**
+     * Checks the state after step number {@code step} at time t.
+     *
+     * @param criticalStep the critical time step estimate for the integrator in use, s
+     *                     (evaluated only when throwing)
+     */
+    void check(SystemState s, ForceModel forces, long step, double t, java.util.function.DoubleSupplier criticalStep) {
+        final double[] x = s.x;
+        final double[] v = s.v;
+        for (int k = 0; k < x.length; k++) {
+            // A sum of the two is not finite if either is not: one branch per coordinate.
+            if (!Double.isFinite(x[k] + v[k])) {
+                int node = worstNonFinite(s, k / 3);
+                throw new SimulationDivergedException(step, t, node, "has position (" + x[3 * node] + ", "
+                        + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity (" + v[3 * node] + ", "
+                        + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
+                        criticalStep.getAsDouble());
+            }
+        }
+        if (growthLimit == Double.POSITIVE_INFINITY) {
+            return;
+        }
+        if (Double.isNaN(lastEnergy)) {
+            // First step: the energy the run starts with (e.g. a released stretch) is the first reference.
+            floor = floor(s);
+            gravity0 = forces.gravityEnergy();
+            lastEnergy = forces.kineticEnergy() + forces.springEnergy(x);
+            return;
+        }
+        if (step % interval != 0) {
+            return;
+        }
+        double kinetic = forces.kineticEnergy();
+        double spring = forces.springEnergy(x);
+        double dGravity = forces.gravityEnergy() - gravity0;
+        double e = kinetic + spring + dGravity;
+        double exchanged = kinetic + spring + Math.abs(dGravity);
+        double ref = Math.max(lastEnergy, Math.max(floor, EXCHANGE_FRACTION * exchanged));
+        if (e > growthLimit * ref) {
+            int node = fastest(s);
+            throw new SimulationDivergedException(step, t, node, "is the fastest node ("
+                    + Math.sqrt(speed2(v, node)) + " m/s): the mechanical energy grew to " + e
+                    + " J, more than " + growthLimit + " times " + ref + " J within " + interval + " steps; "
+                    + advice(criticalStep), criticalStep.getAsDouble());
+        }
+        lastEnergy = e;
+    }
+
+    private static String advice(java.util.function.DoubleSupplier criticalStep) {
+        return "the critical time step estimate is " + criticalStep.getAsDouble()
+                + " s; reduce the time step or add damping";
+    }
+
+    private static double floor(SystemState s) {
+        double e = 0;
+        for (int i = 0; i < s.springCount(); i++) {
+            double d = FLOOR_STRAIN * s.springL[i];
+            e += 0.5 * s.springK[i] * d * d;
+        }
+        return e > 0 ? e : Double.MIN_NORMAL;
+    }
+
+    /**
+     * The first free node with a non-finite value, else {@code first}: a fixed
+     * node's velocity turns NaN only because its (unused) force did, which a free
+     * neighbour caused.
+     */
+    private static int worstNonFinite(SystemState s, int first) {
+        for (int i = first; i < s.nodeCount; i++) {
+            if (s.invMass[i] != 0 && !Double.isFinite(s.x[3 * i] + s.x[3 * i + 1] + s.x[3 * i + 2] + s.v[3 * i]
+                    + s.v[3 * i + 1] + s.v[3 * i + 2])) {
+                return i;
+            }
+        }
+        return first;
+    }
+
+    private static int fastest(SystemState s) {
+        int best = 0;
+        double top = -1;
+        for (int i = 0; i < s.nodeCount; i++) {
+            double v2 = speed2(s.v, i);
+            if (v2 > top) {
+                top = v2;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    private static double speed2(double[] v, int i) {
+        return v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2];
+    }
+}

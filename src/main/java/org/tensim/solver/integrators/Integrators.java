@@ -1,0 +1,55 @@
+package org.tensim.solver.integrators;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+import org.tensim.solver.Integrator;
+import org.tensim.solver.MidpointRK2;
+
+/**
+ * The integrators by name, for command lines, reports and scene files. Each call
+ * of {@link #create(String)} makes a new instance (integrators keep scratch
+ * arrays sized for one state). Adding an integrator is one line here and one class.
+ */
+public final class Integrators {
+    private static final Map<String, Supplier<Integrator>> BY_NAME = new LinkedHashMap<>();
+
+    static {
+        BY_NAME.put("euler", ExplicitEuler::new);
+        BY_NAME.put("symplectic-euler", SymplecticEuler::new);
+        BY_NAME.put("rk2", MidpointRK2::new);
+        BY_NAME.put("heun", Heun::new);
+        BY_NAME.put("verlet", VelocityVerlet::new);
+        BY_NAME.put("rk4", RK4::new);
+        BY_NAME.put("implicit-euler", ImplicitEuler::new);
+    }
+
+    private Integrators() {
+    }
+
+    /** All names, in a fixed order (lowest order first). */
+    public static List<String> names() {
+        return List.copyOf(BY_NAME.keySet());
+    }
+
+    /**
+     * A new integrator of that name.
+     *
+     * @throws IllegalArgumentException naming the unknown name and the known ones
+     */
+    public static Integrator create(String name) {
+        Supplier<Integrator> s = name == null ? null : BY_NAME.get(name);
+        if (s == null) {
+            throw new IllegalArgumentException("unknown integrator '" + name + "': expected one of "
+                    + String.join(", ", BY_NAME.keySet()));
+        }
+        return s.get();
+    }
+
+    /** Name to supplier, read-only. */
+    public static Map<String, Supplier<Integrator>> all() {
+        return Collections.unmodifiableMap(BY_NAME);
+    }
+}

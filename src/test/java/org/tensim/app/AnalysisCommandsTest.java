@@ -1,0 +1,81 @@
+package org.tensim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/** The accuracy and stability commands: outputs, last JSON line, and one-line errors. */
+class AnalysisCommandsTest {
+    private static String[] run(String... args) {
+        CommandLine cl = Main.commandLine();
+        StringWriter err = new StringWriter();
+        cl.setErr(new PrintWriter(err));
+        PrintStream old = System.out;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+            code = cl.execute(args);
+        } finally {
+            System.setOut(old);
+        }
+        return new String[] {Integer.toString(code), out.toString(StandardCharsets.UTF_8), err.toString()};
+    }
+
+    private static String lastLine(String s) {
+        String[] lines = s.strip().split("\n");
+        return lines[lines.length - 1];
+    }
+
+    @Test
+    void accuracyWritesCsvChartsAndEndsWithOrders(@TempDir Path dir) throws Exception {
+        String[] r = run("accuracy", "--scene", "spring", "--integrators", "symplectic-euler,rk4", "--rungs", "5",
+                "--dt", "0.005", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        JsonNode json = new ObjectMapper().readTree(lastLine(r[1]));
+        assertEquals(4, json.get("rk4").get("expected_order").asInt());
+        assertEquals(4, json.get("rk4").get("order").asDouble(), 0.15);
+        assertEquals(1, json.get("symplectic-euler").get("order").asDouble(), 0.15);
+        assertTrue(Files.size(dir.resolve("spring-work-precision.png")) > 1000);
+        assertTrue(Files.size(dir.resolve("spring-convergence.png")) > 1000);
+        assertEquals(1 + 2 * 5, Files.readAllLines(dir.resolve("accuracy-spring.csv")).size());
+    }
+
+    @Test
+    void stabilityEndsWithMeasuredAndTheoryOmegaH(@TempDir Path dir) throws Exception {
+        String[] r = run("stability", "--integrators", "verlet,implicit-euler", "--omega", "10", "--zeta", "0,0.5",
+                "--periods", "20", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        JsonNode json = new ObjectMapper().readTree(lastLine(r[1]));
+        assertEquals(2, json.get("verlet").get("theory_omega_h").asDouble(), 1e-9);
+        assertEquals(2, json.get("verlet").get("critical_omega_h").asDouble(), 0.1);
+        assertTrue(json.get("implicit-euler").get("stable_at_every_step").asBoolean());
+        assertTrue(Files.exists(dir.resolve("stability-damping.png")));
+        assertTrue(Files.exists(dir.resolve("stability.csv")));
+    }
+
+    @Test
+    void badNamesGiveOneLineErrors(@TempDir Path dir) {
+        String[] r = run("accuracy", "--scene", "diaphragm", "--out", dir.toString());
+        assertEquals("1", r[0]);
+        assertEquals(1, r[2].strip().split("\n").length, "one line, no stack trace: " + r[2]);
+        assertTrue(r[2].contains("unknown scene 'diaphragm'") && r[2].contains("spring"), r[2]);
+        r = run("stability", "--integrators", "leapfrog", "--out", dir.toString());
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("unknown integrator 'leapfrog'"), r[2]);
+        r = run("stability", "--zeta", "-1", "--out", dir.toString());
+        assertTrue(r[2].contains("--zeta") && r[2].contains("-1"), r[2]);
+    }
+}

@@ -1,0 +1,129 @@
+package org.tensim.solver.integrators;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.tensim.model.Node;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+import org.tensim.solver.Integrator;
+import org.tensim.solver.MidpointRK2;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SystemState;
+
+/** Properties every integrator must have, whatever its order. */
+class IntegratorsTest {
+    static List<String> names() {
+        return Integrators.names();
+    }
+
+    @Test
+    void registryHasTheSevenMethodsAndTheirNames() {
+        assertEquals(List.of("euler", "symplectic-euler", "rk2", "heun", "verlet", "rk4", "implicit-euler"),
+                Integrators.names());
+        for (String n : Integrators.names()) {
+            Integrator i = Integrators.create(n);
+            assertEquals(n, i.name());
+            assertTrue(i != Integrators.create(n), "a fresh instance per call (scratch arrays are per state)");
+        }
+        assertTrue(Integrators.create("rk2") instanceof MidpointRK2, "the paper's RK2 is MidpointRK2");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Integrators.create("rk45"));
+        assertTrue(e.getMessage().contains("'rk45'") && e.getMessage().contains("implicit-euler"), e.getMessage());
+    }
+
+    /** A free, tumbling 4-node chain with damped springs and no external force keeps its momentum. */
+    @ParameterizedTest
+    @MethodSource("names")
+    void conservesLinearMomentumOfAFreeChain(String name) {
+        Topology t = new Topology();
+        Node prev = t.addNode(0, 0, 0, 1);
+        for (int i = 1; i < 4; i++) {
+            Node n = t.addNode(i, 0.3 * i * i, 0, 1 + i);
+            t.addSpring(prev, n, 50, 0.5);
+            prev = n;
+        }
+        SystemState s = SystemState.compile(t);
+        s.v[0] = 1;
+        s.v[4] = -2;
+        s.v[11] = 0.5;
+        double[] p0 = new double[3];
+        s.momentum(p0);
+        Simulation sim = new Simulation(s, Integrators.create(name));
+        sim.setWarningSink(m -> { });
+        sim.runUntil(2, 1e-3);
+        double[] p1 = new double[3];
+        s.momentum(p1);
+        for (int k = 0; k < 3; k++) {
+            assertEquals(p0[k], p1[k], 1e-11, name + ": momentum component " + k);
+        }
+        assertTrue(s.x[9] != 3, "the chain moved");
+    }
+
+    /** Fixed nodes stay put, driven nodes follow their motion, under every integrator. */
+    @ParameterizedTest
+    @MethodSource("names")
+    void fixedAndDrivenNodesFollowTheirPrescription(String name) {
+        Topology t = new Topology();
+        Node fixed = t.addNode(0, 0, 0, 1).fix();
+        Node free = t.addNode(1, 0, 0, 1);
+        Node driven = t.addNode(2, 0, 0, 1);
+        driven.drive((time, rest, out, o) -> {
+            out[o] = rest.x() + 0.1 * Math.sin(3 * time);
+            out[o + 1] = rest.y();
+            out[o + 2] = rest.z();
+        });
+        t.addSpring(fixed, free, 100, 0.1);
+        t.addSpring(free, driven, 100, 0.1);
+        t.setGravity(new Vec3(0, -9.81, 0));
+        SystemState s = SystemState.compile(t);
+        Simulation sim = new Simulation(s, Integrators.create(name));
+        double[] lowest = {0};
+        sim.addListener(x -> lowest[0] = Math.min(lowest[0], x.state().x[4]));
+        sim.runUntil(1, 1e-3);
+        assertEquals(0, s.x[0], 0);
+        assertEquals(0, s.x[1], 0);
+        assertEquals(2 + 0.1 * Math.sin(3 * sim.time()), s.x[6], 1e-12, name + ": driven node x");
+        assertEquals(0.3 * Math.cos(3 * sim.time()), s.v[6], 1e-6, name + ": driven node velocity");
+        // The two springs start straight at rest length: the free node falls, then swings about its sag.
+        assertTrue(lowest[0] < -0.05, name + ": the free node falls under gravity, lowest y = " + lowest[0]);
+    }
+
+    /** Verlet reuses its end-of-step force only when that is exact: results equal to recomputing it. */
+    @Test
+    void verletForceReuseIsExact() {
+        Topology t = new Topology();
+        Node a = t.addNode(0, 0, 0, 1).fix();
+        Node b = t.addNode(1.1, 0.2, 0, 1);
+        t.addSpring(a, b, 100, 0);
+        SystemState s1 = SystemState.compile(t);
+        SystemState s2 = SystemState.compile(t);
+        Simulation reusing = new Simulation(s1, new VelocityVerlet());
+        Simulation fresh = new Simulation(s2, new VelocityVerlet());
+        for (int i = 0; i < 500; i++) {
+            reusing.step(1e-3);
+            fresh.setIntegrator(new VelocityVerlet()); // a new instance has nothing to reuse
+            fresh.step(1e-3);
+        }
+        assertEquals(s2.x[3], s1.x[3], 1e-14);
+        assertEquals(s2.v[4], s1.v[4], 1e-14);
+        assertEquals(500 + 1, reusing.forces().evaluations(), "one force pass per step plus the first");
+        assertEquals(1000, fresh.forces().evaluations());
+    }
+
+    @Test
+    void implicitEulerSolvesItsSystemToTolerance() {
+        Topology t = org.tensim.scene.LatticeScene.build(4, 0.1, 1, 1000, 0.5, false);
+        SystemState s = SystemState.compile(t);
+        ImplicitEuler ie = new ImplicitEuler();
+        Simulation sim = new Simulation(s, ie);
+        sim.runUntil(0.05, 5e-3); // w_max h about 1: well beyond any explicit limit
+        assertEquals(0, ie.unconvergedSolves());
+        assertTrue(ie.lastRelativeResidual() <= ImplicitEuler.DEFAULT_TOLERANCE, "residual " + ie.lastRelativeResidual());
+        assertTrue(ie.lastIterations() > 1, "a real solve: " + ie.lastIterations() + " CG iterations");
+    }
+}
