@@ -171,6 +171,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     }
 
     @Override
+    public void warning(String message) {
+        SwingUtilities.invokeLater(() -> status.message("Warning: " + message, true));
+    }
+
+    @Override
     public void failed(String what, RuntimeException e) {
         SwingUtilities.invokeLater(() -> status.message(what + ": " + e.getMessage(), true));
     }

@@ -6,13 +6,13 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
+import org.tensim.solver.CriticalTimeStep;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
 import org.tensim.view.Body;
 import org.tensim.view.FrameBuffer;
 import org.tensim.view.ProbeRecorder;
 import org.tensim.view.SceneFactory;
-import org.tensim.view.StabilityLimit;
 import org.tensim.view.ViewScene;
 
 /**
@@ -37,6 +37,9 @@ public final class SimulationRunner implements Tuning.Target {
 
         /** A command failed (e.g. a mesh could not be loaded); the previous scene keeps running. */
         void failed(String what, RuntimeException e);
+
+        /** A warning from a simulation (time step beyond its critical estimate, projection residual...). */
+        void warning(String message);
     }
 
     /** Simulated time between chart samples, s. */
@@ -63,6 +66,8 @@ public final class SimulationRunner implements Tuning.Target {
 
     private ViewScene scene; // simulation thread only
     private boolean tensegrityTendon;
+    private boolean criticalStale;
+    private long criticalComputedAt;
     private long anchorWall;
     private double anchorSim;
     private boolean reanchor = true;
@@ -163,6 +168,7 @@ public final class SimulationRunner implements Tuning.Target {
                 for (Body b : scene.bodies()) {
                     b.simulation().setIntegrator(choice.create());
                 }
+                updateCriticalStep();
             }
         });
         LockSupport.unpark(thread);
@@ -197,6 +203,7 @@ public final class SimulationRunner implements Tuning.Target {
             List<Body> bodies = s.bodies();
             for (Body b : bodies) {
                 b.simulation().setIntegrator(integrator.create());
+                b.simulation().setWarningSink(m -> events.warning(b.name() + ": " + m));
             }
             FrameBuffer frames = new FrameBuffer(bodies);
             ProbeRecorder probes = new ProbeRecorder(bodies, PROBE_INTERVAL_S, 1 << 14);
@@ -209,18 +216,33 @@ public final class SimulationRunner implements Tuning.Target {
             steps = 0;
             unconvergedProjections = 0;
             reanchor = true;
+            criticalStale = true;
+            criticalComputedAt = 0;
             updateCriticalStep();
             events.installed(s, frames, probes);
         });
         LockSupport.unpark(thread);
     }
 
+    /** Marks the critical step for recomputation (done in the loop, at most every 0.3 s: a slider drag
+     *  sends many changes, and the estimate's power iteration is not free on a large scene). */
     private void updateCriticalStep() {
+        criticalStale = true;
+    }
+
+    private void refreshCriticalStep() {
+        long now = System.nanoTime();
+        if (!criticalStale || now - criticalComputedAt < 300_000_000L) {
+            return;
+        }
         double c = Double.POSITIVE_INFINITY;
         for (Body b : scene.bodies()) {
-            c = Math.min(c, StabilityLimit.criticalTimeStep(b.simulation().state()));
+            Simulation s = b.simulation();
+            c = Math.min(c, CriticalTimeStep.estimate(s.state()).forIntegrator(s.integrator()));
         }
         criticalDt = c;
+        criticalStale = false;
+        criticalComputedAt = now;
     }
 
     private void loop() {
@@ -232,6 +254,9 @@ public final class SimulationRunner implements Tuning.Target {
                 } catch (RuntimeException e) {
                     events.failed("change not applied", e);
                 }
+            }
+            if (scene != null) {
+                refreshCriticalStep();
             }
             if (scene == null || divergence != null) {
                 pendingSteps.set(0);
@@ -319,7 +344,7 @@ public final class SimulationRunner implements Tuning.Target {
         return dt;
     }
 
-    /** The critical time step estimate of the current scene, s. */
+    /** The critical time step estimate of the current scene for its integrator, s (infinite: none). */
     public double criticalTimeStep() {
         return criticalDt;
     }

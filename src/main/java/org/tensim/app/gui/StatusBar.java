@@ -88,7 +88,7 @@ final class StatusBar extends JPanel {
         }
         double crit = r.criticalTimeStep();
         if (r.timeStep() > crit) {
-            b.append(String.format(Locale.ROOT, "Time step %s s exceeds the critical estimate %s s (2/w_max). ",
+            b.append(String.format(Locale.ROOT, "Time step %s s exceeds the critical estimate %s s for this integrator. ",
                     org.tensim.view.TunableParameter.format(r.timeStep()), org.tensim.view.TunableParameter.format(crit)));
         }
         if (r.unconvergedProjections() > 0) {
