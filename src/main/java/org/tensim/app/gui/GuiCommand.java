@@ -96,7 +96,9 @@ public final class GuiCommand implements Callable<Integer> {
         setScripted(screenshot != null);
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
-        GuiWindow w = open(factory, fresh ? null : dir, dir, preset, !paused && screenshot == null);
+        // A scripted screenshot never overwrites what the user tuned last.
+        GuiWindow w = open(factory, fresh ? null : dir, screenshot == null ? dir : null, preset,
+                !paused && screenshot == null);
         if (screenshot != null) {
             takeScreenshotAndClose(w, screenshot, after);
         }

@@ -114,6 +114,31 @@ class GuiWindowTest {
             assertTrue(stronger < 3 * reference, "five times the force must push P much further: " + stronger
                     + " m against " + reference + " m");
 
+            // Orbit with the mouse (left drag on the canvas) while paused: the picture turns; Reset view
+            // brings the initial framing back.
+            Thread.sleep(300);
+            BufferedImage home = w.view().capture();
+            java.awt.Point c = w.view().canvas().getLocationOnScreen();
+            int cx = c.x + w.view().canvas().getWidth() / 2;
+            int cy = c.y + w.view().canvas().getHeight() / 2;
+            java.awt.Robot robot = new java.awt.Robot();
+            robot.mouseMove(cx, cy);
+            robot.mousePress(java.awt.event.InputEvent.BUTTON1_DOWN_MASK);
+            for (int i = 1; i <= 20; i++) {
+                robot.mouseMove(cx + 8 * i, cy + 2 * i);
+                robot.delay(15);
+            }
+            robot.mouseRelease(java.awt.event.InputEvent.BUTTON1_DOWN_MASK);
+            Thread.sleep(400);
+            BufferedImage turned = w.view().capture();
+            int moved = differingPixels(home, turned);
+            assertTrue(moved > 500, "dragging orbits the view: " + moved + " pixels changed");
+            onEdt(() -> ((AbstractButton) find(w.controls(), "resetView")).doClick(0));
+            Thread.sleep(400);
+            int back = differingPixels(home, w.view().capture());
+            assertTrue(back < moved / 10, "Reset view restores the framing: " + back + " pixels differ, against "
+                    + moved + " after the drag");
+
             // A live change without reset reaches every spring of both cubes.
             ParameterControl k = w.controls().control(CubeViewScene.STIFFNESS);
             onEdt(() -> k.enter("1500"));
