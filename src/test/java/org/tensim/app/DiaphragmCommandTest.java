@@ -59,6 +59,38 @@ class DiaphragmCommandTest {
     }
 
     @Test
+    void aDivergingRunStopsWithOneLineAndKeepsWhatItWrote() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        Path mesh = dir.resolve("coarse.obj");
+        run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());
+        Path out = dir.resolve("diverged");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--dt", "0.002", "--out",
+                out.toString());
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("diverged") && r[2].contains("reduce the time step"), r[2]);
+        assertFalse(r[2].contains("\tat "), r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertTrue(s.containsKey("diverged"));
+        assertTrue(Files.size(out.resolve("probe.csv")) > 0);
+        assertTrue(Files.isRegularFile(out.resolve("vtk/diaphragm_0000.vtk")));
+    }
+
+    @Test
+    void aSingleSurfaceMeshIsOffset() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        Path mesh = dir.resolve("upper.obj");
+        org.tensim.io.mesh.ObjWriter.write(mesh, org.tensim.scene.diaphragm.DoubleDomeGenerator.upperSurface(
+                org.tensim.scene.diaphragm.DoubleDomeGenerator.Shape.adult().withRings(8)),
+                org.tensim.io.mesh.MeshUnits.MM, List.of(), 4);
+        DiaphragmSetup.Built b = DiaphragmSetup.load(mesh, org.tensim.io.mesh.MeshUnits.MM, 0.002,
+                DiaphragmSetup.DEFAULT_BOXES, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
+                org.tensim.scene.diaphragm.BreathingCycle.quiet(),
+                new org.tensim.scene.diaphragm.DiaphragmControls(1, 2600));
+        assertEquals(DiaphragmSetup.SurfaceMode.OFFSET, b.mode());
+        assertEquals(0.002, b.scene().surfaces().thicknessM(), 1e-4);
+    }
+
+    @Test
     void badInputGivesOneClearLineAndNoStackTrace() throws Exception {
         Path bad = dir.resolve("bad.obj");
         Files.writeString(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");

@@ -16,7 +16,7 @@ import org.tensim.solver.Simulation;
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class DiaphragmPhysiologyTest {
-    static final int RINGS = 14;
+    static final int RINGS = 12;
     static final double PA = 2600;
     private Outcome base;
 
