@@ -254,8 +254,25 @@ public final class SceneView {
         return new Robot().createScreenCapture(new Rectangle(p.x, p.y, canvas.getWidth(), canvas.getHeight()));
     }
 
-    /** Releases the universe and its rendering threads. */
-    public void dispose() {
-        universe.cleanup();
+    /**
+     * Stops rendering and releases the universe and its threads. Java3D 1.7.2's
+     * {@code SimpleUniverse.cleanup()} now and then waits forever for its master
+     * control thread; it is therefore run on a helper thread, waited for at most
+     * {@code waitMillis}, and left to finish on its own (its threads are daemons:
+     * they never keep the program alive).
+     *
+     * @return true when the clean-up finished in time
+     */
+    public boolean dispose(long waitMillis) {
+        canvas.stopRenderer();
+        Thread t = new Thread(universe::cleanup, "tensim-java3d-cleanup");
+        t.setDaemon(true);
+        t.start();
+        try {
+            t.join(waitMillis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return !t.isAlive();
     }
 }

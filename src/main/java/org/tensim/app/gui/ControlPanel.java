@@ -25,7 +25,7 @@ import org.tensim.view.TunableParameter;
  * layers and the chart's component. Everything it changes goes through
  * {@link Tuning} or the {@link Actions}.
  */
-final class ControlPanel extends JPanel {
+final class ControlPanel extends JPanel implements javax.swing.Scrollable {
     private static final long serialVersionUID = 1L;
 
     /** What the buttons do (implemented by the window). */
@@ -94,6 +94,10 @@ final class ControlPanel extends JPanel {
         JPanel solver = column();
         integrator = new JComboBox<>(tuning.integrators().toArray(new IntegratorChoice[0]));
         integrator.setName("integrator");
+        integrator.setToolTipText("The integrator of stage 1 of the paper's loop; takes effect at the next step.");
+        // A fixed width: the panel must not grow wider than its column for a long name.
+        integrator.setPreferredSize(new java.awt.Dimension(220, integrator.getPreferredSize().height));
+        integrator.setMaximumSize(integrator.getPreferredSize());
         integrator.setSelectedItem(tuning.integrator());
         integrator.addActionListener(e -> {
             if (!updating) {
@@ -161,6 +165,32 @@ final class ControlPanel extends JPanel {
 
         tuning.addListener(this::refresh);
         refresh();
+    }
+
+    // Scrollable: as wide as the scroll pane's view (never clipped by the scroll bar), scrolled vertically.
+    @Override
+    public java.awt.Dimension getPreferredScrollableViewportSize() {
+        return getPreferredSize();
+    }
+
+    @Override
+    public int getScrollableUnitIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+        return 16;
+    }
+
+    @Override
+    public int getScrollableBlockIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+        return visible.height - 32;
+    }
+
+    @Override
+    public boolean getScrollableTracksViewportWidth() {
+        return true;
+    }
+
+    @Override
+    public boolean getScrollableTracksViewportHeight() {
+        return false;
     }
 
     /** Shows the tuning's current values in every control. */

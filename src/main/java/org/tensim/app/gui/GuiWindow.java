@@ -335,8 +335,10 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         saveLastUsed();
         uiTimer.stop();
         runner.stop();
+        if (!view.dispose(5000)) {
+            System.err.println("tensim gui: Java3D did not finish its clean-up within 5 s; closing anyway");
+        }
         frame.setVisible(false);
-        view.dispose();
         frame.dispose();
         closed.countDown();
     }

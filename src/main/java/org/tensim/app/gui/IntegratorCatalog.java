@@ -24,9 +24,7 @@ public final class IntegratorCatalog {
         List<IntegratorChoice> l = new ArrayList<>();
         for (Map.Entry<String, Supplier<Integrator>> e : Integrators.all().entrySet()) {
             Integrator probe = e.getValue().get();
-            String label = e.getKey() + " (order " + probe.order() + ", " + probe.forceEvaluationsPerStep()
-                    + " force pass" + (probe.forceEvaluationsPerStep() == 1 ? "" : "es") + " per step)"
-                    + (e.getKey().equals(DEFAULT) ? ", the paper's" : "");
+            String label = e.getKey() + ", order " + probe.order() + (e.getKey().equals(DEFAULT) ? " (paper)" : "");
             IntegratorChoice c = new IntegratorChoice(e.getKey(), label, e.getValue());
             if (e.getKey().equals(DEFAULT)) {
                 l.add(0, c);
