@@ -17,10 +17,11 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim diaphragm}: the paper's second experiment, headless. */
 @Command(name = "diaphragm", mixinStandardHelpOptions = true,
-        description = {"The paper's diaphragm (section 3.2): muscle as mass-spring, central tendon as tensegrity,",
-            "driven by ribs (finite helical axes) and action lines, for some breathing cycles. Writes PNG",
-            "displacement slices, displacements.csv, probe.csv, a VTK series and summary.json to --out, and",
-            "prints the summary as the last line (JSON). Model and defaults: docs/diaphragm.md."})
+        description = {"The paper's diaphragm (section 3.2): muscle as mass-spring, central",
+            "tendon as tensegrity, driven by ribs (finite helical axes) and action",
+            "lines, for some breathing cycles. Writes PNG displacement slices,",
+            "displacements.csv, probe.csv, a VTK series and summary.json to --out and",
+            "prints the summary as the last line (JSON). Model: docs/diaphragm.md."})
 public final class DiaphragmCommand implements Callable<Integer> {
     @Option(names = "--mesh", paramLabel = "FILE",
             description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"

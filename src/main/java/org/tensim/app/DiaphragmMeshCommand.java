@@ -12,8 +12,9 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim diaphragm-mesh}: writes the project's parametric double-dome diaphragm as OBJ (mm). */
 @Command(name = "diaphragm-mesh", mixinStandardHelpOptions = true,
-        description = {"Generates the parametric double-dome diaphragm (a thin closed shell, BodyParts3D frame,",
-            "millimetres) and writes it as OBJ. The default reproduces meshes/diaphragm-default.obj."})
+        description = {"Generates the parametric double-dome diaphragm (a thin closed shell,",
+            "BodyParts3D frame, millimetres) and writes it as OBJ. The defaults",
+            "reproduce meshes/diaphragm-default.obj."})
 public final class DiaphragmMeshCommand implements Callable<Integer> {
     @Option(names = "--rings", paramLabel = "N",
             description = "rings per face (resolution; 43 gives about the paper's 11,359 nodes) (default: ${DEFAULT-VALUE})")

@@ -18,7 +18,10 @@ import org.tensim.solver.Simulation;
  * order; the sternum and rib nodes follow.
  *
  * <p><b>Mass.</b> {@code m_i = rho A_i t / 2}: A_i is the vertex's third of the
- * area of its triangles, t the shell thickness (each face carries half).
+ * area of its triangles, t the shell thickness (each face carries half). A_i is at
+ * least 0.3 times the median's: vertices of sliver triangles would otherwise carry
+ * almost no mass and alone set the stable step ({@link #addedMassKg()} says how much
+ * this adds).
  *
  * <p><b>Springs.</b> Every mesh edge is a spring of stiffness
  * {@code k_e = E (t / 2) sum(A_T) / |e|^2} over the triangles T on the edge (Van
@@ -69,6 +72,7 @@ public final class DiaphragmScene {
     private final double timeStep;
     private final double tendonAreaFraction;
     private final int firstAnchor;
+    private final double addedMass;
 
     private DiaphragmScene(DiaphragmSceneBuilder b) {
         this.topology = b.t;
@@ -87,6 +91,7 @@ public final class DiaphragmScene {
         this.timeStep = b.dt;
         this.tendonAreaFraction = b.tendonFraction;
         this.firstAnchor = b.firstAnchor;
+        this.addedMass = b.addedMass;
     }
 
     /**
@@ -252,6 +257,11 @@ public final class DiaphragmScene {
     /** Share of the upper surface's area that is tendon. */
     public double tendonAreaFraction() {
         return tendonAreaFraction;
+    }
+
+    /** Mass added by the mass floor, kg. */
+    public double addedMassKg() {
+        return addedMass;
     }
 
     /** Gershgorin bound on the highest angular frequency of the network, rad/s. */

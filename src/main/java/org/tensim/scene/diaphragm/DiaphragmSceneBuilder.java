@@ -27,6 +27,9 @@ final class DiaphragmSceneBuilder {
     final SpringList springs = new SpringList();
     final int nv;
     final double thickness;
+    /** Smallest node mass, as a fraction of the median node's. */
+    static final double MASS_FLOOR = 0.3;
+    double addedMass;
     double[] area;
     int[] labels;
     boolean[] linked;
@@ -57,12 +60,18 @@ final class DiaphragmSceneBuilder {
 
     void nodes() {
         area = SurfaceGeometry.vertexAreas(mesh);
+        // Mass floor: a few vertices of sliver triangles (real meshes) would carry almost no mass and
+        // set the highest frequency alone; their mass is raised to MASS_FLOOR times the median's.
+        double[] sorted = area.clone();
+        Arrays.sort(sorted);
+        double floor = MASS_FLOOR * sorted[sorted.length / 2];
         for (int v = 0; v < nv; v++) {
-            double m = p.densityKgPerM3() * area[v] * thickness / 2;
-            if (!(m > 0)) {
+            if (!(area[v] > 0)) {
                 throw new IllegalArgumentException("mesh vertex " + v + " belongs to no triangle of positive area;"
                         + " clean the mesh first");
             }
+            double m = p.densityKgPerM3() * Math.max(area[v], floor) * thickness / 2;
+            addedMass += p.densityKgPerM3() * (Math.max(area[v], floor) - area[v]) * thickness / 2;
             t.addNode(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2), m);
         }
     }

@@ -27,6 +27,21 @@ class DoubleDomeGeneratorTest {
     }
 
     @Test
+    void theCommittedDefaultMeshIsWhatTheGeneratorMakes() throws Exception {
+        java.nio.file.Path file = java.nio.file.Path.of("meshes", "diaphragm-default.obj");
+        org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.Files.isRegularFile(file), "run from the project");
+        TriangleMesh read = org.tensim.io.mesh.MeshReaders.read(file, org.tensim.io.mesh.MeshUnits.MM);
+        TriangleMesh made = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult());
+        assertEquals(made.vertexCount(), read.vertexCount());
+        assertEquals(java.util.Arrays.toString(made.triangles()), java.util.Arrays.toString(read.triangles()));
+        for (int v = 0; v < made.vertexCount(); v++) {
+            for (int a = 0; a < 3; a++) {
+                assertEquals(made.coord(v, a), read.coord(v, a), 1e-6, "vertex " + v); // written to 1 micrometre
+            }
+        }
+    }
+
+    @Test
     void adultSizeRightDomeHigherAndThin() {
         DoubleDomeGenerator.Shape s = DoubleDomeGenerator.Shape.adult().withRings(20);
         TriangleMesh m = DoubleDomeGenerator.shell(s);
