@@ -1,5 +1,6 @@
 package org.tensim.app;
 
+import org.tensim.io.ProjectFolder;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -24,7 +25,7 @@ public final class DiaphragmMeshCommand implements Callable<Integer> {
     double thicknessMm = 2.5;
 
     @Option(names = "--out", paramLabel = "FILE", description = "OBJ file to write (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("meshes", "diaphragm-default.obj");
+    Path out = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
 
     @Override
     public Integer call() throws Exception {

@@ -1,5 +1,6 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,9 +27,9 @@ import org.tensim.scene.diaphragm.TwoSurfaces;
  */
 public final class DiaphragmSetup {
     /** The project's default mesh, relative to the project folder. */
-    public static final Path DEFAULT_MESH = Path.of("meshes", "diaphragm-default.obj");
+    public static final Path DEFAULT_MESH = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
     /** The BodyParts3D rib and sternum boxes, relative to the project folder. */
-    public static final Path DEFAULT_BOXES = Path.of("..", "shared", "meshes", "bodyparts3d",
+    public static final Path DEFAULT_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
     /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
     public static final double DEFAULT_MUSCLE_PA = 2600;

@@ -1,5 +1,6 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -56,7 +57,7 @@ public final class ResolutionStudy {
      */
     static final double[] CELLS_MM = {16, 12, 9, 6.5};
     /** The BodyParts3D mesh, relative to the project folder. */
-    public static final Path BODYPARTS_MESH = Path.of("..", "shared", "meshes", "bodyparts3d",
+    public static final Path BODYPARTS_MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "diaphragm-FJ3131-dec28k-mm.obj");
 
     /** One model's outcome. */
