@@ -1,5 +1,6 @@
 package org.tensim.app;
 
+import org.tensim.app.gui.GuiCommand;
 import org.tensim.bench.BenchCommand;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -12,7 +13,8 @@ import picocli.CommandLine.Command;
         description = {"Soft-organ deformation with mass-springs and tensegrity",
             "(Villard, Bourne, Bello, ISBMS 2008).", "",
             "The launcher also has: ./tensim test (the whole test suite)."},
-        subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class})
+        subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
+            DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

@@ -111,7 +111,6 @@ public final class CubeReport {
         XYChart c = Charts.lineChart("Cube (10 x 10 x 10 m): vertical displacement of point P",
                 "time (s)", "P, Y displacement (m)", 900, 500);
         c.getStyler().setXAxisDecimalPattern("0.0");
-        c.getStyler().setYAxisDecimalPattern("0.0");
         Charts.addLine(c, "mass-spring (MSS)", t, m);
         Charts.addLine(c, "tensegrity (TS)", t, s);
         Charts.savePng(c, png);

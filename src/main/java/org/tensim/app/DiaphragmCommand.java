@@ -1,0 +1,113 @@
+package org.tensim.app;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.tensim.experiment.diaphragm.DiaphragmReport;
+import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.experiment.diaphragm.ResolutionStudy;
+import org.tensim.io.Json;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.scene.diaphragm.BreathingCycle;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code tensim diaphragm}: the paper's second experiment, headless. */
+@Command(name = "diaphragm", mixinStandardHelpOptions = true,
+        description = {"The paper's diaphragm (section 3.2): muscle as mass-spring, central",
+            "tendon as tensegrity, driven by ribs (finite helical axes) and action",
+            "lines, for some breathing cycles. Writes PNG displacement slices,",
+            "displacements.csv, probe.csv, a VTK series and summary.json to --out and",
+            "prints the summary as the last line (JSON). Model: docs/diaphragm.md."})
+public final class DiaphragmCommand implements Callable<Integer> {
+    @Option(names = "--mesh", paramLabel = "FILE",
+            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
+                    + " (default: ${DEFAULT-VALUE})")
+    Path mesh = DiaphragmSetup.DEFAULT_MESH;
+
+    @Option(names = "--units", paramLabel = "mm|m", description = "units of the mesh file (default: ${DEFAULT-VALUE})")
+    String units = "mm";
+
+    @Option(names = "--thickness", paramLabel = "MM",
+            description = "thickness used when the mesh is a single surface, mm (default: ${DEFAULT-VALUE})")
+    double thicknessMm = 2.5;
+
+    @Option(names = "--boxes", paramLabel = "FILE",
+            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
+    Path boxes = DiaphragmSetup.DEFAULT_BOXES;
+
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
+    double seconds = 4;
+
+    @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
+            description = "rib rotation, times the quiet-breathing value, 0..3 (default: ${DEFAULT-VALUE})")
+    double ribAmplitude = 1;
+
+    @Option(names = "--muscle-force", paramLabel = "PA",
+            description = "peak muscle action (force per unit area of diaphragm), Pa, 0..20000"
+                    + " (default: ${DEFAULT-VALUE})")
+    double musclePa = DiaphragmSetup.DEFAULT_MUSCLE_PA;
+
+    @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: ${DEFAULT-VALUE})")
+    double period = 4;
+
+    @Option(names = "--ie-ratio", paramLabel = "R",
+            description = "expiration time over inspiration time, I:E = 1:R (default: ${DEFAULT-VALUE})")
+    double ieRatio = 2;
+
+    @Option(names = "--attach-threshold", paramLabel = "MM",
+            description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm"
+                    + " (default: ${DEFAULT-VALUE})")
+    double attachMm = DiaphragmParameters.defaults().attachThresholdM() * 1e3;
+
+    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
+    double dt = 0;
+
+    @Option(names = "--vtk-per-cycle", paramLabel = "N",
+            description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE})")
+    int vtkPerCycle = 8;
+
+    @Option(names = "--vector-scale", paramLabel = "X",
+            description = "scale of the mid-inspiration displacement vectors (default: ${DEFAULT-VALUE}, as Fig. 5)")
+    double vectorScale = 100;
+
+    @Option(names = "--csv-times", paramLabel = "S", split = ",",
+            description = "times of displacements.csv, s (default: end-inspiration and end of the last cycle)")
+    double[] csvTimes;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
+    Path out = Path.of("out", "diaphragm");
+
+    @Option(names = "--resolution-study",
+            description = "run the resolution study instead (docs/diaphragm.md); uses --seconds per resolution")
+    boolean resolutionStudy;
+
+    @Override
+    public Integer call() throws Exception {
+        MeshUnits u = MeshUnits.parse(units);
+        DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3);
+        BreathingCycle cycle = new BreathingCycle(period, ieRatio);
+        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
+        DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
+        if (resolutionStudy) {
+            Map<String, Object> s = ResolutionStudy.run(boxes, p, cycle, controls, o, out, System.out);
+            System.out.println(Json.line(s));
+            return 0;
+        }
+        DiaphragmSetup.Built built;
+        if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
+            built = DiaphragmSetup.generated(43, boxes, p, cycle, controls);
+        } else {
+            built = DiaphragmSetup.load(mesh, u, thicknessMm * 1e-3, boxes, p, cycle, controls);
+        }
+        if (built.meshReport() != null) {
+            System.out.println(built.meshReport().describe());
+        }
+        Map<String, Object> summary = DiaphragmReport.run(built, o, out, System.out);
+        System.out.println(Json.line(summary));
+        return 0;
+    }
+}

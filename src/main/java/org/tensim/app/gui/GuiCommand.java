@@ -1,0 +1,199 @@
+package org.tensim.app.gui;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.SwingUtilities;
+import org.tensim.view.SceneFactory;
+import org.tensim.view.ViewScene;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code tensim gui}: the interactive window. */
+@Command(name = "gui", mixinStandardHelpOptions = true,
+        description = {"Interactive simulation in a Java3D window: tune parameters while it runs,",
+            "watch a probe node's displacement, save and load presets.",
+            "Last-used parameters are restored from $XDG_CONFIG_HOME/tensim/ (or ~/.config/tensim/).",
+            "Guide: docs/gui.md"})
+public final class GuiCommand implements Callable<Integer> {
+    private static volatile boolean scripted;
+
+    @Option(names = "--scene", paramLabel = "NAME", description = "scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})",
+            completionCandidates = SceneNames.class)
+    String scene = GuiScenes.names().get(0);
+
+    @Option(names = "--mesh", paramLabel = "FILE",
+            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
+                    + " (default: the generated double dome)")
+    Path mesh;
+
+    @Option(names = "--units", paramLabel = "mm|m", description = "units of the --mesh file (default: ${DEFAULT-VALUE})")
+    String units = GuiScenes.Source.defaults().units();
+
+    @Option(names = "--thickness", paramLabel = "MM",
+            description = "thickness given to a single-surface --mesh, mm (default: ${DEFAULT-VALUE})")
+    double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
+
+    @Option(names = "--resolution", paramLabel = "RINGS",
+            description = "rings per face of the generated double dome: 20 gives about 2,500 nodes (interactive),"
+                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE})")
+    int rings = GuiScenes.Source.defaults().rings();
+
+    @Option(names = "--boxes", paramLabel = "FILE",
+            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
+    Path boxes = GuiScenes.Source.defaults().boxes();
+
+    @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
+    Path preset;
+
+    @Option(names = "--fresh", description = "start from the defaults: do not restore the last-used parameters")
+    boolean fresh;
+
+    @Option(names = "--config-dir", paramLabel = "DIR",
+            description = "folder for last-used parameters (default: $XDG_CONFIG_HOME/tensim or ~/.config/tensim)")
+    Path configDir;
+
+    @Option(names = "--paused", description = "start paused (default: playing)")
+    boolean paused;
+
+    @Option(names = "--screenshot", paramLabel = "FILE",
+            description = "save a PNG of the window once --after simulated seconds have run, then exit")
+    Path screenshot;
+
+    @Option(names = "--after", paramLabel = "S", description = "simulated time before --screenshot, s (default: ${DEFAULT-VALUE})")
+    double after = 2;
+
+    /** Scene names for picocli's help. */
+    static final class SceneNames implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return GuiScenes.names().iterator();
+        }
+    }
+
+    /** True when the window is driven by a script (screenshot, tests): no modal dialogs. */
+    static boolean scripted() {
+        return scripted;
+    }
+
+    static void setScripted(boolean s) {
+        scripted = s;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (screenshot != null && !(after >= 0 && Double.isFinite(after))) {
+            throw new IllegalArgumentException("--after must be a finite number >= 0 s, got " + after);
+        }
+        // Bad names and files fail here, before any window.
+        SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
+                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
+        }
+        setScripted(screenshot != null);
+        Path dir = configDir != null ? configDir : ConfigDir.resolve();
+        // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
+        // A scripted screenshot never overwrites what the user tuned last.
+        GuiWindow w = open(factory, fresh ? null : dir, screenshot == null ? dir : null, preset,
+                !paused && screenshot == null);
+        if (screenshot != null) {
+            takeScreenshotAndClose(w, screenshot, after);
+        }
+        w.awaitClosed();
+        return 0;
+    }
+
+    /**
+     * Makes the first scene, restores the last-used parameters (from restoreDir,
+     * unless null), applies a preset, and opens the window.
+     *
+     * @param saveDir where last-used parameters are saved on change and at exit (null: not saved)
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play)
+            throws Exception {
+        ViewScene first = factory.create(true);
+        Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
+                IntegratorCatalog.available());
+        String note = restoreDir == null ? null : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()));
+        if (preset != null) {
+            try {
+                tuning.apply(PresetFile.read(preset, tuning), preset.toString());
+            } catch (PresetFile.PresetException e) {
+                throw new IllegalArgumentException("--preset: " + e.getMessage(), e);
+            }
+        }
+        // The first scene was made with the defaults: make it again if what was restored needs a new one.
+        boolean remake = factory.hasTendonChoice() && !tuning.tensegrityTendon();
+        for (org.tensim.view.TunableParameter p : first.parameters()) {
+            remake |= p.restarts() && tuning.get(p.key()) != p.defaultValue();
+        }
+        if (remake) {
+            first = factory.create(tuning.tensegrityTendon(), tuning.snapshot().values());
+        }
+        ViewScene start = first;
+        AtomicReference<GuiWindow> w = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> w.set(new GuiWindow(factory, start, tuning, saveDir, play, note)));
+        return w.get();
+    }
+
+    /** Restores last-used parameters; returns a note for the status bar when they could not be used. */
+    static String restore(Tuning tuning, Path file) {
+        if (!Files.exists(file)) {
+            return null;
+        }
+        try {
+            tuning.apply(PresetFile.read(file, tuning), file.toString());
+            return null;
+        } catch (PresetFile.PresetException | IllegalArgumentException e) {
+            // Keep the file for the user to inspect, out of the way of the next save.
+            Path bad = file.resolveSibling(file.getFileName() + ".bad");
+            try {
+                Files.move(file, bad, StandardCopyOption.REPLACE_EXISTING);
+            } catch (java.io.IOException io) {
+                bad = file;
+            }
+            return "Last-used parameters not restored (kept as " + bad + "): " + e.getMessage();
+        }
+    }
+
+    /**
+     * Plays once the view renders, waits for the simulated time (at most 10 min of
+     * wall time), saves the running window as PNG and closes it.
+     */
+    static void takeScreenshotAndClose(GuiWindow w, Path file, double afterS) throws Exception {
+        long deadline = System.nanoTime() + 600_000_000_000L;
+        // Java3D takes a moment to show its first frame: start the clock only then.
+        while ((w.scene() == null || w.view().framesRendered() < 3) && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        SwingUtilities.invokeAndWait(() -> {
+            w.play(true);
+            w.controls().showPlaying(true);
+        });
+        while ((w.runner().simTime() < afterS || w.view().shownTime() < afterS * 0.99)
+                && w.runner().divergence() == null && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        SwingUtilities.invokeAndWait(() -> w.chart().refresh());
+        Thread.sleep(300); // the status bar's rates refresh every 250 ms
+        AtomicReference<Exception> error = new AtomicReference<>();
+        double[] shown = new double[1];
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                shown[0] = w.view().shownTime();
+                w.saveScreenshot(file);
+            } catch (Exception e) {
+                error.set(e);
+            }
+            w.close();
+        });
+        if (error.get() != null) {
+            throw new java.io.IOException("cannot save screenshot " + file + ": " + error.get().getMessage(), error.get());
+        }
+        System.out.println("wrote " + file.toAbsolutePath() + " (scene at t = "
+                + String.format(java.util.Locale.ROOT, "%.3f", shown[0]) + " s)");
+    }
+}

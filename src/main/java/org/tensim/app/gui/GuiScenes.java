@@ -1,0 +1,65 @@
+package org.tensim.app.gui;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.model.Check;
+import org.tensim.view.CubeViewScene;
+import org.tensim.view.DiaphragmViewScene;
+import org.tensim.view.SceneFactory;
+
+/** The scenes the GUI can show, by name. */
+public final class GuiScenes {
+    private GuiScenes() {
+    }
+
+    /**
+     * Where a scene's geometry comes from (the diaphragm's; the cube is built in).
+     *
+     * @param mesh        mesh file, or null for the generated double dome
+     * @param units       units of the mesh file, {@code mm} or {@code m}
+     * @param thicknessMm thickness given to a single-surface mesh, mm
+     * @param rings       resolution of the generated double dome, rings per face
+     * @param boxes       rib and sternum boxes file
+     */
+    public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
+        /** The defaults: generated dome at the interactive resolution, the project's boxes. */
+        public static Source defaults() {
+            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, DiaphragmSetup.DEFAULT_BOXES);
+        }
+    }
+
+    /** Names accepted by {@code --scene}, the default first. */
+    public static List<String> names() {
+        return List.of("diaphragm", "cube");
+    }
+
+    /**
+     * The factory of a scene.
+     *
+     * @throws IllegalArgumentException for an unknown name, a mesh given to the cube, or a bad source
+     */
+    public static SceneFactory factory(String name, Source src) {
+        switch (name) {
+            case "cube":
+                if (src.mesh() != null) {
+                    throw new IllegalArgumentException("--mesh " + src.mesh() + ": the cube scene is built in and reads"
+                            + " no mesh; --mesh applies to the diaphragm");
+                }
+                return CubeViewScene.factory();
+            case "diaphragm":
+                if (src.mesh() != null && !Files.isRegularFile(src.mesh())) {
+                    throw new IllegalArgumentException("--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
+                            + " or .off mesh of the diaphragm)");
+                }
+                Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
+                Check.positive("--thickness", "mm", src.thicknessMm());
+                return DiaphragmViewScene.factory(src.mesh(), MeshUnits.parse(src.units()), src.thicknessMm() * 1e-3,
+                        src.rings(), src.boxes());
+            default:
+                throw new IllegalArgumentException("--scene '" + name + "' is not a scene; expected one of " + names());
+        }
+    }
+}

@@ -1,0 +1,389 @@
+package org.tensim.app.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Robot;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.concurrent.CountDownLatch;
+import javax.imageio.ImageIO;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JPopupMenu;
+import javax.swing.JScrollPane;
+import javax.swing.SwingUtilities;
+import javax.swing.Timer;
+import javax.swing.ToolTipManager;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.view.FrameBuffer;
+import org.tensim.view.ProbeRecorder;
+import org.tensim.view.SceneFactory;
+import org.tensim.view.SceneView;
+import org.tensim.view.ViewScene;
+
+/**
+ * The main window: the Java3D view, the control panel, the live probe chart and
+ * the status bar, wired to a {@link SimulationRunner}. The window is made and
+ * used on the Swing thread; runner events are handed over to it. Closing the
+ * window saves the last-used parameters, stops the simulation and releases
+ * Java3D.
+ */
+final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
+    private final SceneFactory factory;
+    private final Tuning tuning;
+    private final Path configDir;
+    private final JFrame frame;
+    private final SceneView view;
+    private final ControlPanel controls;
+    private final ProbeChart chart;
+    private final StatusBar status = new StatusBar();
+    private final SimulationRunner runner;
+    private final Timer uiTimer;
+    private final Timer saveTimer;
+    private final CountDownLatch closed = new CountDownLatch(1);
+    private volatile ViewScene scene;
+    private volatile boolean shutDown;
+    private boolean layersSet;
+
+    /**
+     * Builds and shows the window and starts the simulation with {@code first}.
+     * Swing thread only.
+     *
+     * @param configDir where last-used parameters are saved, or null not to save them
+     * @param play      whether to start playing at once
+     * @param startMessage a note for the status bar (e.g. why last-used parameters were not restored), or null
+     */
+    GuiWindow(SceneFactory factory, ViewScene first, Tuning tuning, Path configDir, boolean play,
+            String startMessage) {
+        this.factory = factory;
+        this.tuning = tuning;
+        this.configDir = configDir;
+        // The Java3D canvas is a heavyweight component: menus and tooltips must be too, or they hide behind it.
+        JPopupMenu.setDefaultLightWeightPopupEnabled(false);
+        ToolTipManager.sharedInstance().setLightWeightPopupEnabled(false);
+
+        frame = new JFrame("tensim: " + first.title());
+        frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                close();
+            }
+        });
+        view = new SceneView();
+        view.canvas().setPreferredSize(new Dimension(830, 520));
+        view.canvas().setMinimumSize(new Dimension(200, 150));
+        chart = new ProbeChart(first.defaultProbeAxis());
+        controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
+        runner = new SimulationRunner(factory, tuning::snapshot, this);
+        tuning.bind(runner);
+
+        JPanel centre = new JPanel(new BorderLayout());
+        centre.add(view.canvas(), BorderLayout.CENTER);
+        centre.add(chart.panel(), BorderLayout.SOUTH);
+        JScrollPane side = new JScrollPane(controls, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED,
+                JScrollPane.HORIZONTAL_SCROLLBAR_NEVER);
+        side.setPreferredSize(new Dimension(375, 700));
+        side.getVerticalScrollBar().setUnitIncrement(16);
+        frame.setJMenuBar(menus());
+        frame.getContentPane().add(centre, BorderLayout.CENTER);
+        frame.getContentPane().add(side, BorderLayout.EAST);
+        frame.getContentPane().add(status, BorderLayout.SOUTH);
+        frame.pack();
+        frame.setLocation(0, 0);
+        frame.setVisible(true);
+
+        uiTimer = new Timer(250, e -> {
+            chart.refresh();
+            status.update(runner, view.framesRendered());
+            if (runner.divergence() != null) {
+                controls.showPlaying(false);
+            }
+        });
+        uiTimer.start();
+        saveTimer = new Timer(1000, e -> saveLastUsed());
+        saveTimer.setRepeats(false);
+        tuning.addListener(saveTimer::restart);
+        if (startMessage != null) {
+            status.message(startMessage, true);
+        }
+        runner.start(first);
+        if (play) {
+            play(true);
+            controls.showPlaying(true);
+        }
+    }
+
+    private JMenuBar menus() {
+        JMenuBar bar = new JMenuBar();
+        JMenu file = new JMenu("File");
+        file.add(item("Load preset...", this::loadPreset));
+        file.add(item("Save preset...", this::savePreset));
+        file.add(item("Save screenshot...", this::saveScreenshotDialog));
+        file.addSeparator();
+        file.add(item("Quit", this::close));
+        bar.add(file);
+        return bar;
+    }
+
+    private static JMenuItem item(String text, Runnable r) {
+        JMenuItem i = new JMenuItem(text);
+        i.addActionListener(e -> r.run());
+        return i;
+    }
+
+    // ---- runner events (simulation thread) ----
+
+    @Override
+    public void installed(ViewScene s, FrameBuffer frames, ProbeRecorder probes) {
+        SwingUtilities.invokeLater(() -> {
+            if (shutDown) {
+                return;
+            }
+            scene = s;
+            view.show(frames, s.displacementScale(), s.up(), s.viewFrom());
+            if (!layersSet) { // the scene's choice at first; the user's afterwards
+                layersSet = true;
+                controls.setLayer("springs", s.wireframeAtStart());
+                controls.setLayer("nodes", s.wireframeAtStart());
+            }
+            chart.attach(probes, s.bodies());
+            frame.setTitle("tensim: " + s.title());
+        });
+    }
+
+    @Override
+    public void diverged(String body, SimulationDivergedException e) {
+        SwingUtilities.invokeLater(() -> controls.showPlaying(false));
+    }
+
+    @Override
+    public void warning(String message) {
+        SwingUtilities.invokeLater(() -> status.message("Warning: " + message, true));
+    }
+
+    @Override
+    public void failed(String what, RuntimeException e) {
+        SwingUtilities.invokeLater(() -> status.message(what + ": " + e.getMessage(), true));
+    }
+
+    // ---- control panel actions (Swing thread) ----
+
+    @Override
+    public void play(boolean on) {
+        if (on) {
+            runner.play();
+        } else {
+            runner.pause();
+        }
+    }
+
+    @Override
+    public void step() {
+        runner.stepOnce();
+    }
+
+    @Override
+    public void reset() {
+        runner.reset();
+        status.message("Reset: at rest, t = 0, current parameters kept", false);
+    }
+
+    @Override
+    public void resetView() {
+        view.resetView();
+    }
+
+    @Override
+    public void paced(boolean on) {
+        runner.setPaced(on);
+    }
+
+    @Override
+    public void layer(String layer, boolean on) {
+        switch (layer) {
+            case "surface" -> view.showSurface(on);
+            case "springs" -> view.showSprings(on);
+            case "links" -> view.showLinks(on);
+            case "nodes" -> view.showNodes(on);
+            case "vectors" -> view.showVectors(on);
+            case "structure" -> view.showStructure(on);
+            default -> throw new IllegalArgumentException("unknown layer " + layer);
+        }
+    }
+
+    @Override
+    public void probeAxis(int axis) {
+        chart.setAxis(axis);
+    }
+
+    @Override
+    public void loadPreset() {
+        JFileChooser c = chooser();
+        if (c.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
+            loadPreset(c.getSelectedFile().toPath());
+        }
+    }
+
+    /** Loads a preset; a malformed one is refused with its reason and nothing changes. */
+    boolean loadPreset(Path file) {
+        try {
+            Settings s = PresetFile.read(file, tuning);
+            tuning.apply(s, file.toString());
+            status.message("Loaded preset " + file, false);
+            return true;
+        } catch (PresetFile.PresetException | IllegalArgumentException e) {
+            status.message("Preset refused: " + e.getMessage(), true);
+            if (frame.isShowing() && !GuiCommand.scripted()) {
+                JOptionPane.showMessageDialog(frame, e.getMessage(), "Preset refused", JOptionPane.ERROR_MESSAGE);
+            }
+            return false;
+        }
+    }
+
+    @Override
+    public void savePreset() {
+        JFileChooser c = chooser();
+        if (c.showSaveDialog(frame) == JFileChooser.APPROVE_OPTION) {
+            Path p = c.getSelectedFile().toPath();
+            if (!p.getFileName().toString().endsWith(".json")) {
+                p = p.resolveSibling(p.getFileName() + ".json");
+            }
+            savePreset(p);
+        }
+    }
+
+    /** Saves the current parameters atomically. */
+    boolean savePreset(Path file) {
+        try {
+            PresetFile.write(file, tuning.snapshot());
+            status.message("Saved preset " + file, false);
+            return true;
+        } catch (IOException e) {
+            status.message("Cannot save preset " + file + ": " + e.getMessage(), true);
+            return false;
+        }
+    }
+
+    private static JFileChooser chooser() {
+        JFileChooser c = new JFileChooser();
+        c.setFileFilter(new FileNameExtensionFilter("tensim presets (*.json)", "json"));
+        return c;
+    }
+
+    private void saveScreenshotDialog() {
+        JFileChooser c = new JFileChooser();
+        c.setFileFilter(new FileNameExtensionFilter("PNG images", "png"));
+        if (c.showSaveDialog(frame) == JFileChooser.APPROVE_OPTION) {
+            try {
+                saveScreenshot(c.getSelectedFile().toPath());
+            } catch (Exception e) {
+                status.message("Cannot save screenshot: " + e.getMessage(), true);
+            }
+        }
+    }
+
+    /** Captures the whole window as it is on screen into a PNG file (written, then renamed). */
+    void saveScreenshot(Path file) throws Exception {
+        Point p = frame.getLocationOnScreen();
+        BufferedImage img = new Robot().createScreenCapture(new Rectangle(p, frame.getSize()));
+        Path abs = file.toAbsolutePath();
+        Files.createDirectories(abs.getParent());
+        Path tmp = Files.createTempFile(abs.getParent(), abs.getFileName().toString(), ".tmp");
+        try {
+            if (!ImageIO.write(img, "png", tmp.toFile())) {
+                throw new IOException("no PNG writer available");
+            }
+            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+    }
+
+    private void saveLastUsed() {
+        if (configDir == null) {
+            return;
+        }
+        Path p = ConfigDir.lastUsed(configDir, tuning.scene());
+        try {
+            PresetFile.write(p, tuning.snapshot());
+        } catch (IOException e) {
+            status.message("Cannot save last-used parameters to " + p + ": " + e.getMessage(), true);
+        }
+    }
+
+    /** Saves what the user tuned, stops the simulation, releases Java3D and closes. Swing thread. */
+    void close() {
+        if (shutDown) {
+            return;
+        }
+        shutDown = true;
+        saveTimer.stop();
+        saveLastUsed();
+        uiTimer.stop();
+        runner.stop();
+        if (!view.dispose(5000)) {
+            System.err.println("tensim gui: Java3D did not finish its clean-up within 5 s; closing anyway");
+        }
+        frame.setVisible(false);
+        frame.dispose();
+        closed.countDown();
+    }
+
+    /** Waits until the window is closed. */
+    void awaitClosed() throws InterruptedException {
+        closed.await();
+    }
+
+    // ---- for tests and scripted runs ----
+
+    JFrame frame() {
+        return frame;
+    }
+
+    SceneView view() {
+        return view;
+    }
+
+    ControlPanel controls() {
+        return controls;
+    }
+
+    SimulationRunner runner() {
+        return runner;
+    }
+
+    ProbeChart chart() {
+        return chart;
+    }
+
+    StatusBar status() {
+        return status;
+    }
+
+    Tuning tuning() {
+        return tuning;
+    }
+
+    /** The scene on screen, or null before the first is shown. */
+    ViewScene scene() {
+        return scene;
+    }
+
+    SceneFactory factory() {
+        return factory;
+    }
+}

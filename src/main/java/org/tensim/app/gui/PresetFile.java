@@ -1,0 +1,162 @@
+package org.tensim.app.gui;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.tensim.io.Json;
+
+/**
+ * Presets as JSON files, read and written through Jackson:
+ *
+ * <pre>
+ * {
+ *   "format" : "tensim-gui-preset",
+ *   "version" : 1,
+ *   "scene" : "cube",
+ *   "integrator" : "rk2",
+ *   "tendon" : "tensegrity",
+ *   "parameters" : { "forceAmplitudeN" : 400.0, "timeStepS" : 0.001, ... }
+ * }
+ * </pre>
+ *
+ * Parameter keys carry their unit. A preset may list only some parameters; the
+ * others keep their current values. Files are written to a temporary file then
+ * renamed over the target ({@link Json#write}), so a crash never leaves a
+ * half-written preset. Reading refuses anything malformed with a
+ * {@link PresetException} naming the file and the field, and changes nothing.
+ */
+public final class PresetFile {
+    public static final String FORMAT = "tensim-gui-preset";
+    public static final int VERSION = 1;
+
+    /** A preset that cannot be used; the message names the file, the field and what was expected. */
+    public static final class PresetException extends Exception {
+        public PresetException(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
+    private PresetFile() {
+    }
+
+    /** Writes the settings atomically (temporary file, then rename). */
+    public static void write(Path file, Settings s) throws IOException {
+        Map<String, Object> root = new LinkedHashMap<>();
+        root.put("format", FORMAT);
+        root.put("version", VERSION);
+        root.put("scene", s.scene());
+        root.put("integrator", s.integrator());
+        root.put("tendon", s.tensegrityTendon() ? "tensegrity" : "mass-spring");
+        root.put("parameters", new LinkedHashMap<>(s.values()));
+        Json.write(file, root);
+    }
+
+    /**
+     * Reads a preset for the scene of {@code current}, completing missing values
+     * from it, and checks every value against its parameter's range. The tuning
+     * itself is not changed: apply the result with {@link Tuning#apply}.
+     */
+    public static Settings read(Path file, Tuning current) throws PresetException {
+        String where = file.toString();
+        JsonNode root;
+        try {
+            root = Json.mapper().readTree(Files.readAllBytes(file));
+        } catch (NoSuchFileException e) {
+            throw new PresetException(where + ": no such file", e);
+        } catch (JsonProcessingException e) {
+            JsonLocation loc = e.getLocation();
+            throw new PresetException(where + " is not valid JSON"
+                    + (loc == null ? "" : " at line " + loc.getLineNr() + ", column " + loc.getColumnNr()) + ": "
+                    + e.getOriginalMessage(), e);
+        } catch (IOException e) {
+            throw new PresetException("cannot read preset " + where + ": " + e.getMessage(), e);
+        }
+        try {
+            Settings s = parse(root, where, current);
+            current.validate(s, where);
+            return s;
+        } catch (IllegalArgumentException e) {
+            throw new PresetException(e.getMessage(), e);
+        }
+    }
+
+    static Settings parse(JsonNode root, String where, Tuning current) {
+        if (root == null || !root.isObject()) {
+            throw new IllegalArgumentException(where + ": expected a JSON object { ... } at the top level, got "
+                    + (root == null ? "nothing" : root.getNodeType().toString().toLowerCase()));
+        }
+        Settings now = current.snapshot();
+        JsonNode format = root.get("format");
+        if (format != null && !FORMAT.equals(format.asText())) {
+            throw new IllegalArgumentException(where + ": field 'format' must be \"" + FORMAT + "\", got " + format);
+        }
+        JsonNode version = root.get("version");
+        if (version != null && (!version.canConvertToInt() || version.asInt() < 1 || version.asInt() > VERSION)) {
+            throw new IllegalArgumentException(where + ": field 'version' must be a whole number from 1 to " + VERSION
+                    + ", got " + version);
+        }
+        String scene = text(root, "scene", where, now.scene());
+        String integrator = text(root, "integrator", where, now.integrator());
+        String tendonText = text(root, "tendon", where, now.tensegrityTendon() ? "tensegrity" : "mass-spring");
+        boolean tensegrity;
+        if (tendonText.equals("tensegrity")) {
+            tensegrity = true;
+        } else if (tendonText.equals("mass-spring")) {
+            tensegrity = false;
+        } else {
+            throw new IllegalArgumentException(where + ": field 'tendon' must be \"tensegrity\" or \"mass-spring\", got \""
+                    + tendonText + "\"");
+        }
+        Map<String, Double> values = new LinkedHashMap<>(now.values());
+        JsonNode params = root.get("parameters");
+        if (params != null) {
+            if (!params.isObject()) {
+                throw new IllegalArgumentException(where + ": field 'parameters' must be an object of name: number, got "
+                        + params.getNodeType().toString().toLowerCase());
+            }
+            Iterator<Map.Entry<String, JsonNode>> it = params.fields();
+            while (it.hasNext()) {
+                Map.Entry<String, JsonNode> e = it.next();
+                String field = "parameters." + e.getKey();
+                if (!values.containsKey(e.getKey())) {
+                    throw new IllegalArgumentException(where + ": field '" + field + "' is not a parameter of scene '"
+                            + current.scene() + "'; known: " + current.keys());
+                }
+                if (!e.getValue().isNumber()) {
+                    throw new IllegalArgumentException(where + ": field '" + field + "' must be a number, got "
+                            + e.getValue());
+                }
+                double v = e.getValue().asDouble();
+                current.parameter(e.getKey()).validate(v, where + ": field '" + field + "'");
+                values.put(e.getKey(), v);
+            }
+        }
+        for (Iterator<String> it = root.fieldNames(); it.hasNext();) {
+            String f = it.next();
+            if (!f.equals("format") && !f.equals("version") && !f.equals("scene") && !f.equals("integrator")
+                    && !f.equals("tendon") && !f.equals("parameters")) {
+                throw new IllegalArgumentException(where + ": unknown field '" + f
+                        + "'; expected format, version, scene, integrator, tendon, parameters");
+            }
+        }
+        return new Settings(scene, integrator, tensegrity, values);
+    }
+
+    private static String text(JsonNode root, String field, String where, String fallback) {
+        JsonNode n = root.get(field);
+        if (n == null) {
+            return fallback;
+        }
+        if (!n.isTextual()) {
+            throw new IllegalArgumentException(where + ": field '" + field + "' must be a string, got " + n);
+        }
+        return n.asText();
+    }
+}

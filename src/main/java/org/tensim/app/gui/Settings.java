@@ -1,0 +1,20 @@
+package org.tensim.app.gui;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * A complete, validated set of tunable values: what a preset file holds and what
+ * is restored at the next start.
+ *
+ * @param scene            scene name, e.g. {@code cube}
+ * @param integrator       integrator name, e.g. {@code rk2}
+ * @param tensegrityTendon true when the tendon has rigid links (ignored by scenes without the choice)
+ * @param values           parameter key to value (in the unit its key names), time step included
+ */
+public record Settings(String scene, String integrator, boolean tensegrityTendon, Map<String, Double> values) {
+    public Settings {
+        values = Collections.unmodifiableMap(new LinkedHashMap<>(values));
+    }
+}

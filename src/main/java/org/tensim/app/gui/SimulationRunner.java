@@ -1,0 +1,361 @@
+package org.tensim.app.gui;
+
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Supplier;
+import org.tensim.solver.CriticalTimeStep;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.view.Body;
+import org.tensim.view.FrameBuffer;
+import org.tensim.view.ProbeRecorder;
+import org.tensim.view.SceneFactory;
+import org.tensim.view.ViewScene;
+
+/**
+ * Runs a scene's simulations on their own thread. Everything that changes the
+ * model (parameters, integrator, a new scene) is queued and done on this thread
+ * between two steps, so the model is never locked and never changed mid-step.
+ * After every step the {@link FrameBuffer} (for the scene graph) and the
+ * {@link ProbeRecorder} (for the chart) copy what they need.
+ *
+ * <p>When playing, simulated time is paced to wall time (real-time factor 1 at
+ * most) unless pacing is off; a simulation slower than real time runs flat out.
+ * A {@link SimulationDivergedException} pauses the run and is reported; the last
+ * good frame stays on screen.
+ */
+public final class SimulationRunner implements Tuning.Target {
+    /** What the runner reports; called on the simulation thread (hand over to Swing yourself). */
+    public interface Events {
+        /** A new scene (start, reset, tendon change) is running, with its buffers. */
+        void installed(ViewScene scene, FrameBuffer frames, ProbeRecorder probes);
+
+        void diverged(String body, SimulationDivergedException e);
+
+        /** A command failed (e.g. a mesh could not be loaded); the previous scene keeps running. */
+        void failed(String what, RuntimeException e);
+
+        /** A warning from a simulation (time step beyond its critical estimate, projection residual...). */
+        void warning(String message);
+    }
+
+    /** Simulated time between chart samples, s. */
+    static final double PROBE_INTERVAL_S = 0.005;
+    private static final long BATCH_NANOS = 15_000_000L;
+    private static final double MAX_LAG_S = 0.25;
+
+    private final SceneFactory factory;
+    private final Supplier<Settings> settings;
+    private final Events events;
+    private final ConcurrentLinkedQueue<Runnable> commands = new ConcurrentLinkedQueue<>();
+    private final AtomicInteger pendingSteps = new AtomicInteger();
+    private final Thread thread;
+
+    private volatile boolean playing;
+    private volatile boolean paced = true;
+    private volatile boolean stopped;
+    private volatile double dt;
+    private volatile double simTime;
+    private volatile long steps;
+    private volatile double criticalDt = Double.POSITIVE_INFINITY;
+    private volatile long unconvergedProjections;
+    private volatile String divergence;
+
+    private ViewScene scene; // simulation thread only
+    private boolean tensegrityTendon;
+    private boolean criticalStale;
+    private long criticalComputedAt;
+    private long anchorWall;
+    private double anchorSim;
+    private boolean reanchor = true;
+
+    /**
+     * @param factory  makes the scene (on the simulation thread)
+     * @param settings the current tuned values, applied to every new scene
+     * @param events   receives reports
+     */
+    public SimulationRunner(SceneFactory factory, Supplier<Settings> settings, Events events) {
+        this.factory = factory;
+        this.settings = settings;
+        this.events = events;
+        this.dt = settings.get().values().get(Tuning.TIME_STEP);
+        this.tensegrityTendon = settings.get().tensegrityTendon();
+        thread = new Thread(this::loop, "tensim-simulation");
+        thread.setDaemon(true);
+    }
+
+    /** Starts the thread with a first scene (made by the factory, at rest), tuned to the current settings. */
+    public void start(ViewScene first) {
+        install(() -> first);
+        thread.start();
+    }
+
+    /** Stops the thread and waits for it (at most 5 s). */
+    public void stop() {
+        stopped = true;
+        LockSupport.unpark(thread);
+        try {
+            thread.join(5000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    public void play() {
+        reanchor = true;
+        playing = true;
+        LockSupport.unpark(thread);
+    }
+
+    public void pause() {
+        playing = false;
+    }
+
+    public boolean isPlaying() {
+        return playing;
+    }
+
+    /** Makes one step (while paused). */
+    public void stepOnce() {
+        pendingSteps.incrementAndGet();
+        LockSupport.unpark(thread);
+    }
+
+    /** A fresh scene at rest with the current settings; the play state is kept. */
+    public void reset() {
+        rebuild();
+    }
+
+    /** Whether simulated time is paced to wall time. */
+    public void setPaced(boolean p) {
+        reanchor = true;
+        paced = p;
+    }
+
+    public boolean isPaced() {
+        return paced;
+    }
+
+    @Override
+    public void applyParameter(String key, double value) {
+        if (Tuning.TIME_STEP.equals(key)) {
+            dt = value;
+            commands.add(() -> { });
+        } else {
+            commands.add(() -> {
+                if (scene == null) {
+                    return;
+                }
+                if (restarts(scene, key)) {
+                    // Cannot change in a running simulation: a new scene with the value, from rest.
+                    rebuild();
+                } else {
+                    scene.apply(key, value);
+                    updateCriticalStep();
+                }
+            });
+        }
+        LockSupport.unpark(thread);
+    }
+
+    @Override
+    public void applyIntegrator(IntegratorChoice choice) {
+        commands.add(() -> {
+            if (scene != null) {
+                for (Body b : scene.bodies()) {
+                    b.simulation().setIntegrator(choice.create());
+                }
+                updateCriticalStep();
+            }
+        });
+        LockSupport.unpark(thread);
+    }
+
+    @Override
+    public void applyTendonModel(boolean tensegrity) {
+        commands.add(() -> tensegrityTendon = tensegrity);
+        rebuild();
+    }
+
+    private static boolean restarts(ViewScene s, String key) {
+        return s.parameters().stream().anyMatch(p -> p.key().equals(key) && p.restarts());
+    }
+
+    private void rebuild() {
+        install(() -> factory.create(tensegrityTendon, settings.get().values()));
+    }
+
+    private void install(Supplier<ViewScene> source) {
+        commands.add(() -> {
+            ViewScene s = source.get();
+            Settings now = settings.get();
+            IntegratorChoice integrator = IntegratorCatalog.available().stream()
+                    .filter(c -> c.name().equals(now.integrator())).findFirst()
+                    .orElse(IntegratorCatalog.available().get(0));
+            for (Map.Entry<String, Double> e : now.values().entrySet()) {
+                if (!e.getKey().equals(Tuning.TIME_STEP) && !restarts(s, e.getKey())) {
+                    s.apply(e.getKey(), e.getValue());
+                }
+            }
+            List<Body> bodies = s.bodies();
+            for (Body b : bodies) {
+                b.simulation().setIntegrator(integrator.create());
+                b.simulation().setWarningSink(m -> events.warning(b.name() + ": " + m));
+            }
+            FrameBuffer frames = new FrameBuffer(bodies);
+            ProbeRecorder probes = new ProbeRecorder(bodies, PROBE_INTERVAL_S, 1 << 14);
+            Simulation last = bodies.get(bodies.size() - 1).simulation();
+            last.addListener(frames);
+            last.addListener(probes);
+            scene = s;
+            divergence = null;
+            simTime = 0;
+            steps = 0;
+            unconvergedProjections = 0;
+            reanchor = true;
+            criticalStale = true;
+            criticalComputedAt = 0;
+            updateCriticalStep();
+            events.installed(s, frames, probes);
+        });
+        LockSupport.unpark(thread);
+    }
+
+    /** Marks the critical step for recomputation (done in the loop, at most every 0.3 s: a slider drag
+     *  sends many changes, and the estimate's power iteration is not free on a large scene). */
+    private void updateCriticalStep() {
+        criticalStale = true;
+    }
+
+    private void refreshCriticalStep() {
+        long now = System.nanoTime();
+        if (!criticalStale || now - criticalComputedAt < 300_000_000L) {
+            return;
+        }
+        double c = Double.POSITIVE_INFINITY;
+        for (Body b : scene.bodies()) {
+            Simulation s = b.simulation();
+            c = Math.min(c, CriticalTimeStep.estimate(s.state()).forIntegrator(s.integrator()));
+        }
+        criticalDt = c;
+        criticalStale = false;
+        criticalComputedAt = now;
+    }
+
+    private void loop() {
+        while (!stopped) {
+            Runnable c;
+            while ((c = commands.poll()) != null) {
+                try {
+                    c.run();
+                } catch (RuntimeException e) {
+                    events.failed("change not applied", e);
+                }
+            }
+            if (scene != null) {
+                refreshCriticalStep();
+            }
+            if (scene == null || divergence != null) {
+                pendingSteps.set(0);
+                LockSupport.parkNanos(20_000_000L);
+                continue;
+            }
+            int single = pendingSteps.getAndSet(0);
+            if (single > 0) {
+                for (int i = 0; i < single && advance(); i++) {
+                    // one step per request
+                }
+                continue;
+            }
+            if (!playing) {
+                LockSupport.parkNanos(20_000_000L);
+                continue;
+            }
+            runBatch();
+        }
+    }
+
+    /** Steps for up to BATCH_NANOS of wall time, paced, then returns so commands are seen. */
+    private void runBatch() {
+        long now = System.nanoTime();
+        if (reanchor) {
+            anchorWall = now;
+            anchorSim = simTime;
+            reanchor = false;
+        }
+        long end = now + BATCH_NANOS;
+        while (playing && commands.isEmpty() && now < end) {
+            double wallS = (now - anchorWall) * 1e-9;
+            double ahead = (simTime - anchorSim) - wallS;
+            if (paced && ahead >= 0) {
+                LockSupport.parkNanos(Math.min(2_000_000L, (long) (ahead * 1e9) + 100_000L));
+                return;
+            }
+            if (paced && ahead < -MAX_LAG_S) {
+                // Slower than real time: drop the debt rather than racing to catch up.
+                anchorWall = now;
+                anchorSim = simTime;
+            }
+            if (!advance()) {
+                return;
+            }
+            now = System.nanoTime();
+        }
+    }
+
+    /** One step of every body; false (and paused) on divergence. */
+    private boolean advance() {
+        double h = dt;
+        List<Body> bodies = scene.bodies();
+        long unconverged = 0;
+        for (Body b : bodies) {
+            try {
+                b.simulation().step(h);
+            } catch (SimulationDivergedException e) {
+                playing = false;
+                divergence = b.name() + ": " + e.getMessage();
+                events.diverged(b.name(), e);
+                return false;
+            }
+            unconverged += b.simulation().unconvergedProjections();
+        }
+        Simulation last = bodies.get(bodies.size() - 1).simulation();
+        unconvergedProjections = unconverged;
+        simTime = last.time();
+        steps = last.steps();
+        return true;
+    }
+
+    /** Simulated time, s (any thread). */
+    public double simTime() {
+        return simTime;
+    }
+
+    /** Steps made by each body since the scene was built (any thread). */
+    public long steps() {
+        return steps;
+    }
+
+    /** Current time step, s. */
+    public double timeStep() {
+        return dt;
+    }
+
+    /** The critical time step estimate of the current scene for its integrator, s (infinite: none). */
+    public double criticalTimeStep() {
+        return criticalDt;
+    }
+
+    /** Steps whose rigid-link projection missed its tolerance, summed over bodies. */
+    public long unconvergedProjections() {
+        return unconvergedProjections;
+    }
+
+    /** The divergence message, or null while the run is sound. Cleared by a reset. */
+    public String divergence() {
+        return divergence;
+    }
+}

@@ -1,0 +1,107 @@
+package org.tensim.app.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.util.Locale;
+import javax.swing.BorderFactory;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+
+/**
+ * The status line: simulated time, steps per second, real-time factor, frames
+ * per second, and warnings (time step beyond the critical estimate, rigid links
+ * not converging, divergence, refused values). Rates are measured between two
+ * calls of {@link #update}.
+ */
+final class StatusBar extends JPanel {
+    private static final long serialVersionUID = 1L;
+    private final JLabel numbers = new JLabel(" ");
+    private final JLabel warning = new JLabel(" ");
+    private long lastNanos;
+    private long lastSteps;
+    private double lastSim;
+    private long lastFrames;
+    private String message;
+    private long messageUntil;
+
+    StatusBar() {
+        super(new BorderLayout(12, 0));
+        setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
+        numbers.setName("status.numbers");
+        warning.setName("status.warning");
+        warning.setForeground(new Color(190, 60, 0));
+        add(numbers, BorderLayout.WEST);
+        add(warning, BorderLayout.CENTER);
+    }
+
+    /** Shows a message in the warning area for a while (refused value, preset loaded...). */
+    void message(String text, boolean isError) {
+        message = text;
+        messageUntil = System.nanoTime() + 8_000_000_000L;
+        warning.setForeground(isError ? new Color(190, 60, 0) : new Color(20, 110, 40));
+        warning.setText(text);
+        warning.setToolTipText(text);
+    }
+
+    /** Recomputes the rates and the warning from the runner and the view's frame count. */
+    void update(SimulationRunner r, long framesRendered) {
+        long now = System.nanoTime();
+        double wall = (now - lastNanos) * 1e-9;
+        long steps = r.steps();
+        double sim = r.simTime();
+        if (lastNanos != 0 && wall > 0) {
+            double sps = Math.max(0, steps - lastSteps) / wall;
+            double rtf = Math.max(0, sim - lastSim) / wall;
+            double fps = (framesRendered - lastFrames) / wall;
+            String h = org.tensim.view.TunableParameter.format(r.timeStep());
+            if (r.isPlaying()) {
+                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   %,.0f steps/s   |   real-time x%.2f   |   "
+                        + "%.0f fps   |   h = %s s", sim, sps, rtf, fps, h));
+            } else {
+                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   paused (%,d steps)   |   %.0f fps   |   h = %s s",
+                        sim, steps, fps, h));
+            }
+        }
+        lastNanos = now;
+        lastSteps = steps;
+        lastSim = sim;
+        lastFrames = framesRendered;
+        String w = warnings(r);
+        if (w != null) {
+            warning.setForeground(new Color(190, 60, 0));
+            warning.setText(w);
+            warning.setToolTipText(w);
+        } else if (message != null && now < messageUntil) {
+            warning.setText(message);
+        } else {
+            message = null;
+            warning.setText(" ");
+            warning.setToolTipText(null);
+        }
+    }
+
+    /** The standing warnings, or null. */
+    static String warnings(SimulationRunner r) {
+        StringBuilder b = new StringBuilder();
+        if (r.divergence() != null) {
+            b.append("Diverged, stopped: ").append(r.divergence()).append(" Press Reset. ");
+        }
+        double crit = r.criticalTimeStep();
+        if (r.timeStep() > crit) {
+            b.append(String.format(Locale.ROOT, "Time step %s s exceeds the critical estimate %s s for this integrator. ",
+                    org.tensim.view.TunableParameter.format(r.timeStep()), org.tensim.view.TunableParameter.format(crit)));
+        }
+        if (r.unconvergedProjections() > 0) {
+            b.append(r.unconvergedProjections()).append(" steps with rigid links above tolerance. ");
+        }
+        return b.length() == 0 ? null : b.toString().trim();
+    }
+
+    String numbersText() {
+        return numbers.getText();
+    }
+
+    String warningText() {
+        return warning.getText();
+    }
+}

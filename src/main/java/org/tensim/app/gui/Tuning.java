@@ -1,0 +1,232 @@
+package org.tensim.app.gui;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.tensim.view.TunableParameter;
+
+/**
+ * The values the user has tuned, and the one way they reach the simulation.
+ * Each change is validated here (an out-of-range or non-finite value is refused
+ * with a message naming the parameter, and nothing changes), stored, then passed
+ * to the {@link Target} (the simulation runner, which applies it between two
+ * steps). Controls listen for changes so that a loaded preset shows up in them.
+ *
+ * <p>Used from the Swing thread; the target must not block.
+ */
+public final class Tuning {
+    /** Key of the time step, which belongs to the runner rather than to a scene. */
+    public static final String TIME_STEP = "timeStepS";
+
+    /** Where changes go. */
+    public interface Target {
+        void applyParameter(String key, double value);
+
+        void applyIntegrator(IntegratorChoice choice);
+
+        /** A change that needs a new topology: the scene is rebuilt. */
+        void applyTendonModel(boolean tensegrity);
+    }
+
+    private final String scene;
+    private final List<TunableParameter> parameters;
+    private final List<IntegratorChoice> integrators;
+    private final boolean tendonChoice;
+    private final Map<String, Double> values = new LinkedHashMap<>();
+    private final List<Runnable> listeners = new CopyOnWriteArrayList<>();
+    // Read by the simulation thread through snapshot(): volatile, and the map is guarded by itself.
+    private volatile IntegratorChoice integrator;
+    private volatile boolean tensegrityTendon = true;
+    private volatile Target target;
+
+    /**
+     * @param scene         scene name
+     * @param sceneParameters the scene's parameters
+     * @param defaultDtS    the scene's time step, s
+     * @param tendonChoice  whether the tendon model can be switched
+     * @param integrators   the integrator choices, default first
+     */
+    public Tuning(String scene, List<TunableParameter> sceneParameters, double defaultDtS, boolean tendonChoice,
+            List<IntegratorChoice> integrators) {
+        this.scene = scene;
+        List<TunableParameter> all = new ArrayList<>(sceneParameters);
+        all.add(timeStepParameter(defaultDtS));
+        this.parameters = List.copyOf(all);
+        this.integrators = List.copyOf(integrators);
+        this.tendonChoice = tendonChoice;
+        this.integrator = integrators.get(0);
+        for (TunableParameter p : parameters) {
+            if (values.put(p.key(), p.defaultValue()) != null) {
+                throw new IllegalArgumentException("parameter key '" + p.key() + "' appears twice");
+            }
+        }
+    }
+
+    /** The time step parameter, s, log scale from 10 us to 50 ms, defaulting to the scene's. */
+    public static TunableParameter timeStepParameter(double defaultDtS) {
+        double min = 1e-5;
+        double max = 0.05;
+        return TunableParameter.log(TIME_STEP, "Time step", "s", min, max, Math.max(min, Math.min(max, defaultDtS)),
+                "Integration step h. Smaller is more accurate and stable but slower; the status bar warns "
+                        + "above the critical estimate.");
+    }
+
+    /** Sets where changes go (the simulation runner). */
+    public void bind(Target t) {
+        target = t;
+    }
+
+    public String scene() {
+        return scene;
+    }
+
+    /** All parameters, the scene's then the time step. */
+    public List<TunableParameter> parameters() {
+        return parameters;
+    }
+
+    public TunableParameter parameter(String key) {
+        for (TunableParameter p : parameters) {
+            if (p.key().equals(key)) {
+                return p;
+            }
+        }
+        throw new IllegalArgumentException("scene '" + scene + "' has no parameter '" + key + "'; known: " + keys());
+    }
+
+    /** Parameter keys, in order. */
+    public List<String> keys() {
+        return List.copyOf(values.keySet());
+    }
+
+    public List<IntegratorChoice> integrators() {
+        return integrators;
+    }
+
+    public boolean hasTendonChoice() {
+        return tendonChoice;
+    }
+
+    public double get(String key) {
+        parameter(key);
+        synchronized (values) {
+            return values.get(key);
+        }
+    }
+
+    /**
+     * Validates and applies one value.
+     *
+     * @throws IllegalArgumentException naming the parameter, value and range; nothing changes then
+     */
+    public void set(String key, double value) {
+        parameter(key).validate(value, null);
+        synchronized (values) {
+            values.put(key, value);
+        }
+        if (target != null) {
+            target.applyParameter(key, value);
+        }
+        fire();
+    }
+
+    public IntegratorChoice integrator() {
+        return integrator;
+    }
+
+    /** Selects an integrator by name; refuses an unknown one, naming the known ones. */
+    public void setIntegrator(String name) {
+        IntegratorChoice c = integratorNamed(name, null);
+        integrator = c;
+        if (target != null) {
+            target.applyIntegrator(c);
+        }
+        fire();
+    }
+
+    IntegratorChoice integratorNamed(String name, String source) {
+        for (IntegratorChoice c : integrators) {
+            if (c.name().equals(name)) {
+                return c;
+            }
+        }
+        throw new IllegalArgumentException((source == null ? "" : source + ": ") + "integrator '" + name
+                + "' is not available; expected one of " + integrators.stream().map(IntegratorChoice::name).toList());
+    }
+
+    public boolean tensegrityTendon() {
+        return tensegrityTendon;
+    }
+
+    /** Switches the tendon model; the scene is rebuilt (a new topology), so the simulation restarts. */
+    public void setTensegrityTendon(boolean tensegrity) {
+        if (tensegrity == tensegrityTendon) {
+            return;
+        }
+        tensegrityTendon = tensegrity;
+        if (target != null && tendonChoice) {
+            target.applyTendonModel(tensegrity);
+        }
+        fire();
+    }
+
+    /** The current values as a settings record. */
+    public Settings snapshot() {
+        synchronized (values) {
+            return new Settings(scene, integrator.name(), tensegrityTendon, values);
+        }
+    }
+
+    /**
+     * Applies a whole settings record after checking all of it: if any value is
+     * refused, nothing changes.
+     */
+    public void apply(Settings s, String source) {
+        validate(s, source);
+        // Checked: now apply, tendon first (it rebuilds the scene, which then takes the values below).
+        if (tendonChoice) {
+            setTensegrityTendon(s.tensegrityTendon());
+        }
+        if (!integrator.name().equals(s.integrator())) {
+            setIntegrator(s.integrator());
+        }
+        for (Map.Entry<String, Double> e : s.values().entrySet()) {
+            if (e.getValue() != get(e.getKey())) {
+                set(e.getKey(), e.getValue());
+            }
+        }
+    }
+
+    /**
+     * Checks a settings record against this scene without changing anything.
+     *
+     * @throws IllegalArgumentException naming the source, the field, the value and what was expected
+     */
+    public void validate(Settings s, String source) {
+        if (!scene.equals(s.scene())) {
+            throw new IllegalArgumentException(source + ": field 'scene' is '" + s.scene() + "' but this window shows '"
+                    + scene + "'");
+        }
+        integratorNamed(s.integrator(), source + ": field 'integrator'");
+        for (Map.Entry<String, Double> e : s.values().entrySet()) {
+            if (!values.containsKey(e.getKey())) {
+                throw new IllegalArgumentException(source + ": field 'parameters." + e.getKey()
+                        + "' is not a parameter of scene '" + scene + "'; known: " + keys());
+            }
+            parameter(e.getKey()).validate(e.getValue(), source + ": field 'parameters." + e.getKey() + "'");
+        }
+    }
+
+    /** Called after every change (on the thread that made it). */
+    public void addListener(Runnable r) {
+        listeners.add(r);
+    }
+
+    private void fire() {
+        for (Runnable r : listeners) {
+            r.run();
+        }
+    }
+}

@@ -1,0 +1,161 @@
+package org.tensim.experiment.diaphragm;
+
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.StepListener;
+import org.tensim.solver.SystemState;
+
+/**
+ * Measures one breathing cycle of a running diaphragm (a {@link StepListener}):
+ * the dome apex's superior-inferior travel, and extents (max - min of node
+ * coordinates: transverse x, antero-posterior y, vertical z) at end-expiration (the
+ * cycle's start) and at end-inspiration (start + Ti), of two node sets: the
+ * attached nodes (the diaphragm's origins on ribs, cartilage, sternum and spine:
+ * the thorax's dimensions at the diaphragm's level, which the paper's claim is
+ * about) and all diaphragm nodes (the organ's own extents). The measured cycle is the last complete one of the run
+ * ({@link #measuredCycleStart}), so that earlier cycles serve as warm-up.
+ */
+public final class BreathingMetrics implements StepListener {
+    private final DiaphragmScene scene;
+    private final double start;
+    private final double inspirationEnd;
+    private final double end;
+    private final int nodes;
+    private final int apex;
+    private double[] extentsExp;
+    private double[] extentsInsp;
+    private double[] originsExp;
+    private double[] originsInsp;
+    private final boolean[] origin;
+    private double apexMin = Double.POSITIVE_INFINITY;
+    private double apexMax = Double.NEGATIVE_INFINITY;
+    private double apexAtExp = Double.NaN;
+    private double apexAtInsp = Double.NaN;
+
+    /**
+     * @param runSeconds length of the run, s (at least the inspiration time Ti)
+     */
+    public BreathingMetrics(DiaphragmScene scene, double runSeconds) {
+        this.scene = scene;
+        double period = scene.cycle().periodS();
+        if (runSeconds < scene.cycle().inspirationS()) {
+            throw new IllegalArgumentException("run of " + runSeconds + " s is shorter than one inspiration ("
+                    + scene.cycle().inspirationS() + " s); expected at least that to measure the breathing");
+        }
+        this.start = measuredCycleStart(runSeconds, period);
+        this.inspirationEnd = start + scene.cycle().inspirationS();
+        this.end = start + period;
+        this.nodes = scene.diaphragmNodes();
+        this.apex = scene.apexNode();
+        this.origin = new boolean[nodes];
+        for (int v = 0; v < nodes; v++) {
+            origin[v] = scene.isAttached(v);
+        }
+    }
+
+    /** Start of the last complete cycle in [0, runSeconds] (0 when there is none), s. */
+    public static double measuredCycleStart(double runSeconds, double periodS) {
+        return Math.max(0, (Math.floor(runSeconds / periodS + 1e-9) - 1) * periodS);
+    }
+
+    /** Call once before the first step (captures the state at t = 0 when the cycle starts there). */
+    public void begin(Simulation sim) {
+        afterStep(sim);
+    }
+
+    @Override
+    public void afterStep(Simulation sim) {
+        double t = sim.time();
+        SystemState s = sim.state();
+        if (extentsExp == null && t >= start - 1e-12) {
+            extentsExp = extents(s, null);
+            originsExp = extents(s, origin);
+            apexAtExp = s.x[3 * apex + 2];
+        }
+        if (extentsInsp == null && t >= inspirationEnd - 1e-12) {
+            extentsInsp = extents(s, null);
+            originsInsp = extents(s, origin);
+            apexAtInsp = s.x[3 * apex + 2];
+        }
+        if (t >= start - 1e-12 && t <= end + 1e-12) {
+            double z = s.x[3 * apex + 2];
+            apexMin = Math.min(apexMin, z);
+            apexMax = Math.max(apexMax, z);
+        }
+    }
+
+    private double[] extents(SystemState s, boolean[] only) {
+        double[] e = new double[3];
+        for (int a = 0; a < 3; a++) {
+            double lo = Double.POSITIVE_INFINITY;
+            double hi = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < nodes; i++) {
+                if (only != null && !only[i]) {
+                    continue;
+                }
+                double v = s.x[3 * i + a];
+                lo = Math.min(lo, v);
+                hi = Math.max(hi, v);
+            }
+            e[a] = hi - lo;
+        }
+        return e;
+    }
+
+    public double measuredCycleStart() {
+        return start;
+    }
+
+    public double inspirationEnd() {
+        return inspirationEnd;
+    }
+
+    /** Whether end-inspiration of the measured cycle was reached. */
+    public boolean complete() {
+        return extentsInsp != null;
+    }
+
+    /** Superior-inferior travel of the dome apex over the measured cycle, m. */
+    public double domeExcursionM() {
+        return apexMax - apexMin;
+    }
+
+    /** Apex z at end-inspiration minus at end-expiration, m (negative: the dome descends). */
+    public double apexDescentM() {
+        return apexAtInsp - apexAtExp;
+    }
+
+    /** Change of the transverse (x) extent of the attached nodes (origins), end-expiration to end-inspiration, m. */
+    public double transverseChangeM() {
+        return originsInsp[0] - originsExp[0];
+    }
+
+    /** Change of the antero-posterior (y) extent of the attached nodes (origins), m. */
+    public double apChangeM() {
+        return originsInsp[1] - originsExp[1];
+    }
+
+    /** Change of the transverse extent of all diaphragm nodes, m. */
+    public double transverseChangeAllM() {
+        return extentsInsp[0] - extentsExp[0];
+    }
+
+    /** Change of the antero-posterior extent of all diaphragm nodes, m. */
+    public double apChangeAllM() {
+        return extentsInsp[1] - extentsExp[1];
+    }
+
+    /** Change of the diaphragm's own vertical (z) extent, m (negative when the domes flatten). */
+    public double verticalChangeM() {
+        return extentsInsp[2] - extentsExp[2];
+    }
+
+    /** Extents {x, y, z} at end-expiration, m. */
+    public double[] extentsAtExpiration() {
+        return extentsExp.clone();
+    }
+
+    public DiaphragmScene scene() {
+        return scene;
+    }
+}

@@ -1,0 +1,314 @@
+package org.tensim.experiment.diaphragm;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.knowm.xchart.XYChart;
+import org.tensim.io.Charts;
+import org.tensim.io.CsvWriter;
+import org.tensim.io.Json;
+import org.tensim.io.mesh.VtkSeriesWriter;
+import org.tensim.model.Check;
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
+
+/**
+ * Runs breathing cycles of a built diaphragm headless and writes, into one folder:
+ * <ul>
+ * <li>{@code sagittal.png}, {@code axial.png}: displacement vectors x{@code vectorScale}
+ * (default 100, as the paper's Fig. 5) over a short interval at mid-inspiration;
+ * {@code sagittal-cycle.png}, {@code axial-cycle.png}: end-expiration to
+ * end-inspiration, x1;</li>
+ * <li>{@code displacements.csv}: every diaphragm node's position and displacement
+ * at the chosen times; {@code probe.csv}: the apex and the extents against time;</li>
+ * <li>{@code vtk/diaphragm_NNNN.vtk} and {@code vtk/diaphragm.pvd} (ParaView);</li>
+ * <li>{@code breathing.png} and {@code summary.json}.</li>
+ * </ul>
+ * Files are flushed as the run goes; when it diverges the summary says so and what
+ * was written is kept.
+ */
+public final class DiaphragmReport {
+    /**
+     * Run settings.
+     *
+     * @param seconds         simulated time, s (at least one inspiration)
+     * @param dtS             time step, s; 0 for the scene's recommended RK2 step
+     * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
+     * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
+     * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
+     * @param csvTimes        times of the displacement CSV, s; null for end-inspiration and the end of the
+     *                        measured cycle
+     */
+    public record Options(double seconds, double dtS, int vtkPerCycle, double vectorScale, double vectorIntervalS,
+            double[] csvTimes) {
+        public Options {
+            Check.positive("simulated time", "s", seconds);
+            Check.nonNegative("time step", "s", dtS);
+            Check.atLeast("VTK frames per cycle", vtkPerCycle, 0);
+            Check.positive("vector scale", "", vectorScale);
+            Check.positive("vector interval", "s", vectorIntervalS);
+        }
+
+        public static Options defaults(double seconds) {
+            return new Options(seconds, 0, 8, 100, 0.01, null);
+        }
+    }
+
+    private DiaphragmReport() {
+    }
+
+    /** Runs and writes everything to {@code out}; returns the summary (also in summary.json). */
+    public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Path out, PrintStream log)
+            throws IOException {
+        DiaphragmScene scene = built.scene();
+        Files.createDirectories(out);
+        Simulation sim = scene.newSimulation();
+        double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
+        BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
+        double start = metrics.measuredCycleStart();
+        double ti = scene.cycle().inspirationS();
+        double period = scene.cycle().periodS();
+        int simulated = scene.simulatedNodes();
+        int nd = scene.diaphragmNodes();
+        int[] labels = scene.labels();
+
+        // Instants whose positions are kept: the vector pair at mid-inspiration, end-exp/insp, CSV times.
+        double vecA = start + 0.5 * ti - 0.5 * o.vectorIntervalS();
+        double vecB = vecA + o.vectorIntervalS();
+        double[] csvTimes = o.csvTimes() != null ? o.csvTimes().clone()
+                : new double[] {start + ti, Math.min(o.seconds(), start + period)};
+        for (double t : csvTimes) {
+            if (!(t >= 0 && t <= o.seconds())) {
+                throw new IllegalArgumentException("CSV time " + t + " s is outside the run [0, " + o.seconds()
+                        + "] s");
+            }
+        }
+        List<Double> wanted = new ArrayList<>(List.of(vecA, vecB, start, start + ti));
+        for (double t : csvTimes) {
+            wanted.add(t);
+        }
+        double[][] kept = new double[wanted.size()][];
+        double[] keptTime = new double[wanted.size()];
+
+        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
+                scene.allTriangles(), java.util.Arrays.copyOf(labels, simulated), "tissue") : null;
+        double vtkEvery = o.vtkPerCycle() > 0 ? period / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
+        double nextVtk = 0;
+        double[] rest = java.util.Arrays.copyOf(sim.state().x0, 3 * simulated);
+
+        Map<String, Object> summary = new LinkedHashMap<>();
+        long stepNanos = 0;
+        // CPU time of this thread as well as wall time: on a shared machine the wall time also
+        // counts the time the thread waited for a core.
+        java.lang.management.ThreadMXBean cpu = java.lang.management.ManagementFactory.getThreadMXBean();
+        boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
+        long cpuNanos = 0;
+        String diverged = null;
+        int apex = scene.apexNode();
+        try (CsvWriter probe = new CsvWriter(out.resolve("probe.csv"), List.of("t_s", "breathing_level",
+                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20)) {
+            double probeEvery = 0.005;
+            double nextProbe = 0;
+            metrics.begin(sim);
+            while (true) {
+                double t = sim.time();
+                for (int i = 0; i < wanted.size(); i++) {
+                    if (kept[i] == null && t >= wanted.get(i) - 0.5 * dt) {
+                        kept[i] = java.util.Arrays.copyOf(sim.state().x, 3 * simulated);
+                        keptTime[i] = t;
+                    }
+                }
+                if (vtk != null && t >= nextVtk - 0.5 * dt) {
+                    vtk.frame(t, java.util.Arrays.copyOf(sim.state().x, 3 * simulated), rest);
+                    nextVtk += vtkEvery;
+                }
+                if (t >= nextProbe - 0.5 * dt) {
+                    double[] e = extents(sim.state().x, nd);
+                    probe.row(t, scene.cycle().level(t), 1e3 * (sim.state().x[3 * apex + 2] - rest[3 * apex + 2]),
+                            1e3 * e[0], 1e3 * e[1], 1e3 * e[2]);
+                    nextProbe += probeEvery;
+                }
+                if (t >= o.seconds() - 0.5 * dt) {
+                    break;
+                }
+                long c0 = cpuTimed ? cpu.getCurrentThreadCpuTime() : 0;
+                long t0 = System.nanoTime();
+                sim.step(dt);
+                stepNanos += System.nanoTime() - t0;
+                cpuNanos += cpuTimed ? cpu.getCurrentThreadCpuTime() - c0 : 0;
+                metrics.afterStep(sim);
+            }
+        } catch (SimulationDivergedException e) {
+            diverged = e.getMessage();
+        }
+        double wall = stepNanos / 1e9;
+        double cpuS = cpuTimed ? cpuNanos / 1e9 : Double.NaN;
+        summary.put("source", built.source());
+        summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
+        summary.put("nodes", scene.topology().nodeCount());
+        summary.put("diaphragm_nodes", nd);
+        summary.put("anchor_nodes", scene.anchorNodes());
+        summary.put("springs", scene.topology().springs().size());
+        summary.put("rigid_links", scene.topology().rigidLinks().size());
+        summary.put("attached_nodes", scene.attachedNodes());
+        summary.put("attached_to_ribs", scene.attachedToRibs());
+        summary.put("attached_to_cartilage_or_sternum", scene.attachedToCartilage());
+        summary.put("attached_to_spine", scene.attachedToSpine());
+        summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
+        summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
+        if (metrics.complete()) {
+            summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
+            summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
+            summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
+            summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
+            summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
+            summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
+            summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
+            summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        }
+        summary.put("simulated_s", round(sim.time(), 6));
+        summary.put("measured_cycle_start_s", start);
+        summary.put("dt_s", dt);
+        summary.put("dt_rule", "RK2 stable step for w_max (Gershgorin) and the Rayleigh damping, x"
+                + org.tensim.scene.diaphragm.Rk2Step.SAFETY);
+        summary.put("omega_max_bound_rad_s", round(scene.omegaMaxBound(), 1));
+        summary.put("steps", sim.steps());
+        summary.put("steps_per_s", round(sim.steps() / Math.max(wall, 1e-9), 1));
+        summary.put("realtime_factor", round(sim.time() / Math.max(wall, 1e-9), 4));
+        summary.put("steps_per_cpu_s", round(sim.steps() / cpuS, 1));
+        summary.put("realtime_factor_cpu", round(sim.time() / cpuS, 4));
+        summary.put("load_average", round(java.lang.management.ManagementFactory.getOperatingSystemMXBean()
+                .getSystemLoadAverage(), 2));
+        summary.put("rib_amplitude", scene.controls().ribAmplitude());
+        summary.put("muscle_force_pa", scene.controls().muscleAmplitudePa());
+        summary.put("breathing_period_s", period);
+        summary.put("unconverged_projections", sim.unconvergedProjections());
+        if (built.meshReport() != null) {
+            summary.put("mesh", built.meshReport().toMap());
+        }
+        if (diverged != null) {
+            summary.put("diverged", diverged);
+        }
+
+        writeDisplacements(out.resolve("displacements.csv"), csvTimes, wanted, kept, keptTime, rest, labels, nd);
+        figures(out, scene, kept, rest, o);
+        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
+        Json.write(out.resolve("summary.json"), summary);
+        if (diverged != null) {
+            throw new IllegalStateException(diverged + " (outputs so far are in " + out + ")");
+        }
+        if (log != null) {
+            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
+                    + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
+        }
+        return summary;
+    }
+
+    private static void writeDisplacements(Path file, double[] csvTimes, List<Double> wanted, double[][] kept,
+            double[] keptTime, double[] rest, int[] labels, int nd) throws IOException {
+        try (CsvWriter w = new CsvWriter(file, List.of("t_s", "node", "tissue", "x_m", "y_m", "z_m", "ux_m", "uy_m",
+                "uz_m"), 1000)) {
+            for (int c = 0; c < csvTimes.length; c++) {
+                int idx = 4 + c;
+                if (kept[idx] == null) {
+                    continue; // the run stopped before this time
+                }
+                double[] x = kept[idx];
+                for (int i = 0; i < nd; i++) {
+                    w.row(keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], x[3 * i] - rest[3 * i],
+                            x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
+                }
+            }
+        }
+    }
+
+    private static void figures(Path out, DiaphragmScene scene, double[][] kept, double[] rest, Options o)
+            throws IOException {
+        int nd = scene.diaphragmNodes();
+        int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
+        int apex = scene.apexNode();
+        double xPlane = rest[3 * apex];
+        double zPlane = rest[3 * apex + 2] - 0.04;
+        double band = 2 * meanEdge(scene);
+        if (kept[0] != null && kept[1] != null) {
+            SliceFigures.write(out.resolve("sagittal.png"), String.format(java.util.Locale.ROOT,
+                    "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
+                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
+                    o.vectorScale());
+            SliceFigures.write(out.resolve("axial.png"), String.format(java.util.Locale.ROOT,
+                    "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
+                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
+                    o.vectorScale());
+        }
+        if (kept[2] != null && kept[3] != null) {
+            SliceFigures.write(out.resolve("sagittal-cycle.png"), String.format(java.util.Locale.ROOT,
+                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
+                    kept[3], upper, 0, xPlane, band, 1);
+            SliceFigures.write(out.resolve("axial-cycle.png"), String.format(java.util.Locale.ROOT,
+                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
+                    upper, 2, zPlane, band, 1);
+        }
+    }
+
+    static double meanEdge(DiaphragmScene scene) {
+        var m = scene.surfaces().mesh();
+        double s = 0;
+        int n = 0;
+        for (int t = 0; t < m.triangleCount(); t += 7) {
+            s += Math.sqrt(2 * m.area(t));
+            n++;
+        }
+        return s / Math.max(n, 1);
+    }
+
+    private static void breathingChart(Path png, Path probeCsv) throws IOException {
+        List<String> lines = Files.readAllLines(probeCsv);
+        int n = lines.size() - 1;
+        if (n < 2) {
+            return;
+        }
+        double[] t = new double[n];
+        double[] dz = new double[n];
+        double[] ex = new double[n];
+        double[] ey = new double[n];
+        for (int i = 0; i < n; i++) {
+            String[] f = lines.get(i + 1).split(",");
+            t[i] = Double.parseDouble(f[0]);
+            dz[i] = Double.parseDouble(f[2]);
+            ex[i] = Double.parseDouble(f[3]) - Double.parseDouble(lines.get(1).split(",")[3]);
+            ey[i] = Double.parseDouble(f[4]) - Double.parseDouble(lines.get(1).split(",")[4]);
+        }
+        XYChart c = Charts.lineChart("Breathing: dome apex and diaphragm extents (all nodes)", "t, s", "mm", 900,
+                500);
+        c.getStyler().setXAxisDecimalPattern("0.0");
+        Charts.addLine(c, "apex z displacement", t, dz);
+        Charts.addLine(c, "transverse extent change", t, ex);
+        Charts.addLine(c, "antero-posterior extent change", t, ey);
+        Charts.savePng(c, png);
+    }
+
+    private static double[] extents(double[] x, int n) {
+        double[] e = new double[3];
+        for (int a = 0; a < 3; a++) {
+            double lo = Double.POSITIVE_INFINITY;
+            double hi = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < n; i++) {
+                lo = Math.min(lo, x[3 * i + a]);
+                hi = Math.max(hi, x[3 * i + a]);
+            }
+            e[a] = hi - lo;
+        }
+        return e;
+    }
+
+    static double round(double v, int digits) {
+        double f = Math.pow(10, digits);
+        return Math.round(v * f) / f;
+    }
+}

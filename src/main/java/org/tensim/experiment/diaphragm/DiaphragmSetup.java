@@ -1,0 +1,99 @@
+package org.tensim.experiment.diaphragm;
+
+import org.tensim.io.ProjectFolder;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import org.tensim.io.BoxesJson;
+import org.tensim.io.mesh.MeshCleaner;
+import org.tensim.io.mesh.MeshFormatException;
+import org.tensim.io.mesh.MeshLoader;
+import org.tensim.io.mesh.MeshReport;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.diaphragm.BreathingCycle;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DoubleDomeGenerator;
+import org.tensim.scene.diaphragm.TwoSurfaces;
+
+/**
+ * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two
+ * boundary surfaces (a thin closed shell is split; a single surface is offset by
+ * the thickness), reads the rib boxes, builds the scene. Shared by the command,
+ * the tests and the resolution study.
+ */
+public final class DiaphragmSetup {
+    /** The project's default mesh, relative to the project folder. */
+    public static final Path DEFAULT_MESH = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
+    /** The BodyParts3D rib and sternum boxes, relative to the project folder. */
+    public static final Path DEFAULT_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+            "rib-sternum-bounds-mm.json");
+    /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
+    public static final double DEFAULT_MUSCLE_PA = 2600;
+
+    /** How the two boundary surfaces were obtained. */
+    public enum SurfaceMode { SHELL, OFFSET }
+
+    /**
+     * A built scene and where it came from.
+     *
+     * @param meshReport what the mesh cleaner found (null for a generated mesh)
+     */
+    public record Built(DiaphragmScene scene, MeshReport meshReport, SurfaceMode mode, String source) {
+    }
+
+    private DiaphragmSetup() {
+    }
+
+    /**
+     * Reads a mesh and makes its two surfaces: split when it is a thin closed shell
+     * (both sides found, thickness under 3 % of the size), else offset by
+     * {@code offsetThicknessM}.
+     */
+    public static Built load(Path meshFile, MeshUnits units, double offsetThicknessM, Path boxesFile,
+            DiaphragmParameters p, BreathingCycle cycle, DiaphragmControls controls)
+            throws IOException, MeshFormatException {
+        MeshCleaner.Result r = MeshLoader.load(meshFile, units);
+        TriangleMesh m = r.mesh();
+        TwoSurfaces s;
+        SurfaceMode mode;
+        TwoSurfaces split = TwoSurfaces.split(m);
+        double[] b = m.bounds();
+        double size = Math.sqrt(sq(b[3] - b[0]) + sq(b[4] - b[1]) + sq(b[5] - b[2]));
+        boolean shell = split.lowerCount() > 0.3 * split.upperCount() && split.upperCount() > 0.3 * split.lowerCount()
+                && split.thicknessM() < 0.03 * size;
+        if (shell) {
+            s = split;
+            mode = SurfaceMode.SHELL;
+        } else {
+            s = TwoSurfaces.offset(m, offsetThicknessM);
+            mode = SurfaceMode.OFFSET;
+        }
+        return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, null), r.report(), mode,
+                meshFile.toString());
+    }
+
+    /** The generated double dome at a resolution (rings per face), split into its two faces. */
+    public static Built generated(int rings, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls) throws IOException {
+        TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
+        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, null), null,
+                SurfaceMode.SHELL, "generated double dome, " + rings + " rings");
+    }
+
+    /** Reads the rib and sternum boxes (millimetres), with a message that says where to find them. */
+    public static Map<String, double[]> boxes(Path file) throws IOException {
+        if (!Files.isRegularFile(file)) {
+            throw new IOException(file + ": rib and sternum boxes not found; expected BodyParts3D's"
+                    + " rib-sternum-bounds-mm.json (give its path with --boxes)");
+        }
+        return BoxesJson.read(file, 1e-3);
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+}

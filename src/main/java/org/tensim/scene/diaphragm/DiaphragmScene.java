@@ -1,0 +1,276 @@
+package org.tensim.scene.diaphragm;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
+import org.tensim.solver.Simulation;
+
+/**
+ * The paper's diaphragm (section 3.2), built from two boundary surfaces: muscle as a
+ * mass-spring system, the central tendon as tensegrity (rigid links across the
+ * thickness), attached to rigid ribs moved by finite-helical-axis laws and to a
+ * very stiff sternum-cartilage mass-spring, and contracted by vertical action lines.
+ * One call ({@link #build}) returns everything a run, a test or a viewer needs.
+ *
+ * <p>Node ids: {@code 0 .. diaphragmNodes()-1} are the mesh's vertices, in mesh
+ * order; the sternum and rib nodes follow.
+ *
+ * <p><b>Mass.</b> {@code m_i = rho A_i t / 2}: A_i is the vertex's third of the
+ * area of its triangles, t the shell thickness (each face carries half). A_i is at
+ * least 0.3 times the median's: vertices of sliver triangles would otherwise carry
+ * almost no mass and alone set the stable step ({@link #addedMassKg()} says how much
+ * this adds).
+ *
+ * <p><b>Springs.</b> Every mesh edge is a spring of stiffness
+ * {@code k_e = E (t / 2) sum(A_T) / |e|^2} over the triangles T on the edge (Van
+ * Gelder 1998's membrane formula; for an equilateral triangle it gives
+ * {@code sqrt(3)/4 E h} per triangle, Lloyd, Szekely and Harders 2007), E of the
+ * muscle or, when both ends are tendon, of the tendon (in-plane: the tendon's fibres
+ * run in the surface). Across the thickness
+ * (computed at start, as the paper does) each upper node u is joined to its nearest
+ * lower node and to the nearest lower nodes of its upper neighbours (diagonals that
+ * resist the faces sliding over each other); these n_u springs share the node's
+ * column, {@code k = E_muscle A_u / (n_u L)} (in the tendon too, whose thickness the
+ * rigid links hold).
+ *
+ * <p><b>Tendon and rigid links.</b> Nodes on the side of the plane that its normal
+ * points to are tendon. Heuristic for the rigid links: candidate pairs are each
+ * tendon node with its nearest node on the other surface (also tendon); they are
+ * taken shortest first, each node at most once, and only when their length is
+ * 0.3 to 2.5 times the thickness. Each node therefore carries at most one rigid
+ * link: the struts are disjoint, which is the tensegrity principle ("compression
+ * discontinuous", paper section 2.1), and it makes the projection exact in a single
+ * Gauss-Seidel sweep. A spring along a rigid link is left out.
+ *
+ * <p><b>Damping.</b> Axial damping {@code c = beta k} on every spring, with
+ * {@code beta = 2 zeta_high / w_max}, gives the highest mode the damping ratio
+ * zeta_high (RK2 needs damping, PHYSICS.md); global viscous damping
+ * {@code c = alpha m_mean} stands for the surrounding organs and damps the slow modes.
+ */
+public final class DiaphragmScene {
+    /** Node labels for viewers and VTK output. */
+    public static final int MUSCLE = 0;
+    public static final int TENDON = 1;
+    public static final int RIB = 2;
+    public static final int STERNUM_CARTILAGE = 3;
+
+    private final Topology topology;
+    private final TwoSurfaces surfaces;
+    private final int[] labels;
+    private final RibCage cage;
+    private final int apex;
+    private final DiaphragmControls controls;
+    private final BreathingCycle cycle;
+    private final ActionLines actionLines;
+    private final int attachedToRibs;
+    private final int attachedToCartilage;
+    private final int attachedToSpine;
+    private final boolean[] attached;
+    private final double omegaMax;
+    private final double timeStep;
+    private final double tendonAreaFraction;
+    private final int firstAnchor;
+    private final double addedMass;
+
+    private DiaphragmScene(DiaphragmSceneBuilder b) {
+        this.topology = b.t;
+        this.surfaces = b.surfaces;
+        this.labels = b.labels;
+        this.cage = b.cage;
+        this.apex = b.apex;
+        this.controls = b.controls;
+        this.cycle = b.cycle;
+        this.actionLines = b.lines;
+        this.attachedToRibs = b.attachedRibs;
+        this.attachedToCartilage = b.attachedCartilage;
+        this.attachedToSpine = b.attachedSpine;
+        this.attached = b.attached;
+        this.omegaMax = b.omegaMax;
+        this.timeStep = b.dt;
+        this.tendonAreaFraction = b.tendonFraction;
+        this.firstAnchor = b.firstAnchor;
+        this.addedMass = b.addedMass;
+    }
+
+    /**
+     * Builds the scene.
+     *
+     * @param surfaces the diaphragm's two boundary surfaces (metres)
+     * @param boxes    rib and sternum boxes, metres (see {@link RibCage})
+     * @param lines    action lines; null for the default (see {@link #defaultActionLines})
+     */
+    public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines) {
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
+        b.nodes();
+        b.tendon();
+        b.meshSprings();
+        b.rigidLinks();
+        b.thicknessSprings();
+        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+        b.attach();
+        b.muscle(lines == null ? defaultActionLines(surfaces) : lines);
+        b.support();
+        b.damping();
+        return new DiaphragmScene(b);
+    }
+
+    /**
+     * Two action lines through the highest points of the right and left halves of the
+     * upper surface (the domes), each with a radius of action of 0.3 times the
+     * mesh's transverse width.
+     */
+    public static List<ActionLines.Line> defaultActionLines(TwoSurfaces s) {
+        TriangleMesh m = s.mesh();
+        double[] bounds = m.bounds();
+        double cx = 0.5 * (bounds[0] + bounds[3]);
+        double radius = 0.3 * (bounds[3] - bounds[0]);
+        int[] top = {-1, -1};
+        for (int v = 0; v < m.vertexCount(); v++) {
+            if (!s.isUpper(v)) {
+                continue;
+            }
+            int side = m.coord(v, 0) < cx ? 0 : 1;
+            if (top[side] < 0 || m.coord(v, 2) > m.coord(top[side], 2)) {
+                top[side] = v;
+            }
+        }
+        List<ActionLines.Line> l = new ArrayList<>();
+        for (int v : top) {
+            if (v >= 0) {
+                l.add(new ActionLines.Line(m.coord(v, 0), m.coord(v, 1), radius));
+            }
+        }
+        return l;
+    }
+
+    /** A new simulation of this scene with the paper's RK2 integrator, at rest at t = 0. */
+    public Simulation newSimulation() {
+        Simulation sim = Simulation.of(topology);
+        // Disjoint links: one sweep is exact; a tolerance still guards the general case.
+        sim.projection().setTolerance(1e-9).setMaxIterations(50);
+        return sim;
+    }
+
+    public Topology topology() {
+        return topology;
+    }
+
+    public TwoSurfaces surfaces() {
+        return surfaces;
+    }
+
+    /** Number of diaphragm nodes (the mesh's vertices: node ids 0 .. n-1). */
+    public int diaphragmNodes() {
+        return surfaces.mesh().vertexCount();
+    }
+
+    /** Triangles of the upper surface, as node ids (3 per triangle), for a viewer. */
+    public int[] upperTriangles() {
+        int[] ut = surfaces.upperTriangles();
+        int[] out = new int[3 * ut.length];
+        for (int i = 0; i < ut.length; i++) {
+            for (int k = 0; k < 3; k++) {
+                out[3 * i + k] = surfaces.mesh().corner(ut[i], k);
+            }
+        }
+        return out;
+    }
+
+    /** All mesh triangles (both faces), as node ids. */
+    public int[] allTriangles() {
+        return surfaces.mesh().triangles();
+    }
+
+    /**
+     * Nodes {@code 0 .. simulatedNodes()-1} are the diaphragm and the cage; the fixed anchors of the
+     * abdominal support follow (they never move and are left out of outputs).
+     */
+    public int simulatedNodes() {
+        return firstAnchor;
+    }
+
+    /** Fixed anchor nodes of the abdominal support. */
+    public int anchorNodes() {
+        return topology.nodeCount() - firstAnchor;
+    }
+
+    /**
+     * Label per node, for nodes {@code 0 .. simulatedNodes()-1}: {@link #MUSCLE}, {@link #TENDON},
+     * {@link #RIB} (ribs and spine), {@link #STERNUM_CARTILAGE}.
+     */
+    public int[] labels() {
+        return labels.clone();
+    }
+
+    public boolean isTendon(int node) {
+        return labels[node] == TENDON;
+    }
+
+    public RibCage cage() {
+        return cage;
+    }
+
+    /** The dome apex probe: the highest upper-surface node at rest that is not attached. */
+    public int apexNode() {
+        return apex;
+    }
+
+    public DiaphragmControls controls() {
+        return controls;
+    }
+
+    public BreathingCycle cycle() {
+        return cycle;
+    }
+
+    public ActionLines actionLines() {
+        return actionLines;
+    }
+
+    /** Diaphragm nodes attached to ribs (driven rigidly with their rib). */
+    public int attachedToRibs() {
+        return attachedToRibs;
+    }
+
+    /** Diaphragm nodes tied by springs to cartilage or sternum. */
+    public int attachedToCartilage() {
+        return attachedToCartilage;
+    }
+
+    /** Diaphragm nodes fixed to the spine (crura). */
+    public int attachedToSpine() {
+        return attachedToSpine;
+    }
+
+    /** Whether diaphragm node v is attached to ribs, cartilage, sternum or spine (its origins). */
+    public boolean isAttached(int v) {
+        return v < attached.length && attached[v];
+    }
+
+    public int attachedNodes() {
+        return attachedToRibs + attachedToCartilage + attachedToSpine;
+    }
+
+    /** Share of the upper surface's area that is tendon. */
+    public double tendonAreaFraction() {
+        return tendonAreaFraction;
+    }
+
+    /** Mass added by the mass floor, kg. */
+    public double addedMassKg() {
+        return addedMass;
+    }
+
+    /** Gershgorin bound on the highest angular frequency of the network, rad/s. */
+    public double omegaMaxBound() {
+        return omegaMax;
+    }
+
+    /** The recommended time step for RK2, s (see {@link Rk2Step}). */
+    public double recommendedTimeStep() {
+        return timeStep;
+    }
+}

@@ -1,0 +1,122 @@
+package org.tensim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.io.Json;
+import picocli.CommandLine;
+
+/** The diaphragm command end to end on a coarse mesh, and its error messages. */
+class DiaphragmCommandTest {
+    @TempDir
+    Path dir;
+
+    /**
+     * PNG charts need Java2D; with DISPLAY set to an X server that does not answer, AWT cannot start.
+     * That is a broken machine, not a broken command: the tests that draw are then skipped.
+     */
+    private static boolean awtUsable() {
+        try {
+            java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment();
+            return true;
+        } catch (Throwable e) {
+            return false;
+        }
+    }
+
+    private static String[] run(String... args) {
+        CommandLine cl = Main.commandLine();
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        cl.setOut(new PrintWriter(out));
+        cl.setErr(new PrintWriter(err));
+        int code = cl.execute(args);
+        return new String[] {String.valueOf(code), out.toString(), err.toString()};
+    }
+
+    @Test
+    void writesEveryOutputAndASummaryWithTheIssuesKeys() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
+        Path mesh = dir.resolve("coarse.obj");
+        assertEquals("0", run("diaphragm-mesh", "--rings", "10", "--out", mesh.toString())[0]);
+        Path out = dir.resolve("out");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", out.toString(),
+                "--vtk-per-cycle", "4");
+        assertEquals("0", r[0], r[2]);
+        for (String f : List.of("summary.json", "displacements.csv", "probe.csv", "sagittal.png", "axial.png",
+                "sagittal-cycle.png", "axial-cycle.png", "breathing.png", "vtk/diaphragm.pvd",
+                "vtk/diaphragm_0000.vtk", "vtk/diaphragm_0001.vtk")) {
+            assertTrue(Files.size(out.resolve(f)) > 0, f);
+        }
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        for (String k : List.of("nodes", "springs", "rigid_links", "attached_nodes", "dome_excursion_mm",
+                "ap_extent_change_mm", "transverse_extent_change_mm", "vertical_extent_change_mm", "steps_per_s",
+                "realtime_factor")) {
+            assertTrue(s.containsKey(k), k);
+        }
+        assertTrue(((Number) s.get("dome_excursion_mm")).doubleValue() > 5);
+        // displacements.csv: a header and one row per diaphragm node per time (two times by default)
+        long rows = Files.lines(out.resolve("displacements.csv")).count() - 1;
+        assertEquals(2L * ((Number) s.get("diaphragm_nodes")).longValue(), rows);
+    }
+
+    @Test
+    void aDivergingRunStopsWithOneLineAndKeepsWhatItWrote() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
+        Path mesh = dir.resolve("coarse.obj");
+        run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());
+        Path out = dir.resolve("diverged");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--dt", "0.002", "--out",
+                out.toString());
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("diverged") && r[2].contains("reduce the time step"), r[2]);
+        assertFalse(r[2].contains("\tat "), r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertTrue(s.containsKey("diverged"));
+        assertTrue(Files.size(out.resolve("probe.csv")) > 0);
+        assertTrue(Files.isRegularFile(out.resolve("vtk/diaphragm_0000.vtk")));
+    }
+
+    @Test
+    void aSingleSurfaceMeshIsOffset() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        Path mesh = dir.resolve("upper.obj");
+        org.tensim.io.mesh.ObjWriter.write(mesh, org.tensim.scene.diaphragm.DoubleDomeGenerator.upperSurface(
+                org.tensim.scene.diaphragm.DoubleDomeGenerator.Shape.adult().withRings(8)),
+                org.tensim.io.mesh.MeshUnits.MM, List.of(), 4);
+        DiaphragmSetup.Built b = DiaphragmSetup.load(mesh, org.tensim.io.mesh.MeshUnits.MM, 0.002,
+                DiaphragmSetup.DEFAULT_BOXES, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
+                org.tensim.scene.diaphragm.BreathingCycle.quiet(),
+                new org.tensim.scene.diaphragm.DiaphragmControls(1, 2600));
+        assertEquals(DiaphragmSetup.SurfaceMode.OFFSET, b.mode());
+        assertEquals(0.002, b.scene().surfaces().thicknessM(), 1e-4);
+    }
+
+    @Test
+    void badInputGivesOneClearLineAndNoStackTrace() throws Exception {
+        Path bad = dir.resolve("bad.obj");
+        Files.writeString(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+        String[] r = run("diaphragm", "--mesh", bad.toString(), "--out", dir.resolve("o").toString());
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("bad.obj, line 4") && r[2].contains("expected 1..3"), r[2]);
+        assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
+        r = run("diaphragm", "--units", "inch");
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("mesh units must be 'mm' or 'm', got 'inch'"), r[2]);
+        r = run("diaphragm", "--rib-amplitude", "5");
+        assertTrue(r[2].contains("rib amplitude must be at most 3"), r[2]);
+    }
+}

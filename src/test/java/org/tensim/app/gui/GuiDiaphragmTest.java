@@ -1,0 +1,92 @@
+package org.tensim.app.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+import static org.tensim.app.gui.GuiTestSupport.assertDrawn;
+import static org.tensim.app.gui.GuiTestSupport.differingPixels;
+import static org.tensim.app.gui.GuiTestSupport.onEdt;
+import static org.tensim.app.gui.GuiTestSupport.waitFor;
+
+import java.awt.GraphicsEnvironment;
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import javax.swing.AbstractButton;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.view.Body;
+import org.tensim.view.DiaphragmViewScene;
+
+/**
+ * The GUI on the diaphragm (coarse, so that it moves quickly): drawn as a shaded
+ * surface with muscle and tendon in two colours, the picture changes while it
+ * runs, and a control typed into the interface changes the simulation.
+ */
+@Tag("gui")
+class GuiDiaphragmTest {
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void needsDisplay() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        GuiCommand.setScripted(true);
+    }
+
+    static double apexZ(GuiWindow w) {
+        Body b = w.scene().bodies().get(0);
+        double[] d = new double[3];
+        b.simulation().state().displacement(b.probeNode(), d);
+        return d[2];
+    }
+
+    static void click(GuiWindow w, String name) throws Exception {
+        AbstractButton b = (AbstractButton) GuiWindowTest.find(w.controls(), name);
+        onEdt(() -> b.doClick(0));
+    }
+
+    @Test
+    void diaphragmIsDrawnMovesAndRespondsToTheMuscleControl() throws Exception {
+        GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, true);
+        try {
+            waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
+            assertTrue(w.scene() instanceof DiaphragmViewScene);
+            click(w, "realtime"); // as fast as possible: it moves sooner
+            click(w, "layer.vectors"); // displacement vectors x100 make small motions visible
+            waitFor("some breathing", () -> w.view().shownTime() > 0.05);
+            BufferedImage a = w.view().capture();
+            assertDrawn(a, "the diaphragm");
+            int[] colours = GuiSurfaceTest.musclePixelsAndTendonPixels(a);
+            assertTrue(colours[0] > 300 && colours[1] > 30, "muscle (red) and tendon (pale) on screen: " + colours[0]
+                    + " red, " + colours[1] + " pale pixels");
+            double t0 = w.view().shownTime();
+            waitFor("more breathing", () -> w.view().shownTime() > t0 + 0.05);
+            Thread.sleep(100);
+            BufferedImage b = w.view().capture();
+            int changed = differingPixels(a, b);
+            assertTrue(changed > 200, "the picture must change while it breathes; " + changed + " pixels changed");
+
+            // The muscle control, through its field: the same 100 steps from rest with more muscle action
+            // pull the dome apex further down.
+            click(w, "play");
+            click(w, "reset");
+            waitFor("the reset", () -> w.runner().steps() == 0 && w.runner().simTime() == 0);
+            GuiWindowTest.clickSteps(w, 100);
+            double quiet = apexZ(w);
+            onEdt(() -> w.controls().control(DiaphragmViewScene.MUSCLE_ACTION).enter("20000"));
+            assertEquals(20000, w.tuning().get(DiaphragmViewScene.MUSCLE_ACTION));
+            click(w, "reset");
+            waitFor("the reset", () -> w.runner().steps() == 0 && w.runner().simTime() == 0);
+            GuiWindowTest.clickSteps(w, 100);
+            double forced = apexZ(w);
+            assertTrue(quiet < 0 && forced < 2 * quiet, "more muscle action lowers the apex further: " + forced
+                    + " m against " + quiet + " m");
+            assertEquals(20000, ((DiaphragmViewScene) w.scene()).scene().controls().muscleAmplitudePa(),
+                    "the value reaches the rebuilt scene's controls");
+        } finally {
+            onEdt(w::close);
+        }
+    }
+}

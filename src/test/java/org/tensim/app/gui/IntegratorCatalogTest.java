@@ -1,0 +1,40 @@
+package org.tensim.app.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+
+import java.util.Arrays;
+import org.junit.jupiter.api.Test;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.view.Body;
+import org.tensim.view.CubeViewScene;
+import org.tensim.view.ViewScene;
+
+class IntegratorCatalogTest {
+    @Test
+    void offersEveryRegisteredIntegratorThePapersFirst() {
+        var l = IntegratorCatalog.available();
+        assertEquals("rk2", l.get(0).name());
+        assertEquals(Integrators.names().size(), l.size());
+        for (IntegratorChoice c : l) {
+            assertEquals(c.name(), c.create().name());
+            assertNotSame(c.create(), c.create(), "a new instance for every body");
+        }
+    }
+
+    @Test
+    void choosingAnotherIntegratorChangesTheRun() {
+        ViewScene a = CubeViewScene.create();
+        ViewScene b = CubeViewScene.create();
+        Tuning t = new Tuning(b.name(), b.parameters(), b.defaultTimeStep(), false, IntegratorCatalog.available());
+        t.bind(new ParameterBindingTest.DirectTarget(b));
+        t.setIntegrator("rk4");
+        for (Body body : b.bodies()) {
+            assertEquals("rk4", body.simulation().integrator().name());
+        }
+        double[] x = ParameterBindingTest.run(a, a.defaultTimeStep(), 200);
+        double[] y = ParameterBindingTest.run(b, b.defaultTimeStep(), 200);
+        assertNotEquals(Arrays.toString(x), Arrays.toString(y));
+    }
+}
