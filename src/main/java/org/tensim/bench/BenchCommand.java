@@ -1,6 +1,5 @@
 package org.tensim.bench;
 
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -53,8 +52,9 @@ public final class BenchCommand implements Callable<Integer> {
             + "(an arbitrarily numbered mesh; default: off)")
     boolean shuffle;
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: ${DEFAULT-VALUE})")
-    double dt = 1e-3;
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s (default: 0.001 for the lattice, the scene's stable RK2 step for the diaphragm)")
+    Double dt;
 
     @Option(names = "--steps", paramLabel = "K",
             description = "timed steps per repetition; 0 = about 2e7 spring evaluations (default: ${DEFAULT-VALUE})")
@@ -67,12 +67,8 @@ public final class BenchCommand implements Callable<Integer> {
     Path out;
 
     @Override
-    public Integer call() throws IOException {
-        if (!"lattice".equals(scene)) {
-            if ("diaphragm".equals(scene)) {
-                throw new IllegalArgumentException("--scene diaphragm: this build has no diaphragm scene yet; "
-                        + "use --scene lattice");
-            }
+    public Integer call() throws Exception {
+        if (!"lattice".equals(scene) && !"diaphragm".equals(scene)) {
             throw new IllegalArgumentException("--scene " + scene + ": expected lattice or diaphragm");
         }
         for (int t : threads) {
@@ -89,7 +85,7 @@ public final class BenchCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--steps must be >= 0 and --repeats >= 1, got " + steps + " and "
                     + repeats);
         }
-        if (!(dt > 0) || !Double.isFinite(dt)) {
+        if (dt != null && (!(dt > 0) || !Double.isFinite(dt))) {
             throw new IllegalArgumentException("--dt " + dt + ": the time step must be a finite number > 0 s");
         }
         ParallelSpringPass.Order ord = parseOrder(order);
@@ -104,10 +100,21 @@ public final class BenchCommand implements Callable<Integer> {
             Files.createDirectories(out);
             Files.deleteIfExists(out.resolve("bench.jsonl"));
         }
-        for (int n : sizes) {
+        boolean diaphragm = "diaphragm".equals(scene);
+        for (int n : diaphragm ? List.of(0) : sizes) {
             for (int t : threadCounts) {
-                LatticeBenchmark.Case c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links),
-                        shuffle, IntegratorChoice.create(integrator), t, ord, builtin, dt, steps, repeats);
+                LatticeBenchmark.Case c;
+                if (diaphragm) {
+                    // A new scene per case: a simulation is consumed by its run.
+                    org.tensim.scene.diaphragm.DiaphragmScene d = DiaphragmBenchScene.build();
+                    c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false,
+                            IntegratorChoice.create(integrator), t, ord, builtin,
+                            dt != null ? dt : d.recommendedTimeStep(), steps, repeats);
+                } else {
+                    c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links), null, shuffle,
+                            IntegratorChoice.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,
+                            repeats);
+                }
                 Map<String, Object> r = LatticeBenchmark.run(c);
                 results.add(r);
                 String line = Json.line(r);
@@ -118,7 +125,7 @@ public final class BenchCommand implements Callable<Integer> {
                 }
             }
         }
-        if (out != null && sizes.size() >= 2) {
+        if (out != null && sizes.size() >= 2 && !diaphragm) {
             ScalingChart.write(results, out.resolve("scaling.png"));
         }
         return 0;

@@ -41,16 +41,27 @@ public final class LatticeBenchmark {
         return LatticeScene.build(n, SPACING_M, MASS_KG, STIFFNESS_N_PER_M, 0, links);
     }
 
-    /** One case: what to run and how long. */
-    public record Case(String scene, int n, Topology topology, boolean shuffled, Integrator integrator,
-            int threads, ParallelSpringPass.Order order, boolean builtin, double dt, int steps, int repeats) {
+    /**
+     * One case: what to run and how long. {@code simulation}: a scene's own simulation
+     * (its projection settings kept; the integrator is replaced), or null to compile
+     * {@code topology}.
+     */
+    public record Case(String scene, int n, Topology topology, Simulation simulation, boolean shuffled,
+            Integrator integrator, int threads, ParallelSpringPass.Order order, boolean builtin, double dt, int steps,
+            int repeats) {
     }
 
     /** Runs one case and returns its figures (keys as printed). */
     public static Map<String, Object> run(Case c) {
-        Topology t = c.shuffled() ? ShuffledScene.shuffle(c.topology(), 1234) : c.topology();
-        SystemState s = SystemState.compile(t);
-        Simulation sim = new Simulation(s, c.integrator());
+        Simulation sim;
+        if (c.simulation() != null) {
+            sim = c.simulation();
+            sim.setIntegrator(c.integrator());
+        } else {
+            Topology t = c.shuffled() ? ShuffledScene.shuffle(c.topology(), 1234) : c.topology();
+            sim = new Simulation(SystemState.compile(t), c.integrator());
+        }
+        SystemState s = sim.state();
         int ns = Math.max(1, s.springCount());
         int steps = c.steps() > 0 ? c.steps()
                 : (int) Math.max(10, Math.min(5000, WORK_PER_REPEAT / ns / c.integrator().forceEvaluationsPerStep()));
@@ -121,6 +132,9 @@ public final class LatticeBenchmark {
             m.put("step_springs_per_s", s.springCount() / (min(msPerStep) / 1e3));
             m.put("step_springs_per_s_median", s.springCount() / (median(msPerStep) / 1e3));
             m.put("ns_per_spring_step", min(msPerStep) * 1e6 / ns);
+            // Simulated seconds per wall-clock second: real time or better when >= 1.
+            m.put("realtime_factor", c.dt() / (min(msPerStep) / 1e3));
+            m.put("realtime_factor_median", c.dt() / (median(msPerStep) / 1e3));
             m.put("projection_ms_per_step", median(projMs));
             m.put("projection_ms_per_step_best", min(projMs));
             m.put("projection_iterations_per_step", (double) iterations[0] / steps);
