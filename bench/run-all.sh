@@ -18,6 +18,7 @@ run builtin     ./tensim bench --n 11,21,31 --solver builtin --repeats 7
 run symplectic  ./tensim bench --n 31 --threads 1,2 --integrator symplectic-euler --repeats 7
 run symplectic-builtin ./tensim bench --n 31 --solver builtin --integrator symplectic-euler --repeats 7
 run links       ./tensim bench --n 21,31 --threads 1,2 --links --repeats 5
+run diaphragm   ./tensim bench --scene diaphragm --threads 1,2 --repeats 5
 run links-builtin ./tensim bench --n 21,31 --solver builtin --links --repeats 5
 run shuffled    ./tensim bench --n 31,49 --threads 1 --shuffle --order auto --repeats 5
 run shuffled-authored ./tensim bench --n 31,49 --threads 1 --shuffle --order authored --repeats 5
