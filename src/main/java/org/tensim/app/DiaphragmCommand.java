@@ -63,6 +63,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE})")
     double attachMm = DiaphragmParameters.defaults().attachThresholdM() * 1e3;
 
+    @Option(names = "--integrator", paramLabel = "NAME",
+            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
+                    + " (default: ${DEFAULT-VALUE})")
+    String integrator = "rk2";
+
     @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
     double dt = 0;
 
@@ -106,7 +111,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
-        Map<String, Object> summary = DiaphragmReport.run(built, o, out, System.out);
+        Map<String, Object> summary = DiaphragmReport.run(built, o, integrator, out, System.out);
         System.out.println(Json.line(summary));
         return 0;
     }
