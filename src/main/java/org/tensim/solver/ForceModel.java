@@ -12,11 +12,20 @@ package org.tensim.solver;
  */
 public final class ForceModel {
     private final SystemState s;
+    private final int[] springA3;
+    private final int[] springB3;
     private long evaluations;
     private SpringForcePass springPass;
 
     public ForceModel(SystemState state) {
         this.s = state;
+        // Spring ends as array offsets (3 x node id), computed once for the shared kernels.
+        this.springA3 = new int[state.springA.length];
+        this.springB3 = new int[state.springB.length];
+        for (int i = 0; i < springA3.length; i++) {
+            springA3[i] = 3 * state.springA[i];
+            springB3[i] = 3 * state.springB[i];
+        }
     }
 
     public SystemState state() {
@@ -83,66 +92,13 @@ public final class ForceModel {
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */
     public void springs(double[] px, double[] f) {
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] k = s.springK;
-        final double[] rl = s.springL;
-        final int ns = sa.length;
-        for (int i = 0; i < ns; i++) {
-            final int a = 3 * sa[i];
-            final int b = 3 * sb[i];
-            final double dx = px[b] - px[a];
-            final double dy = px[b + 1] - px[a + 1];
-            final double dz = px[b + 2] - px[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            // k (l - L) / l, guarded: coincident nodes exert no force (direction undefined).
-            final double sc = len > 0 ? k[i] * (len - rl[i]) / len : 0;
-            final double fx = sc * dx;
-            final double fy = sc * dy;
-            final double fz = sc * dz;
-            f[a] += fx;
-            f[a + 1] += fy;
-            f[a + 2] += fz;
-            f[b] -= fx;
-            f[b + 1] -= fy;
-            f[b + 2] -= fz;
-        }
+        SpringKernels.springs(springA3, springB3, s.springK, s.springL, springA3.length, px, 0, f);
     }
 
     /** Spring forces with axial damping, added to f. */
     public void springsDamped(double[] px, double[] pv, double[] f) {
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] k = s.springK;
-        final double[] rl = s.springL;
-        final double[] cs = s.springC;
-        final int ns = sa.length;
-        for (int i = 0; i < ns; i++) {
-            final int a = 3 * sa[i];
-            final int b = 3 * sb[i];
-            final double dx = px[b] - px[a];
-            final double dy = px[b + 1] - px[a + 1];
-            final double dz = px[b + 2] - px[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (len == 0) {
-                continue;
-            }
-            final double inv = 1 / len;
-            final double ux = dx * inv;
-            final double uy = dy * inv;
-            final double uz = dz * inv;
-            final double vrel = (pv[b] - pv[a]) * ux + (pv[b + 1] - pv[a + 1]) * uy + (pv[b + 2] - pv[a + 2]) * uz;
-            final double mag = k[i] * (len - rl[i]) + cs[i] * vrel;
-            final double fx = mag * ux;
-            final double fy = mag * uy;
-            final double fz = mag * uz;
-            f[a] += fx;
-            f[a + 1] += fy;
-            f[a + 2] += fz;
-            f[b] -= fx;
-            f[b + 1] -= fy;
-            f[b + 2] -= fz;
-        }
+        SpringKernels.springsDamped(springA3, springB3, s.springK, s.springL, s.springC, springA3.length, px, pv, 0,
+                f);
     }
 
     /** Elastic energy of the springs at positions px, J. */

@@ -2,6 +2,7 @@ package org.tensim.solver.parallel;
 
 import java.util.Arrays;
 import org.tensim.solver.SpringForcePass;
+import org.tensim.solver.SpringKernels;
 import org.tensim.solver.SystemState;
 
 /**

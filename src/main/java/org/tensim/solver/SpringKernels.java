@@ -1,18 +1,18 @@
-package org.tensim.solver.parallel;
+package org.tensim.solver;
 
 /**
- * The per-spring loops of {@link ParallelSpringPass}: static, monomorphic, no
+ * The per-spring loops, shared by {@link ForceModel} and the parallel spring pass
+ * ({@code org.tensim.solver.parallel.ParallelSpringPass}): static, monomorphic, no
  * allocation, no boxing, no calls. Spring i is two int offsets {@code sa[i]},
  * {@code sb[i]} (3 x node index, relative to the block's first node), its stiffness
  * {@code k[i]} (N/m) and rest length {@code rl[i]} (m), in separate arrays: measured
  * 5-10 % faster than one interleaved int array and one interleaved double array,
  * whose stride-2 indexing the JIT handles less well.
  *
- * <p>The arithmetic is written exactly as in {@code ForceModel.springs} and
- * {@code ForceModel.springsDamped}, operation for operation, so that the same
- * springs summed in the same order give the same bits.
+ * <p>Being one loop for both, the same springs summed in the same order give the
+ * same bits whether one thread or several compute them.
  */
-final class SpringKernels {
+public final class SpringKernels {
     private SpringKernels() {
     }
 
@@ -20,7 +20,7 @@ final class SpringKernels {
      * Undamped springs [0, count): positions read at {@code x[xo + sa[i]]}, forces added
      * at {@code f[sa[i]]} (end a) and subtracted at {@code f[sb[i]]} (end b).
      */
-    static void springs(int[] sa, int[] sb, double[] k, double[] rl, int count, double[] x, int xo, double[] f) {
+    public static void springs(int[] sa, int[] sb, double[] k, double[] rl, int count, double[] x, int xo, double[] f) {
         for (int i = 0; i < count; i++) {
             final int a = sa[i];
             final int b = sb[i];
@@ -45,7 +45,7 @@ final class SpringKernels {
     }
 
     /** Springs with axial damping {@code c[i]} (N s/m); velocities read at {@code v[xo + sa[i]]}. */
-    static void springsDamped(int[] sa, int[] sb, double[] k, double[] rl, double[] c, int count, double[] x,
+    public static void springsDamped(int[] sa, int[] sb, double[] k, double[] rl, double[] c, int count, double[] x,
             double[] v, int xo, double[] f) {
         for (int i = 0; i < count; i++) {
             final int a = sa[i];
