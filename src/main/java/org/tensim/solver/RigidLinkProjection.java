@@ -123,33 +123,41 @@ public final class RigidLinkProjection {
         final double[] ll = s.linkL;
         final double[] w = s.invMass;
         for (int i = 0; i < la.length; i++) {
-            final int a = la[i];
-            final int b = lb[i];
-            final double wa = w[a];
-            final double wb = w[b];
-            final double wsum = wa + wb;
-            if (wsum == 0) {
-                continue; // both ends immovable: the error is reported by measure()
-            }
-            final int a3 = 3 * a;
-            final int b3 = 3 * b;
-            final double dx = x[b3] - x[a3];
-            final double dy = x[b3 + 1] - x[a3 + 1];
-            final double dz = x[b3 + 2] - x[a3 + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (len == 0) {
-                continue; // direction undefined; left to the next sweep after neighbours move
-            }
-            final double r = (len - ll[i]) / (len * wsum);
-            final double ca = wa * r;
-            final double cb = wb * r;
-            x[a3] += ca * dx;
-            x[a3 + 1] += ca * dy;
-            x[a3 + 2] += ca * dz;
-            x[b3] -= cb * dx;
-            x[b3 + 1] -= cb * dy;
-            x[b3 + 2] -= cb * dz;
+            correct(x, 3 * la[i], 3 * lb[i], w[la[i]], w[lb[i]], ll[i]);
         }
+    }
+
+    /**
+     * Restores one link's length: moves its ends (at offsets a3, b3 of x) along the
+     * line joining them, in the ratio of their inverse masses wa, wb (1/kg).
+     * Shared by the serial and the parallel sweeps, so both give the same bits.
+     *
+     * @return false when the link was left as it is: both ends immovable (wa + wb = 0),
+     *         or coincident ends (direction undefined; the next sweep retries after
+     *         neighbours move). The error stays visible to the measure.
+     */
+    public static boolean correct(double[] x, int a3, int b3, double wa, double wb, double length) {
+        final double wsum = wa + wb;
+        if (wsum == 0) {
+            return false;
+        }
+        final double dx = x[b3] - x[a3];
+        final double dy = x[b3 + 1] - x[a3 + 1];
+        final double dz = x[b3 + 2] - x[a3 + 2];
+        final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (len == 0) {
+            return false;
+        }
+        final double r = (len - length) / (len * wsum);
+        final double ca = wa * r;
+        final double cb = wb * r;
+        x[a3] += ca * dx;
+        x[a3 + 1] += ca * dy;
+        x[a3 + 2] += ca * dz;
+        x[b3] -= cb * dx;
+        x[b3 + 1] -= cb * dy;
+        x[b3 + 2] -= cb * dz;
+        return true;
     }
 
     private double measure(SystemState s, double[] x) {

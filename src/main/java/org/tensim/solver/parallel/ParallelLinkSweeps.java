@@ -1,6 +1,7 @@
 package org.tensim.solver.parallel;
 
 import org.tensim.solver.LinkSweeps;
+import org.tensim.solver.RigidLinkProjection;
 import org.tensim.solver.SystemState;
 
 /**
@@ -154,32 +155,9 @@ public final class ParallelLinkSweeps implements LinkSweeps {
         final double[] x = px;
         final double[] wm = w;
         for (int i = from; i < to; i++) {
-            final int a3 = la3[i];
-            final int b3 = lb3[i];
-            final double wa = wm[la[i]];
-            final double wb = wm[lb[i]];
-            final double wsum = wa + wb;
-            if (wsum == 0) {
-                skipped[16 * worker] = 1;
-                continue; // both ends immovable: the error is reported by measure()
+            if (!RigidLinkProjection.correct(x, la3[i], lb3[i], wm[la[i]], wm[lb[i]], len[i])) {
+                skipped[16 * worker] = 1; // immovable or coincident ends: the error is reported by measure()
             }
-            final double dx = x[b3] - x[a3];
-            final double dy = x[b3 + 1] - x[a3 + 1];
-            final double dz = x[b3 + 2] - x[a3 + 2];
-            final double l = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (l == 0) {
-                skipped[16 * worker] = 1;
-                continue; // direction undefined; left to the next sweep after neighbours move
-            }
-            final double r = (l - len[i]) / (l * wsum);
-            final double ca = wa * r;
-            final double cb = wb * r;
-            x[a3] += ca * dx;
-            x[a3 + 1] += ca * dy;
-            x[a3 + 2] += ca * dz;
-            x[b3] -= cb * dx;
-            x[b3 + 1] -= cb * dy;
-            x[b3 + 2] -= cb * dz;
         }
     }
 
