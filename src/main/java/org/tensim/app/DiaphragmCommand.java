@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.experiment.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
@@ -23,6 +24,9 @@ import picocli.CommandLine.Option;
             "displacements.csv, probe.csv, a VTK series and summary.json to --out and",
             "prints the summary as the last line (JSON). Model: docs/diaphragm.md."})
 public final class DiaphragmCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--mesh", paramLabel = "FILE",
             description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
                     + " (default: ${DEFAULT-VALUE})")
@@ -68,6 +72,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE})")
     String integrator = "rk2";
 
+    @Option(names = "--threads", paramLabel = "N",
+            description = "threads that share each step (default: all cores, here ${DEFAULT-VALUE})")
+    int threads = org.tensim.solver.parallel.Parallelism.availableCores();
+
+    @Option(names = "--cg-tolerance", paramLabel = "R",
+            description = "implicit-euler only: relative residual at which each step's CG solve stops"
+                    + " (default: 1e-12)")
+    Double cgTolerance;
+
     @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
     double dt = 0;
 
@@ -90,13 +103,37 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "run the resolution study instead (docs/diaphragm.md); uses --seconds per resolution")
     boolean resolutionStudy;
 
+    @Option(names = "--realtime-study",
+            description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads) and implicit Euler"
+                    + " at 5, 10, 20 ms, one inspiration each, error against the paper's configuration vs speed"
+                    + " (docs/diaphragm.md)")
+    boolean realtimeStudy;
+
     @Override
     public Integer call() throws Exception {
+        // Options are checked before the mesh is read, which takes seconds.
+        org.tensim.solver.Integrator chosen = org.tensim.solver.integrators.Integrators.create(integrator);
+        if (cgTolerance != null) {
+            if (!(chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie)) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--cg-tolerance applies to --integrator implicit-euler only, not " + integrator);
+            }
+            ie.setTolerance(cgTolerance);
+        }
+        if (threads < 1) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--threads must be at least 1, got " + threads);
+        }
         MeshUnits u = MeshUnits.parse(units);
         DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3);
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
         DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
+        if (realtimeStudy) {
+            Map<String, Object> s = RealTimeStudy.run(boxes, p, cycle, controls, seconds, out, System.out);
+            System.out.println(Json.line(s));
+            return 0;
+        }
         if (resolutionStudy) {
             Map<String, Object> s = ResolutionStudy.run(boxes, p, cycle, controls, o, out, System.out);
             System.out.println(Json.line(s));
@@ -111,7 +148,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
-        Map<String, Object> summary = DiaphragmReport.run(built, o, integrator, out, System.out);
+        Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, threads, out, System.out);
         System.out.println(Json.line(summary));
         return 0;
     }

@@ -70,6 +70,21 @@ class DiaphragmCommandTest {
         // displacements.csv: a header and one row per diaphragm node per time (two times by default)
         long rows = Files.lines(out.resolve("displacements.csv")).count() - 1;
         assertEquals(2L * ((Number) s.get("diaphragm_nodes")).longValue(), rows);
+        assertEquals(org.tensim.solver.parallel.Parallelism.availableCores(), ((Number) s.get("threads")).intValue(),
+                "all cores by default");
+
+        // Another integrator with its CG tolerance, on one thread: the same physiology within a few mm.
+        Path out2 = dir.resolve("implicit");
+        r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", out2.toString(),
+                "--vtk-per-cycle", "0", "--integrator", "implicit-euler", "--dt", "0.0005", "--cg-tolerance", "1e-6",
+                "--threads", "1");
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> s2 = Json.readMap(out2.resolve("summary.json"));
+        assertEquals("implicit-euler", s2.get("integrator"));
+        assertEquals(1, ((Number) s2.get("threads")).intValue());
+        assertTrue(((Number) s2.get("cg_products_per_step")).doubleValue() > 0);
+        assertEquals(((Number) s.get("dome_excursion_mm")).doubleValue(),
+                ((Number) s2.get("dome_excursion_mm")).doubleValue(), 2.0);
     }
 
     @Test
@@ -118,5 +133,12 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("mesh units must be 'mm' or 'm', got 'inch'"), r[2]);
         r = run("diaphragm", "--rib-amplitude", "5");
         assertTrue(r[2].contains("rib amplitude must be at most 3"), r[2]);
+        r = run("diaphragm", "--cg-tolerance", "1e-3");
+        assertTrue(r[2].contains("--cg-tolerance applies to --integrator implicit-euler only, not rk2"), r[2]);
+        r = run("diaphragm", "--threads", "0");
+        assertTrue(r[2].contains("--threads must be at least 1, got 0"), r[2]);
+        r = run("diaphragm", "--integrator", "implicit-euler", "--cg-tolerance", "-1");
+        assertTrue(r[2].contains("-1"), r[2]);
+        assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
     }
 }

@@ -63,6 +63,36 @@ class DivergenceTest {
         assertTrue(e.getMessage().contains("critical time step estimate"), e.getMessage());
     }
 
+    /**
+     * The per-step check sums y - y over all coordinates (no branch per coordinate): an infinity
+     * or a NaN anywhere, in a position or a velocity, at an even or odd index or the last one,
+     * must still stop the run and name its node.
+     */
+    @Test
+    void aSingleNonFiniteCoordinateAnywhereIsFound() {
+        int n = 7; // 21 coordinates: an odd count, so the tail of the paired loop is used too
+        for (int node = 0; node < n; node++) {
+            for (int axis = 0; axis < 3; axis++) {
+                for (double bad : new double[] {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY}) {
+                    for (boolean velocity : new boolean[] {false, true}) {
+                        org.tensim.model.Topology t = new org.tensim.model.Topology();
+                        for (int i = 0; i < n; i++) {
+                            t.addNode(i, 0, 0, 1); // free, unconnected: nothing spreads the bad value
+                        }
+                        SystemState s = SystemState.compile(t);
+                        Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
+                        sim.setWarningSink(m -> { }).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+                        sim.step(0.01); // a clean step passes
+                        (velocity ? s.v : s.x)[3 * node + axis] = bad;
+                        SimulationDivergedException e = assertThrows(SimulationDivergedException.class,
+                                () -> sim.step(0.01), "node " + node + " axis " + axis + " " + bad);
+                        assertEquals(node, e.node(), e.getMessage());
+                    }
+                }
+            }
+        }
+    }
+
     @Test
     void growthLimitIsValidated() {
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)));

@@ -75,11 +75,32 @@ public final class DiaphragmReport {
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
             PrintStream log) throws IOException {
-        DiaphragmScene scene = built.scene();
-        org.tensim.solver.Integrator chosen = org.tensim.solver.integrators.Integrators.create(integrator);
+        return run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1, out, log);
+    }
+
+    /**
+     * As {@link #run(DiaphragmSetup.Built, Options, String, Path, PrintStream)} with an integrator
+     * instance (e.g. an implicit Euler with its own CG tolerance) on {@code threads} threads (>= 1; the
+     * spring pass, RK2's and symplectic Euler's node loops and the link sweeps are shared among them,
+     * see {@link org.tensim.solver.parallel.Parallelism}).
+     */
+    public static Map<String, Object> run(DiaphragmSetup.Built built, Options o,
+            org.tensim.solver.Integrator chosen, int threads, Path out, PrintStream log) throws IOException {
+        Check.atLeast("thread count", threads, 1);
         Files.createDirectories(out);
-        Simulation sim = scene.newSimulation();
+        Simulation sim = built.scene().newSimulation();
         sim.setIntegrator(chosen);
+        try (org.tensim.solver.parallel.Parallelism par = threads > 1
+                ? org.tensim.solver.parallel.Parallelism.install(sim, threads) : null) {
+            return run(built, o, sim, threads, par == null ? new long[0] : par.pool().workerThreadIds(), out, log);
+        }
+    }
+
+    private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
+            long[] workers, Path out, PrintStream log) throws IOException {
+        DiaphragmScene scene = built.scene();
+        org.tensim.solver.Integrator chosen = sim.integrator();
+        String integrator = chosen.name();
         double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
         double start = metrics.measuredCycleStart();
@@ -159,6 +180,10 @@ public final class DiaphragmReport {
             diverged = e.getMessage();
         }
         double wall = stepNanos / 1e9;
+        for (int w = 0; w < workers.length && cpuTimed; w++) {
+            // Worker threads exist for this run only: their whole CPU time is the steps' (spinning included).
+            cpuNanos += Math.max(0, cpu.getThreadCpuTime(workers[w]));
+        }
         double cpuS = cpuTimed ? cpuNanos / 1e9 : Double.NaN;
         summary.put("source", built.source());
         summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
@@ -186,6 +211,11 @@ public final class DiaphragmReport {
         summary.put("simulated_s", round(sim.time(), 6));
         summary.put("measured_cycle_start_s", start);
         summary.put("integrator", integrator);
+        summary.put("threads", threads);
+        if (chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie) {
+            summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
+            summary.put("cg_unconverged_solves", ie.unconvergedSolves());
+        }
         summary.put("dt_s", dt);
         summary.put("dt_rule", o.dtS() > 0 ? "given (--dt)" : "RK2 stable step for w_max (Gershgorin) and the Rayleigh damping, x"
                 + org.tensim.scene.diaphragm.Rk2Step.SAFETY);
@@ -319,7 +349,7 @@ public final class DiaphragmReport {
         return e;
     }
 
-    static double round(double v, int digits) {
+    public static double round(double v, int digits) {
         double f = Math.pow(10, digits);
         return Math.round(v * f) / f;
     }

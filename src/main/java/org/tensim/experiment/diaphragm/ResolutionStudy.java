@@ -60,8 +60,11 @@ public final class ResolutionStudy {
     public static final Path BODYPARTS_MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "diaphragm-FJ3131-dec28k-mm.obj");
 
-    /** One model's outcome. */
-    record Run(String family, String label, int nodes, int springs, double costPerSimS, double dt, double[] rest,
+    /**
+     * One model's outcome: rest and end positions of its diaphragm nodes (3 per node, m),
+     * which of them are on the upper surface, and its cost in wall seconds per simulated second.
+     */
+    public record Run(String family, String label, int nodes, int springs, double costPerSimS, double dt, double[] rest,
             double[] end, boolean[] upper) {
     }
 
@@ -169,7 +172,7 @@ public final class ResolutionStudy {
     }
 
     /** Relative RMS difference of the end displacement fields, nearest upper node of the coarse model. */
-    static double error(Run fine, Run coarse) {
+    public static double error(Run fine, Run coarse) {
         double num = 0;
         double den = 0;
         int nf = fine.rest().length / 3;

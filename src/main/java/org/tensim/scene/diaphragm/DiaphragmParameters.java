@@ -99,6 +99,13 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
                 structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM, bendingFactor);
     }
 
+    /** The same parameters with another sternum node mass, kg. */
+    public DiaphragmParameters withStructureNodeMass(double kg) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
+                tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness, kg,
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+    }
+
     public DiaphragmParameters withMuscleYoung(double pa) {
         return new DiaphragmParameters(densityKgPerM3, pa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,

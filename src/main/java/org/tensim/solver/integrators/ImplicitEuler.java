@@ -50,9 +50,10 @@ public final class ImplicitEuler implements Integrator {
     private double[] z;
     private double[] p;
     private double[] ap;
-    private double[] diag;
-    private double[] su; // per spring: direction u (3)
-    private double[] sg; // per spring: clamped transverse factor max(0, 1 - L/l)
+    private double[] invDiag; // per degree of freedom: 1 / A_kk on free nodes, 0 elsewhere
+    private double[] free; // per degree of freedom: 1 on free nodes, 0 on fixed and driven ones
+    private double[] massTerm; // per degree of freedom: (m + h c_v) on free nodes, 0 elsewhere
+    private double[] block; // per spring: u_x, u_y, u_z, alpha, beta (see linearise)
     private final double[] scratch = new double[6];
     private SystemState s;
     private double h;
@@ -129,7 +130,6 @@ public final class ImplicitEuler implements Integrator {
         final int n3 = 3 * st.nodeCount;
         final double[] x = st.x;
         final double[] v = st.v;
-        final double[] im = st.invMass;
 
         // Driven nodes at their end-of-step positions: their pull is taken implicitly too.
         System.arraycopy(x, 0, xs, 0, n3);
@@ -140,25 +140,19 @@ public final class ImplicitEuler implements Integrator {
 
         // b = h (f - h S v), on free nodes only; r = b - A dv with dv from the last step as the first guess.
         applyStiffness(vs, ap);
+        final double[] fr = free;
         double bNorm2 = 0;
         for (int k = 0; k < n3; k++) {
-            double b = im[k / 3] == 0 ? 0 : step * (f[k] - step * ap[k]);
+            double b = fr[k] * step * (f[k] - step * ap[k]);
             r[k] = b;
             bNorm2 += b * b;
-            if (im[k / 3] == 0) {
-                dv[k] = 0;
-            }
+            dv[k] *= fr[k];
         }
         solve(bNorm2);
 
-        for (int i = 0; i < st.nodeCount; i++) {
-            if (im[i] == 0) {
-                continue;
-            }
-            for (int k = 3 * i; k < 3 * i + 3; k++) {
-                v[k] += dv[k];
-                x[k] += step * v[k];
-            }
+        for (int k = 0; k < n3; k++) {
+            v[k] += dv[k];
+            x[k] += fr[k] * step * v[k];
         }
         st.applyMotions(t + step, x, v, scratch);
     }
@@ -166,7 +160,7 @@ public final class ImplicitEuler implements Integrator {
     /** Preconditioned CG on A dv = b, with r holding b on entry. */
     private void solve(double bNorm2) {
         final int n3 = r.length;
-        final double[] im = s.invMass;
+        final double[] id = invDiag; // 0 on fixed and driven nodes: z, p and dv stay 0 there
         multiply(dv, ap);
         for (int k = 0; k < n3; k++) {
             r[k] -= ap[k];
@@ -177,7 +171,7 @@ public final class ImplicitEuler implements Integrator {
         if (rr > stop2) {
             double rz = 0;
             for (int k = 0; k < n3; k++) {
-                z[k] = im[k / 3] == 0 ? 0 : r[k] / diag[k];
+                z[k] = r[k] * id[k];
                 p[k] = z[k];
                 rz += r[k] * z[k];
             }
@@ -189,19 +183,19 @@ public final class ImplicitEuler implements Integrator {
                 }
                 double alpha = rz / pap;
                 rr = 0;
+                double rzNew = 0;
                 for (int k = 0; k < n3; k++) {
                     dv[k] += alpha * p[k];
-                    r[k] -= alpha * ap[k];
-                    rr += r[k] * r[k];
+                    final double rk = r[k] - alpha * ap[k];
+                    r[k] = rk;
+                    rr += rk * rk;
+                    final double zk = rk * id[k];
+                    z[k] = zk;
+                    rzNew += rk * zk;
                 }
                 it++;
                 if (rr <= stop2) {
                     break;
-                }
-                double rzNew = 0;
-                for (int k = 0; k < n3; k++) {
-                    z[k] = im[k / 3] == 0 ? 0 : r[k] / diag[k];
-                    rzNew += r[k] * z[k];
                 }
                 double beta = rzNew / rz;
                 rz = rzNew;
@@ -217,68 +211,98 @@ public final class ImplicitEuler implements Integrator {
         }
     }
 
-    /** Spring directions and clamped transverse factors at positions px, and the diagonal of A. */
+    /**
+     * Per spring, the direction u and the two coefficients of its block of A,
+     * {@code h^2 S_s + h C_s = alpha u u^T + beta I} with {@code alpha = h^2 k (1 - g) + h c}
+     * and {@code beta = h^2 k g}, g the clamped transverse factor; the lumped mass
+     * terms per degree of freedom; and the inverse of A's diagonal (Jacobi).
+     */
     private void linearise(double[] px) {
         final int[] sa = s.springA;
         final int[] sb = s.springB;
         final double[] kk = s.springK;
         final double[] cc = s.springC;
+        final double[] rl = s.springL;
         final double[] m = s.mass;
+        final double[] im = s.invMass;
         final double hv = h * s.viscousDamping();
+        final double h2 = h * h;
+        final double[] dg = invDiag;
         for (int i = 0; i < s.nodeCount; i++) {
+            final double fr = im[i] == 0 ? 0 : 1;
             for (int k = 3 * i; k < 3 * i + 3; k++) {
-                diag[k] = m[i] + hv;
+                free[k] = fr;
+                massTerm[k] = fr * (m[i] + hv);
+                dg[k] = m[i] + hv;
             }
         }
+        final double[] bl = block;
         for (int i = 0; i < sa.length; i++) {
-            int a = 3 * sa[i];
-            int b = 3 * sb[i];
-            double dx = px[b] - px[a];
-            double dy = px[b + 1] - px[a + 1];
-            double dz = px[b + 2] - px[a + 2];
-            double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            double inv = len > 0 ? 1 / len : 0;
-            su[3 * i] = dx * inv;
-            su[3 * i + 1] = dy * inv;
-            su[3 * i + 2] = dz * inv;
-            sg[i] = len > 0 ? Math.max(0, 1 - s.springL[i] / len) : 0;
-            for (int c = 0; c < 3; c++) {
-                double uc = su[3 * i + c];
-                double d = h * h * kk[i] * (uc * uc + sg[i] * (1 - uc * uc)) + h * cc[i] * uc * uc;
-                diag[a + c] += d;
-                diag[b + c] += d;
-            }
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final double dx = px[b] - px[a];
+            final double dy = px[b + 1] - px[a + 1];
+            final double dz = px[b + 2] - px[a + 2];
+            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            final double inv = len > 0 ? 1 / len : 0;
+            final double g = len > 0 ? Math.max(0, 1 - rl[i] / len) : 0;
+            final double ux = dx * inv;
+            final double uy = dy * inv;
+            final double uz = dz * inv;
+            final double alpha = h2 * kk[i] * (1 - g) + h * cc[i];
+            final double beta = h2 * kk[i] * g;
+            final int o = 5 * i;
+            bl[o] = ux;
+            bl[o + 1] = uy;
+            bl[o + 2] = uz;
+            bl[o + 3] = alpha;
+            bl[o + 4] = beta;
+            final double ddx = alpha * ux * ux + beta;
+            final double ddy = alpha * uy * uy + beta;
+            final double ddz = alpha * uz * uz + beta;
+            dg[a] += ddx;
+            dg[a + 1] += ddy;
+            dg[a + 2] += ddz;
+            dg[b] += ddx;
+            dg[b + 1] += ddy;
+            dg[b + 2] += ddz;
+        }
+        for (int k = 0; k < dg.length; k++) {
+            dg[k] = free[k] / dg[k];
         }
     }
 
-    /** out = S p (stiffness only), for every node. */
+    /** out = S p (stiffness only, k (u u^T (1 - g) + g I) per spring), for every node. */
     private void applyStiffness(double[] pv, double[] out) {
         java.util.Arrays.fill(out, 0);
         final int[] sa = s.springA;
         final int[] sb = s.springB;
         final double[] kk = s.springK;
+        final double[] bl = block;
+        final double h2 = h * h;
         for (int i = 0; i < sa.length; i++) {
-            int a = 3 * sa[i];
-            int b = 3 * sb[i];
-            double rx = pv[b] - pv[a];
-            double ry = pv[b + 1] - pv[a + 1];
-            double rz = pv[b + 2] - pv[a + 2];
-            double ux = su[3 * i];
-            double uy = su[3 * i + 1];
-            double uz = su[3 * i + 2];
-            double ur = ux * rx + uy * ry + uz * rz;
-            double g = sg[i];
-            // K_s r = k (u (u.r) + g (r - u (u.r)))
-            double ax = (1 - g) * ur * ux + g * rx;
-            double ay = (1 - g) * ur * uy + g * ry;
-            double az = (1 - g) * ur * uz + g * rz;
-            double k = kk[i];
-            out[a] -= k * ax;
-            out[a + 1] -= k * ay;
-            out[a + 2] -= k * az;
-            out[b] += k * ax;
-            out[b + 1] += k * ay;
-            out[b + 2] += k * az;
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final int o = 5 * i;
+            final double ux = bl[o];
+            final double uy = bl[o + 1];
+            final double uz = bl[o + 2];
+            final double k = kk[i];
+            final double trans = bl[o + 4] / h2; // k g
+            final double axial = k - trans; // k (1 - g)
+            final double rx = pv[b] - pv[a];
+            final double ry = pv[b + 1] - pv[a + 1];
+            final double rz = pv[b + 2] - pv[a + 2];
+            final double ur = axial * (ux * rx + uy * ry + uz * rz);
+            final double ax = ur * ux + trans * rx;
+            final double ay = ur * uy + trans * ry;
+            final double az = ur * uz + trans * rz;
+            out[a] -= ax;
+            out[a + 1] -= ay;
+            out[a + 2] -= az;
+            out[b] += ax;
+            out[b + 1] += ay;
+            out[b + 2] += az;
         }
     }
 
@@ -287,35 +311,28 @@ public final class ImplicitEuler implements Integrator {
         products++;
         final int[] sa = s.springA;
         final int[] sb = s.springB;
-        final double[] kk = s.springK;
-        final double[] cc = s.springC;
-        final double[] m = s.mass;
-        final double[] im = s.invMass;
-        final double hv = h * s.viscousDamping();
-        final double h2 = h * h;
-        for (int i = 0; i < s.nodeCount; i++) {
-            double d = im[i] == 0 ? 0 : m[i] + hv;
-            for (int k = 3 * i; k < 3 * i + 3; k++) {
-                out[k] = d * pv[k];
-            }
+        final double[] bl = block;
+        final double[] mt = massTerm;
+        final double[] fr = free;
+        final int n3 = out.length;
+        for (int k = 0; k < n3; k++) {
+            out[k] = mt[k] * pv[k];
         }
         for (int i = 0; i < sa.length; i++) {
-            int a = 3 * sa[i];
-            int b = 3 * sb[i];
-            double rx = pv[b] - pv[a];
-            double ry = pv[b + 1] - pv[a + 1];
-            double rz = pv[b + 2] - pv[a + 2];
-            double ux = su[3 * i];
-            double uy = su[3 * i + 1];
-            double uz = su[3 * i + 2];
-            double ur = ux * rx + uy * ry + uz * rz;
-            double g = sg[i];
-            double kh = h2 * kk[i];
-            double axial = kh * (1 - g) * ur + h * cc[i] * ur;
-            double trans = kh * g;
-            double ax = axial * ux + trans * rx;
-            double ay = axial * uy + trans * ry;
-            double az = axial * uz + trans * rz;
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final int o = 5 * i;
+            final double ux = bl[o];
+            final double uy = bl[o + 1];
+            final double uz = bl[o + 2];
+            final double beta = bl[o + 4];
+            final double rx = pv[b] - pv[a];
+            final double ry = pv[b + 1] - pv[a + 1];
+            final double rz = pv[b + 2] - pv[a + 2];
+            final double ur = bl[o + 3] * (ux * rx + uy * ry + uz * rz);
+            final double ax = ur * ux + beta * rx;
+            final double ay = ur * uy + beta * ry;
+            final double az = ur * uz + beta * rz;
             out[a] -= ax;
             out[a + 1] -= ay;
             out[a + 2] -= az;
@@ -323,12 +340,8 @@ public final class ImplicitEuler implements Integrator {
             out[b + 1] += ay;
             out[b + 2] += az;
         }
-        for (int i = 0; i < s.nodeCount; i++) {
-            if (im[i] == 0) {
-                out[3 * i] = 0;
-                out[3 * i + 1] = 0;
-                out[3 * i + 2] = 0;
-            }
+        for (int k = 0; k < n3; k++) {
+            out[k] *= fr[k];
         }
     }
 
@@ -343,7 +356,7 @@ public final class ImplicitEuler implements Integrator {
     private void allocate(SystemState st) {
         int n3 = 3 * st.nodeCount;
         int ns = st.springCount();
-        if (f == null || f.length != n3 || su.length != 3 * ns) {
+        if (f == null || f.length != n3 || block.length != 5 * ns) {
             f = new double[n3];
             xs = new double[n3];
             vs = new double[n3];
@@ -352,9 +365,10 @@ public final class ImplicitEuler implements Integrator {
             z = new double[n3];
             p = new double[n3];
             ap = new double[n3];
-            diag = new double[n3];
-            su = new double[3 * ns];
-            sg = new double[ns];
+            invDiag = new double[n3];
+            free = new double[n3];
+            massTerm = new double[n3];
+            block = new double[5 * ns];
         }
     }
 }

@@ -1,0 +1,58 @@
+package org.tensim.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.scene.diaphragm.BreathingCycle;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+
+/**
+ * The real-time study on two small models and a short run: every configuration is
+ * run and reported, the two-thread RK2 gives the one-thread field, and the sternum's
+ * mass scaling leaves the field nearly unchanged (its inertial forces are small).
+ */
+class RealTimeStudyTest {
+    static final Path BOXES = Path.of("..", "shared", "meshes", "bodyparts3d", "rib-sternum-bounds-mm.json");
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void reportsEveryConfigurationAndItsErrors(@TempDir Path out) throws IOException {
+        assumeTrue(Files.isRegularFile(BOXES), "rib boxes not present at " + BOXES.toAbsolutePath());
+        Map<String, Object> s = RealTimeStudy.run(new int[] {6, 8}, BOXES, DiaphragmParameters.defaults(),
+                BreathingCycle.quiet(), new DiaphragmControls(1, 2600), 0.4, out, null);
+        List<Map<String, Object>> runs = (List<Map<String, Object>>) s.get("runs");
+        int configs = RealTimeStudy.configs().size();
+        assertEquals(2 * configs, runs.size());
+        assertTrue(Files.size(out.resolve("realtime.png")) > 0);
+        assertEquals(1 + 2 * configs, Files.readAllLines(out.resolve("realtime.csv")).size());
+        assertEquals(0.0, (double) runs.get(0).get("relative_rms_error"), "the reference against itself");
+        for (Map<String, Object> r : runs) {
+            assertTrue((double) r.get("realtime_factor") > 0, r.toString());
+            assertTrue(!(boolean) r.get("diverged"), r.toString());
+            String config = (String) r.get("config");
+            double own = (double) r.get("error_vs_rk2_same_resolution");
+            if (config.contains("2 threads")) {
+                assertTrue(own < 1e-9, "thread count changes rounding only: " + r);
+            } else if (config.contains("sternum mass")) {
+                assertTrue(own < 0.05, "sternum mass scaling changes the field little: " + r);
+            } else if (config.startsWith("implicit")) {
+                assertTrue((double) r.get("cg_products_per_step") > 0, r.toString());
+            }
+            if (config.contains("sternum mass")) {
+                // It lifts the sternum's limit on the step: a larger stable step than the unscaled RK2's.
+                Map<String, Object> plain = runs.stream().filter(x -> x.get("rings").equals(r.get("rings"))
+                        && ((String) x.get("config")).startsWith("rk2 at the stable step / 1")).findFirst().get();
+                assertTrue((double) r.get("dt_s") > 1.5 * (double) plain.get("dt_s"), r + " vs " + plain);
+            }
+        }
+    }
+}
