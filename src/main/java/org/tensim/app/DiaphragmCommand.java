@@ -2,6 +2,7 @@ package org.tensim.app;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.bench.RealTimeStudy;
@@ -9,7 +10,10 @@ import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.experiment.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
+import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshUnits;
+import org.tensim.model.Vec3;
+import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -66,6 +70,34 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm"
                     + " (default: ${DEFAULT-VALUE})")
     double attachMm = DiaphragmParameters.defaults().attachThresholdM() * 1e3;
+
+    @Option(names = "--weld-tolerance", paramLabel = "MM",
+            description = "mesh cleaning: vertices closer than this are merged, mm (default: ${DEFAULT-VALUE})")
+    double weldMm = 1e3 * MeshCleaner.Options.defaults().weldToleranceM();
+
+    @Option(names = "--min-piece-fraction", paramLabel = "F",
+            description = "mesh cleaning: disconnected pieces with fewer than this fraction of the triangles are"
+                    + " dropped; 0 keeps every piece (default: ${DEFAULT-VALUE})")
+    double minPieceFraction = MeshCleaner.Options.defaults().minComponentFraction();
+
+    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",",
+            description = "normal of the muscle/tendon plane, pointing to the tendon (default: 0,0,1, superior)")
+    double[] tendonNormal;
+
+    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",",
+            description = "a point of the muscle/tendon plane, mm, mesh frame (default: placed so that the tendon"
+                    + " has --tendon-fraction of the upper surface)")
+    double[] tendonPointMm;
+
+    @Option(names = "--tendon-fraction", paramLabel = "F",
+            description = "share of the upper surface's area given to the tendon when no --tendon-point is given"
+                    + " (default: ${DEFAULT-VALUE})")
+    double tendonFraction = DiaphragmParameters.defaults().tendonAreaFraction();
+
+    @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
+            description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
+                    + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
+    List<ActionLines.Line> actionLines;
 
     @Option(names = "--integrator", paramLabel = "NAME",
             description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
@@ -125,7 +157,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     "--threads must be at least 1, got " + threads);
         }
         MeshUnits u = MeshUnits.parse(units);
-        DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3);
+        DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
+                .withTendonAreaFraction(tendonFraction);
+        if (tendonNormal != null || tendonPointMm != null) {
+            Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
+            Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
+            p = p.withTendonPlane(normal, point);
+        }
+        MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
+        List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
         DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
@@ -141,9 +181,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
         DiaphragmSetup.Built built;
         if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
-            built = DiaphragmSetup.generated(43, boxes, p, cycle, controls);
+            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls);
         } else {
-            built = DiaphragmSetup.load(mesh, u, thicknessMm * 1e-3, boxes, p, cycle, controls);
+            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls);
         }
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
@@ -151,5 +191,43 @@ public final class DiaphragmCommand implements Callable<Integer> {
         Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, threads, out, System.out);
         System.out.println(Json.line(summary));
         return 0;
+    }
+
+    private Vec3 vector(String option, double[] v, double scale) {
+        if (v.length != 3) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    option + " needs three numbers X,Y,Z, got " + v.length);
+        }
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0 && option.equals("--tendon-normal")) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    option + " must not be the zero vector");
+        }
+        return new Vec3(scale * v[0], scale * v[1], scale * v[2]);
+    }
+
+    /** Reads "X,Y,R" in millimetres into an action line in metres. */
+    static final class ActionLineConverter implements picocli.CommandLine.ITypeConverter<ActionLines.Line> {
+        @Override
+        public ActionLines.Line convert(String value) {
+            String[] f = value.split(",");
+            if (f.length != 3) {
+                throw new picocli.CommandLine.TypeConversionException("expected X,Y,R in mm (three numbers), got '"
+                        + value + "'");
+            }
+            double[] d = new double[3];
+            for (int i = 0; i < 3; i++) {
+                try {
+                    d[i] = Double.parseDouble(f[i].trim());
+                } catch (NumberFormatException e) {
+                    throw new picocli.CommandLine.TypeConversionException("expected X,Y,R in mm, '" + f[i].trim()
+                            + "' in '" + value + "' is not a number");
+                }
+            }
+            try {
+                return new ActionLines.Line(1e-3 * d[0], 1e-3 * d[1], 1e-3 * d[2]);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage() + " (in '" + value + "')");
+            }
+        }
     }
 }

@@ -87,6 +87,33 @@ class DiaphragmCommandTest {
                 ((Number) s2.get("dome_excursion_mm")).doubleValue(), 2.0);
     }
 
+    /** The tendon plane and the action lines are settable from the command line, and act. */
+    @Test
+    void tendonPlaneAndActionLinesAreSettable() throws Exception {
+        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
+        assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
+        Path mesh = dir.resolve("coarse.obj");
+        assertEquals("0", run("diaphragm-mesh", "--rings", "10", "--out", mesh.toString())[0]);
+        Path a = dir.resolve("a");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", a.toString(),
+                "--vtk-per-cycle", "0", "--tendon-fraction", "0.2", "--threads", "1");
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> sa = Json.readMap(a.resolve("summary.json"));
+        assertEquals(0.2, ((Number) sa.get("tendon_area_fraction")).doubleValue(), 0.03);
+        // One narrow action line far outside the diaphragm: the muscle pulls nothing, the dome stays up.
+        Path b = dir.resolve("b");
+        r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", b.toString(),
+                "--vtk-per-cycle", "0", "--action-line", "500,500,10", "--threads", "1");
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> sb = Json.readMap(b.resolve("summary.json"));
+        assertTrue(((Number) sb.get("dome_excursion_mm")).doubleValue() < 0.3
+                * ((Number) sa.get("dome_excursion_mm")).doubleValue(), sb + " vs " + sa);
+        r = run("diaphragm", "--tendon-normal", "0,0,0");
+        assertTrue(r[2].contains("--tendon-normal must not be the zero vector"), r[2]);
+        r = run("diaphragm", "--action-line", "1,2");
+        assertTrue(r[2].contains("expected X,Y,R in mm"), r[2]);
+    }
+
     @Test
     void aDivergingRunStopsWithOneLineAndKeepsWhatItWrote() throws Exception {
         assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");

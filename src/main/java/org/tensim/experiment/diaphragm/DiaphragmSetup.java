@@ -4,6 +4,7 @@ import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import org.tensim.io.BoxesJson;
 import org.tensim.io.mesh.MeshCleaner;
@@ -12,6 +13,7 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -56,7 +58,19 @@ public final class DiaphragmSetup {
     public static Built load(Path meshFile, MeshUnits units, double offsetThicknessM, Path boxesFile,
             DiaphragmParameters p, BreathingCycle cycle, DiaphragmControls controls)
             throws IOException, MeshFormatException {
-        MeshCleaner.Result r = MeshLoader.load(meshFile, units);
+        return load(meshFile, units, MeshCleaner.Options.defaults(), offsetThicknessM, null, boxesFile, p, cycle,
+                controls);
+    }
+
+    /**
+     * As {@link #load(Path, MeshUnits, double, Path, DiaphragmParameters, BreathingCycle, DiaphragmControls)}
+     * with the mesh cleaner's settings (welding, small pieces kept or dropped) and the muscle's action lines
+     * (null: the scene's default, one line through the top of each dome).
+     */
+    public static Built load(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
+            List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls) throws IOException, MeshFormatException {
+        MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
         TriangleMesh m = r.mesh();
         TwoSurfaces s;
         SurfaceMode mode;
@@ -72,15 +86,21 @@ public final class DiaphragmSetup {
             s = TwoSurfaces.offset(m, offsetThicknessM);
             mode = SurfaceMode.OFFSET;
         }
-        return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, null), r.report(), mode,
+        return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, lines), r.report(), mode,
                 meshFile.toString());
     }
 
     /** The generated double dome at a resolution (rings per face), split into its two faces. */
     public static Built generated(int rings, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
             DiaphragmControls controls) throws IOException {
+        return generated(rings, null, boxesFile, p, cycle, controls);
+    }
+
+    /** As {@link #generated(int, Path, DiaphragmParameters, BreathingCycle, DiaphragmControls)} with action lines. */
+    public static Built generated(int rings, List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls) throws IOException {
         TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
-        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, null), null,
+        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines), null,
                 SurfaceMode.SHELL, "generated double dome, " + rings + " rings");
     }
 

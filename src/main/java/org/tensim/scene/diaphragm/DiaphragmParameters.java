@@ -99,6 +99,13 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
                 structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM, bendingFactor);
     }
 
+    /** The same parameters with another tendon area fraction (places the plane when no point is given). */
+    public DiaphragmParameters withTendonAreaFraction(double fraction) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
+                fraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness, structureNodeMassKg,
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+    }
+
     /** The same parameters with another sternum node mass, kg. */
     public DiaphragmParameters withStructureNodeMass(double kg) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
