@@ -249,6 +249,26 @@ final class DiaphragmSceneBuilder {
         }
     }
 
+    /**
+     * When no node is near the spine segment (a real mesh whose crura reach lower and further
+     * forward than the segment placed from the rib boxes), the crura are taken from the mesh:
+     * they are the diaphragm's lowest insertion (on the lumbar vertebrae L1-L3), so the free
+     * nodes within the attachment threshold above the mesh's lowest point are fixed.
+     */
+    private void attachCrura() {
+        double low = Double.POSITIVE_INFINITY;
+        for (int v = 0; v < nv; v++) {
+            low = Math.min(low, mesh.coord(v, 2));
+        }
+        for (int v = 0; v < nv; v++) {
+            if (!attached[v] && mesh.coord(v, 2) <= low + p.attachThresholdM()) {
+                attached[v] = true;
+                t.node(v).fix();
+                attachedSpine++;
+            }
+        }
+    }
+
     void attach() {
         attached = new boolean[nv];
         List<RibCage.Segment> segs = cage.segments();
@@ -278,6 +298,9 @@ final class DiaphragmSceneBuilder {
                 springs.add(v, best.b(), p.attachStiffness());
                 attachedCartilage++;
             }
+        }
+        if (attachedSpine == 0) {
+            attachCrura();
         }
         int[] all = new int[t.nodeCount()];
         System.arraycopy(labels, 0, all, 0, nv);

@@ -40,7 +40,7 @@ import org.tensim.model.Vec3;
  * anterior end of each of ribs 1-7 to the two nearest sternum nodes, and from ribs
  * 8-10 to the anterior end of the rib above (the costal margin).
  *
- * <p><b>Spine.</b> A fixed vertical segment in front of the heads of ribs 9-12 (the
+ * <p><b>Spine.</b> A fixed vertical segment in front of the boxes of ribs 9-12 (the
  * paper's Fig. 4 shows the spine's influence): diaphragm nodes near it (the crura)
  * are fixed.
  */
@@ -176,8 +176,10 @@ public final class RibCage {
                 prevEnd = end;
             }
         }
-        // The spine: a fixed vertical segment at the anterior face of the vertebral bodies, 20 mm in
-        // front of the mean head of ribs 9-12, from their heads down to 100 mm below the lowest rib.
+        // The spine: a fixed vertical segment 20 mm in front of the mean posterior extent of the boxes
+        // of ribs 9-12 (their angles: the heads, on the vertebral bodies, lie further forward), from
+        // their tops down to 100 mm below the lowest rib. A mesh whose crura are not near it gets them
+        // from its lowest nodes (DiaphragmSceneBuilder.attachCrura).
         double headY = 0;
         double headZ = Double.POSITIVE_INFINITY;
         double lowZ = Double.POSITIVE_INFINITY;

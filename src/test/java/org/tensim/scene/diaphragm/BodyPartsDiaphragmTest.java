@@ -36,6 +36,19 @@ class BodyPartsDiaphragmTest {
         DiaphragmScene scene = DiaphragmScene.build(s, SceneFixture.boxes(), DiaphragmParameters.defaults(),
                 BreathingCycle.quiet(), new DiaphragmControls(1, 2300), null);
         assertTrue(scene.attachedNodes() > 100, "attached " + scene.attachedNodes());
+        // No node is near the spine segment placed from the rib boxes, so the crura are taken from the
+        // mesh: the free nodes within the threshold above its lowest point are fixed, and only those.
+        assertTrue(scene.attachedToSpine() > 10, "crura fixed: " + scene.attachedToSpine());
+        double low = Double.POSITIVE_INFINITY;
+        for (int v = 0; v < scene.diaphragmNodes(); v++) {
+            low = Math.min(low, s.mesh().coord(v, 2));
+        }
+        for (int v = 0; v < scene.diaphragmNodes(); v++) {
+            if (scene.topology().node(v).isFixed()) {
+                assertTrue(s.mesh().coord(v, 2) <= low + DiaphragmParameters.defaults().attachThresholdM() + 1e-12,
+                        "fixed node " + v + " is not among the lowest");
+            }
+        }
         assertTrue(scene.topology().rigidLinks().size() > 100);
         assertEquals(0.12, scene.tendonAreaFraction(), 0.02);
         Simulation sim = scene.newSimulation();
