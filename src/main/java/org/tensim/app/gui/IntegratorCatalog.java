@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
 import org.tensim.solver.Integrator;
+import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.integrators.Integrators;
 
 /**
@@ -15,6 +16,14 @@ import org.tensim.solver.integrators.Integrators;
 public final class IntegratorCatalog {
     /** The default: the paper's integrator. */
     public static final String DEFAULT = "rk2";
+    /**
+     * Implicit Euler with its CG stopped at a relative residual of 1e-3: the setting of the real-time
+     * study (docs/diaphragm.md), with which a 14-ring diaphragm at a 10 ms step runs faster than real
+     * time within 8 % of RK2; the registry's implicit Euler solves to 1e-12, for accuracy studies.
+     */
+    public static final String REAL_TIME_IMPLICIT = "implicit-euler-cg1e-3";
+    /** CG tolerance of {@link #REAL_TIME_IMPLICIT}. */
+    public static final double REAL_TIME_CG_TOLERANCE = 1e-3;
 
     private IntegratorCatalog() {
     }
@@ -32,6 +41,8 @@ public final class IntegratorCatalog {
                 l.add(c);
             }
         }
+        l.add(new IntegratorChoice(REAL_TIME_IMPLICIT, "implicit-euler, CG to 1e-3 (real time on coarse models)",
+                () -> new ImplicitEuler().setTolerance(REAL_TIME_CG_TOLERANCE)));
         return List.copyOf(l);
     }
 }

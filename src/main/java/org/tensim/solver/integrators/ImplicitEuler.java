@@ -95,6 +95,11 @@ public final class ImplicitEuler implements Integrator {
         return this;
     }
 
+    /** Relative residual at which CG stops. */
+    public double tolerance() {
+        return tolerance;
+    }
+
     /** Cap on CG iterations per step (>= 1). */
     public ImplicitEuler setMaxIterations(int n) {
         maxIterations = Check.atLeast("implicit Euler CG iteration cap", n, 1);
