@@ -45,12 +45,18 @@ class DiaphragmCommandTest {
         return new String[] {String.valueOf(code), out.toString(), err.toString()};
     }
 
-    @Test
-    void writesEveryOutputAndASummaryWithTheIssuesKeys() throws Exception {
+    /** A generated mesh of the given rings in the test folder; skips without rib boxes or AWT (figures). */
+    private Path coarseMesh(int rings) {
         assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
-        Path mesh = dir.resolve("coarse.obj");
-        assertEquals("0", run("diaphragm-mesh", "--rings", "10", "--out", mesh.toString())[0]);
+        Path mesh = dir.resolve("coarse-" + rings + ".obj");
+        assertEquals("0", run("diaphragm-mesh", "--rings", String.valueOf(rings), "--out", mesh.toString())[0]);
+        return mesh;
+    }
+
+    @Test
+    void writesEveryOutputAndASummaryWithTheIssuesKeys() throws Exception {
+        Path mesh = coarseMesh(10);
         Path out = dir.resolve("out");
         String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", out.toString(),
                 "--vtk-per-cycle", "4");
@@ -90,10 +96,7 @@ class DiaphragmCommandTest {
     /** The tendon plane and the action lines are settable from the command line, and act. */
     @Test
     void tendonPlaneAndActionLinesAreSettable() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
-        assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
-        Path mesh = dir.resolve("coarse.obj");
-        assertEquals("0", run("diaphragm-mesh", "--rings", "10", "--out", mesh.toString())[0]);
+        Path mesh = coarseMesh(10);
         Path a = dir.resolve("a");
         String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", a.toString(),
                 "--vtk-per-cycle", "0", "--tendon-fraction", "0.2", "--threads", "1");

@@ -53,7 +53,9 @@ public final class ImplicitEuler implements Integrator {
     private double[] invDiag; // per degree of freedom: 1 / A_kk on free nodes, 0 elsewhere
     private double[] free; // per degree of freedom: 1 on free nodes, 0 on fixed and driven ones
     private double[] massTerm; // per degree of freedom: (m + h c_v) on free nodes, 0 elsewhere
-    private double[] block; // per spring: u_x, u_y, u_z, alpha, beta (see linearise)
+    private double[] dir; // per spring: direction u_x, u_y, u_z
+    private double[] blockA; // per spring: alpha, beta of its block of A (see linearise)
+    private double[] blockS; // per spring: the same for the stiffness S alone: k (1 - g), k g
     private final double[] scratch = new double[6];
     private SystemState s;
     private double h;
@@ -241,7 +243,6 @@ public final class ImplicitEuler implements Integrator {
                 dg[k] = m[i] + hv;
             }
         }
-        final double[] bl = block;
         for (int i = 0; i < sa.length; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
@@ -256,12 +257,13 @@ public final class ImplicitEuler implements Integrator {
             final double uz = dz * inv;
             final double alpha = h2 * kk[i] * (1 - g) + h * cc[i];
             final double beta = h2 * kk[i] * g;
-            final int o = 5 * i;
-            bl[o] = ux;
-            bl[o + 1] = uy;
-            bl[o + 2] = uz;
-            bl[o + 3] = alpha;
-            bl[o + 4] = beta;
+            dir[3 * i] = ux;
+            dir[3 * i + 1] = uy;
+            dir[3 * i + 2] = uz;
+            blockA[2 * i] = alpha;
+            blockA[2 * i + 1] = beta;
+            blockS[2 * i] = kk[i] * (1 - g);
+            blockS[2 * i + 1] = kk[i] * g;
             final double ddx = alpha * ux * ux + beta;
             final double ddy = alpha * uy * uy + beta;
             final double ddz = alpha * uz * uz + beta;
@@ -280,61 +282,43 @@ public final class ImplicitEuler implements Integrator {
     /** out = S p (stiffness only, k (u u^T (1 - g) + g I) per spring), for every node. */
     private void applyStiffness(double[] pv, double[] out) {
         java.util.Arrays.fill(out, 0);
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] kk = s.springK;
-        final double[] bl = block;
-        final double h2 = h * h;
-        for (int i = 0; i < sa.length; i++) {
-            final int a = 3 * sa[i];
-            final int b = 3 * sb[i];
-            final int o = 5 * i;
-            final double ux = bl[o];
-            final double uy = bl[o + 1];
-            final double uz = bl[o + 2];
-            final double k = kk[i];
-            final double trans = bl[o + 4] / h2; // k g
-            final double axial = k - trans; // k (1 - g)
-            final double rx = pv[b] - pv[a];
-            final double ry = pv[b + 1] - pv[a + 1];
-            final double rz = pv[b + 2] - pv[a + 2];
-            final double ur = axial * (ux * rx + uy * ry + uz * rz);
-            final double ax = ur * ux + trans * rx;
-            final double ay = ur * uy + trans * ry;
-            final double az = ur * uz + trans * rz;
-            out[a] -= ax;
-            out[a + 1] -= ay;
-            out[a + 2] -= az;
-            out[b] += ax;
-            out[b + 1] += ay;
-            out[b + 2] += az;
-        }
+        addBlocks(blockS, pv, out);
     }
 
     /** out = (M + h C + h^2 S) p on free nodes, 0 on the others. */
     private void multiply(double[] pv, double[] out) {
         products++;
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] bl = block;
         final double[] mt = massTerm;
         final double[] fr = free;
         final int n3 = out.length;
         for (int k = 0; k < n3; k++) {
             out[k] = mt[k] * pv[k];
         }
+        addBlocks(blockA, pv, out);
+        for (int k = 0; k < n3; k++) {
+            out[k] *= fr[k];
+        }
+    }
+
+    /**
+     * out += sum over springs of the block {@code alpha u u^T + beta I} (coefficients
+     * {@code coef[2i]}, {@code coef[2i + 1]}) times (p_b - p_a), added at b and subtracted at a.
+     */
+    private void addBlocks(double[] coef, double[] pv, double[] out) {
+        final int[] sa = s.springA;
+        final int[] sb = s.springB;
+        final double[] u = dir;
         for (int i = 0; i < sa.length; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
-            final int o = 5 * i;
-            final double ux = bl[o];
-            final double uy = bl[o + 1];
-            final double uz = bl[o + 2];
-            final double beta = bl[o + 4];
+            final double ux = u[3 * i];
+            final double uy = u[3 * i + 1];
+            final double uz = u[3 * i + 2];
+            final double beta = coef[2 * i + 1];
             final double rx = pv[b] - pv[a];
             final double ry = pv[b + 1] - pv[a + 1];
             final double rz = pv[b + 2] - pv[a + 2];
-            final double ur = bl[o + 3] * (ux * rx + uy * ry + uz * rz);
+            final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
             final double ax = ur * ux + beta * rx;
             final double ay = ur * uy + beta * ry;
             final double az = ur * uz + beta * rz;
@@ -344,9 +328,6 @@ public final class ImplicitEuler implements Integrator {
             out[b] += ax;
             out[b + 1] += ay;
             out[b + 2] += az;
-        }
-        for (int k = 0; k < n3; k++) {
-            out[k] *= fr[k];
         }
     }
 
@@ -361,7 +342,7 @@ public final class ImplicitEuler implements Integrator {
     private void allocate(SystemState st) {
         int n3 = 3 * st.nodeCount;
         int ns = st.springCount();
-        if (f == null || f.length != n3 || block.length != 5 * ns) {
+        if (f == null || f.length != n3 || dir.length != 3 * ns) {
             f = new double[n3];
             xs = new double[n3];
             vs = new double[n3];
@@ -373,7 +354,9 @@ public final class ImplicitEuler implements Integrator {
             invDiag = new double[n3];
             free = new double[n3];
             massTerm = new double[n3];
-            block = new double[5 * ns];
+            dir = new double[3 * ns];
+            blockA = new double[2 * ns];
+            blockS = new double[2 * ns];
         }
     }
 }
