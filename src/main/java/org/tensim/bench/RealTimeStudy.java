@@ -111,71 +111,49 @@ public final class RealTimeStudy {
         Files.createDirectories(out);
         double runS = Math.min(seconds, cycle.inspirationS());
         List<Config> configs = configs();
-        List<Map<String, Object>> rows = new ArrayList<>();
-        List<ResolutionStudy.Run> runs = new ArrayList<>();
-        List<Config> runConfigs = new ArrayList<>();
-        List<Integer> runRings = new ArrayList<>();
-        // The reference first, so that a long study can be read as it goes.
-        int[] order = new int[ringCounts.length];
-        for (int i = 0; i < ringCounts.length; i++) {
-            order[i] = ringCounts[ringCounts.length - 1 - i];
-        }
-        ResolutionStudy.Run reference = null;
-        List<double[]> timings = new ArrayList<>();
         DiaphragmParameters scaled = p.withStructureNodeMass(STERNUM_MASS_SCALE * p.structureNodeMassKg());
-        List<ResolutionStudy.Run> sameResolution = new ArrayList<>();
-        for (int rings : order) {
-            DiaphragmScene scene = DiaphragmSetup.generated(rings, boxes, p, cycle, controls).scene();
-            DiaphragmScene scaledScene = DiaphragmSetup.generated(rings, boxes, scaled, cycle, controls).scene();
-            ResolutionStudy.Run own = null;
-            for (Config c : configs) {
-                double[] timing = new double[5];
-                ResolutionStudy.Run r = simulate(c.scaledSternum() ? scaledScene : scene, rings, c, runS, timing);
-                if (reference == null) {
-                    reference = r;
-                }
-                if (own == null) {
-                    own = r; // the first configuration, the paper's RK2, at this resolution
-                }
-                sameResolution.add(own);
-                runs.add(r);
-                runConfigs.add(c);
-                runRings.add(rings);
-                timings.add(timing);
-                if (log != null) {
-                    log.println(String.format(Locale.ROOT,
-                            "%d rings, %s: dt %.2e s, %.3f of real time (wall), %.3f (CPU), error %.3f%s", rings,
-                            c.label(), r.dt(), timing[0], timing[1], ResolutionStudy.error(reference, r),
-                            timing[4] > 0 ? ", diverged" : ""));
-                }
-            }
-        }
+        List<Map<String, Object>> rows = new ArrayList<>();
+        ResolutionStudy.Run reference = null;
         try (CsvWriter csv = new CsvWriter(out.resolve("realtime.csv"), List.of("rings", "nodes", "springs",
                 "config", "dt_s", "realtime_factor", "realtime_factor_cpu", "apex_descent_mm", "cg_products_per_step",
                 "relative_rms_error", "error_vs_rk2_same_resolution"), 1)) {
-            for (int i = 0; i < runs.size(); i++) {
-                ResolutionStudy.Run r = runs.get(i);
-                double[] tm = timings.get(i);
-                double e = ResolutionStudy.error(reference, r);
-                double own = r == sameResolution.get(i) ? 0 : ResolutionStudy.error(sameResolution.get(i), r);
-                Map<String, Object> row = new LinkedHashMap<>();
-                row.put("rings", runRings.get(i));
-                row.put("nodes", r.nodes());
-                row.put("springs", r.springs());
-                row.put("config", runConfigs.get(i).label());
-                row.put("threads", runConfigs.get(i).threads());
-                row.put("dt_s", r.dt());
-                row.put("realtime_factor", DiaphragmReport.round(tm[0], 4));
-                row.put("realtime_factor_cpu", DiaphragmReport.round(tm[1], 4));
-                row.put("apex_descent_mm", DiaphragmReport.round(tm[2], 3));
-                row.put("cg_products_per_step", DiaphragmReport.round(tm[3], 1));
-                row.put("relative_rms_error", DiaphragmReport.round(e, 4));
-                row.put("error_vs_rk2_same_resolution", DiaphragmReport.round(own, 4));
-                row.put("diverged", tm[4] > 0);
-                rows.add(row);
-                csv.rowText(String.valueOf(runRings.get(i)), String.valueOf(r.nodes()), String.valueOf(r.springs()),
-                        runConfigs.get(i).label(), String.valueOf(r.dt()), String.valueOf(tm[0]), String.valueOf(tm[1]),
-                        String.valueOf(tm[2]), String.valueOf(tm[3]), String.valueOf(e), String.valueOf(own));
+            // Finest first: the reference is the first run, and a long study can be read as it goes.
+            for (int i = ringCounts.length - 1; i >= 0; i--) {
+                int rings = ringCounts[i];
+                DiaphragmScene scene = DiaphragmSetup.generated(rings, boxes, p, cycle, controls).scene();
+                DiaphragmScene scaledScene = DiaphragmSetup.generated(rings, boxes, scaled, cycle, controls).scene();
+                ResolutionStudy.Run own = null; // the paper's RK2 (the first configuration) at this resolution
+                for (Config c : configs) {
+                    double[] tm = new double[5];
+                    ResolutionStudy.Run r = simulate(c.scaledSternum() ? scaledScene : scene, rings, c, runS, tm);
+                    reference = reference == null ? r : reference;
+                    own = own == null ? r : own;
+                    double e = r == reference ? 0 : ResolutionStudy.error(reference, r);
+                    double eOwn = r == own ? 0 : ResolutionStudy.error(own, r);
+                    Map<String, Object> row = new LinkedHashMap<>();
+                    row.put("rings", rings);
+                    row.put("nodes", r.nodes());
+                    row.put("springs", r.springs());
+                    row.put("config", c.label());
+                    row.put("threads", c.threads());
+                    row.put("dt_s", r.dt());
+                    row.put("realtime_factor", DiaphragmReport.round(tm[0], 4));
+                    row.put("realtime_factor_cpu", DiaphragmReport.round(tm[1], 4));
+                    row.put("apex_descent_mm", DiaphragmReport.round(tm[2], 3));
+                    row.put("cg_products_per_step", DiaphragmReport.round(tm[3], 1));
+                    row.put("relative_rms_error", DiaphragmReport.round(e, 4));
+                    row.put("error_vs_rk2_same_resolution", DiaphragmReport.round(eOwn, 4));
+                    row.put("diverged", tm[4] > 0);
+                    rows.add(row);
+                    csv.rowText(String.valueOf(rings), String.valueOf(r.nodes()), String.valueOf(r.springs()),
+                            c.label(), String.valueOf(r.dt()), String.valueOf(tm[0]), String.valueOf(tm[1]),
+                            String.valueOf(tm[2]), String.valueOf(tm[3]), String.valueOf(e), String.valueOf(eOwn));
+                    if (log != null) {
+                        log.println(String.format(Locale.ROOT,
+                                "%d rings, %s: dt %.2e s, %.3f of real time (wall), %.3f (CPU), error %.3f%s", rings,
+                                c.label(), r.dt(), tm[0], tm[1], e, tm[4] > 0 ? ", diverged" : ""));
+                    }
+                }
             }
         }
         Map<String, Object> best = null;
