@@ -150,16 +150,21 @@ public final class ImplicitEuler implements Integrator {
         final double[] fr = free;
         double bNorm2 = 0;
         for (int k = 0; k < n3; k++) {
-            double b = fr[k] * step * (f[k] - step * ap[k]);
+            // Selected, not multiplied by the 0/1 mask: a fixed node's force may be anything.
+            double b = fr[k] == 0 ? 0 : step * (f[k] - step * ap[k]);
             r[k] = b;
             bNorm2 += b * b;
-            dv[k] *= fr[k];
+            if (fr[k] == 0) {
+                dv[k] = 0;
+            }
         }
         solve(bNorm2);
 
         for (int k = 0; k < n3; k++) {
-            v[k] += dv[k];
-            x[k] += fr[k] * step * v[k];
+            if (fr[k] != 0) {
+                v[k] += dv[k];
+                x[k] += step * v[k];
+            }
         }
         st.applyMotions(t + step, x, v, scratch);
     }
