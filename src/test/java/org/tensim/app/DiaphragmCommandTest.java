@@ -97,7 +97,8 @@ class DiaphragmCommandTest {
     /** The tendon plane and the action lines are settable from the command line, and act. */
     @Test
     void tendonPlaneAndActionLinesAreSettable() throws Exception {
-        Path mesh = coarseMesh(10);
+        // 16 rings: below about 14 the coarse dome's response is erratic (docs/diaphragm.md).
+        Path mesh = coarseMesh(16);
         Path a = dir.resolve("a");
         String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", a.toString(),
                 "--vtk-per-cycle", "0", "--tendon-fraction", "0.2", "--threads", "1");

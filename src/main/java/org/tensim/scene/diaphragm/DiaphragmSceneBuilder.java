@@ -220,14 +220,21 @@ final class DiaphragmSceneBuilder {
             }
             Set<Integer> targets = new java.util.TreeSet<>();
             targets.add(surfaces.partner(u));
+            double longestEdge = 0;
             for (int j : neighbours.get(u)) {
+                longestEdge = Math.max(longestEdge, TwoSurfaces.distance(mesh, u, j));
                 if (surfaces.isUpper(j)) {
                     targets.add(surfaces.partner(j));
                 }
             }
+            // The diagonals couple the two faces in shear: they must exist at every element size, so the
+            // cap (against a partner found on the far side of a badly paired mesh) grows with the local
+            // edge length. A cap of 3 thicknesses alone dropped every diagonal on meshes coarser than
+            // about 7 mm and left the faces free to slide (docs/diaphragm.md, resolution study).
+            final double cap = 3 * (thickness + longestEdge);
             final int up = u;
             targets.removeIf(l -> l < 0 || surfaces.isUpper(l) || springs.contains(up, l)
-                    || linkPairs.contains(key(up, l)) || TwoSurfaces.distance(mesh, up, l) > maxLen);
+                    || linkPairs.contains(key(up, l)) || TwoSurfaces.distance(mesh, up, l) > cap);
             for (int l : targets) {
                 double len = TwoSurfaces.distance(mesh, u, l);
                 // Across the thickness the tendon is held by its rigid links; its springs there are muscle-like.
