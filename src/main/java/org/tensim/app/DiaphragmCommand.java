@@ -106,10 +106,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     /**
      * Springs from which the automatic thread count uses every core: the real-time study
-     * (docs/diaphragm.md) measured two threads 20-40 % faster at 41,638 springs (28 rings) and
-     * up, and slower at 19,354 (20 rings) and below.
+     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
+     * up, and a third slower at 12,144 (14 rings) and below.
      */
-    static final int AUTO_PARALLEL_SPRINGS = 30_000;
+    static final int AUTO_PARALLEL_SPRINGS = 20_000;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "

@@ -18,8 +18,9 @@ public final class IntegratorCatalog {
     public static final String DEFAULT = "rk2";
     /**
      * Implicit Euler with its CG stopped at a relative residual of 1e-3: the setting of the real-time
-     * study (docs/diaphragm.md), with which a 14-ring diaphragm at a 10 ms step runs faster than real
-     * time within 8 % of RK2; the registry's implicit Euler solves to 1e-12, for accuracy studies.
+     * study (docs/diaphragm.md), with which a 14-ring diaphragm at a 10 ms step runs 2.9 times real
+     * time headless within 6.4 % of RK2; the registry's implicit Euler solves to 1e-12, for accuracy
+     * studies.
      */
     public static final String REAL_TIME_IMPLICIT = "implicit-euler-cg1e-3";
     /** CG tolerance of {@link #REAL_TIME_IMPLICIT}. */
