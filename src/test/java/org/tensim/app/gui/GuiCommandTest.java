@@ -42,6 +42,58 @@ class GuiCommandTest {
     }
 
     @Test
+    void badRunForOrThreadsIsRefusedWithTheValueNamed() {
+        for (String bad : new String[] {"0", "-2", "NaN"}) {
+            StringWriter err = new StringWriter();
+            assertEquals(1, run(err, "gui", "--scene", "cube", "--run-for", bad));
+            assertTrue(err.toString().contains("--run-for") && err.toString().contains(bad), err.toString());
+        }
+        StringWriter err = new StringWriter();
+        assertEquals(1, run(err, "gui", "--scene", "cube", "--threads", "-1"));
+        assertTrue(err.toString().contains("--threads") && err.toString().contains("-1"), err.toString());
+    }
+
+    @Test
+    @Tag("gui")
+    void runForClosesTheWindowAndPrintsWhatItMeasuredAsTheLastLine() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8));
+        try {
+            code = run(err, "gui", "--scene", "cube", "--config-dir", dir.toString(), "--fresh", "--run-for", "1.5",
+                    "--unpaced");
+        } finally {
+            System.setOut(saved);
+        }
+        assertEquals(0, code, err.toString());
+        String[] lines = out.toString(java.nio.charset.StandardCharsets.UTF_8).trim().split("\\R");
+        java.util.Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<java.util.Map<String, Object>>() { });
+        assertEquals("cube", m.get("scene"));
+        assertEquals(40, ((Number) m.get("nodes")).intValue(), "the two cubes' 2 x 20 nodes");
+        assertEquals("rk2", m.get("integrator"));
+        assertEquals(false, m.get("paced"));
+        double wall = ((Number) m.get("wall_s")).doubleValue();
+        assertTrue(wall >= 1.5 && wall < 10, "closed after its 1.5 s: " + m);
+        double dt = ((Number) m.get("dt_s")).doubleValue();
+        double sim = ((Number) m.get("sim_s")).doubleValue();
+        long steps = ((Number) m.get("steps")).longValue();
+        assertTrue(steps > 0 && ((Number) m.get("frames")).longValue() > 0, "it ran and drew: " + m);
+        // The figures are consistent with one another: simulated time is steps x dt, rates are per wall second.
+        assertEquals(steps * dt, sim, 2 * dt, m.toString());
+        assertEquals(sim / wall, ((Number) m.get("realtime_factor")).doubleValue(), 1e-3, m.toString());
+        assertEquals(steps / wall, ((Number) m.get("steps_per_s")).doubleValue(), 0.1 + 1e-3 * steps / wall,
+                m.toString());
+        assertEquals(((Number) m.get("frames")).doubleValue() / wall, ((Number) m.get("fps")).doubleValue(), 0.1,
+                m.toString());
+        assertEquals(null, m.get("diverged"));
+        assertTrue(m.containsKey("error_estimate") && m.containsKey("edt_longest_delay_ms"), m.toString());
+    }
+
+    @Test
     @Tag("gui")
     void screenshotOptionWritesAPictureOfTheRunningScene() throws Exception {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
