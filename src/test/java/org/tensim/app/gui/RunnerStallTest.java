@@ -23,21 +23,28 @@ import org.tensim.view.ViewScene;
  * simulation thread: what follows a change (scaling the springs, the critical-step
  * estimate, an integrator's refactorisation) happens between two steps or in the
  * background. Measured as the longest gap between steps right after each change
- * against the longest gap over as many steps elsewhere in the same run: a ratio, so
+ * against the longest gaps over as many steps elsewhere in the same run: a ratio, so
  * that a loaded machine slows both alike. No absolute time is asserted.
+ *
+ * <p>The reference is the 90th percentile of those windows, not their median: on a
+ * shared machine the background work (the critical-step estimate, a refactorisation)
+ * competes with the simulation thread for a core, and a thread that loses a core for
+ * a scheduler slice is slowed, not stalled. Measured here (2 cores, load average 15-17):
+ * with the critical-step estimate done on the simulation thread, as it was, the ratio
+ * was 4.7 (RK2); estimated in the background, 1.0-1.1 for both integrators.
  */
 class RunnerStallTest {
     private static final int CHANGES = 8;
     /** Steps after a change (and in each reference window) whose longest gap is taken. */
     private static final int WINDOW = 5;
-    /** Largest accepted ratio of the median post-change window to the median reference window. */
-    private static final double MAX_RATIO = 10;
+    /** Largest accepted ratio of the median post-change window to the 90th percentile reference window. */
+    private static final double MAX_RATIO = 3;
 
     @ParameterizedTest
     @ValueSource(strings = {"rk2", IntegratorCatalog.REAL_TIME})
     void stiffnessChangeWhileRunningDoesNotStallTheSteps(String integrator) throws Exception {
         assumeTrue(ParameterBindingTest.boxesPresent(), "rib boxes of ../shared not found");
-        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 10,
+        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 14,
                 GuiScenes.Source.defaults().boxes()));
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), true,
@@ -74,7 +81,7 @@ class RunnerStallTest {
             @Override
             public void warning(String message) {
             }
-        });
+        }, 0);
         tuning.bind(runner);
         runner.setPaced(false);
         runner.start(first);
@@ -118,12 +125,15 @@ class RunnerStallTest {
             }
         }
         assertTrue(reference.size() >= CHANGES, "too few reference windows: " + reference.size());
-        double ratio = median(afterChange) / (double) median(reference);
-        assertTrue(ratio < MAX_RATIO, String.format(java.util.Locale.ROOT,
+        double ratio = percentile(afterChange, 0.5) / (double) percentile(reference, 0.9);
+        String figures = String.format(java.util.Locale.ROOT,
                 "%s: after a stiffness change the longest step gap is %.1f times the usual one (median %.2f ms"
-                        + " against %.2f ms over %d reference windows of %d steps; per change, ms: %s)",
-                integrator, ratio, median(afterChange) * 1e-6, median(reference) * 1e-6, reference.size(), WINDOW,
-                afterChange.stream().map(g -> String.format(java.util.Locale.ROOT, "%.2f", g * 1e-6)).toList()));
+                        + " against the 90th percentile %.2f ms of %d reference windows of %d steps; per change, ms: %s)",
+                integrator, ratio, percentile(afterChange, 0.5) * 1e-6, percentile(reference, 0.9) * 1e-6,
+                reference.size(), WINDOW,
+                afterChange.stream().map(g -> String.format(java.util.Locale.ROOT, "%.2f", g * 1e-6)).toList());
+        System.out.println(figures);
+        assertTrue(ratio < MAX_RATIO, figures);
     }
 
     /** Index of the first step that ended after time c (the change is applied before that step). */
@@ -145,9 +155,9 @@ class RunnerStallTest {
         return g;
     }
 
-    private static long median(List<Long> l) {
+    private static long percentile(List<Long> l, double q) {
         List<Long> s = new ArrayList<>(l);
         s.sort(null);
-        return s.get(s.size() / 2);
+        return s.get((int) Math.min(s.size() - 1, Math.floor(q * s.size())));
     }
 }
