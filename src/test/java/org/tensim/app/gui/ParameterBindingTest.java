@@ -63,13 +63,7 @@ class ParameterBindingTest {
     }
 
     static List<SceneFactory> factories() {
-        // The diaphragm places its ribs with BodyParts3D's boxes from ../shared: without them it is left out.
-        return boxesPresent() ? List.of(CubeViewScene.factory(), MembraneTestScene.factory(), coarseDiaphragm())
-                : List.of(CubeViewScene.factory(), MembraneTestScene.factory());
-    }
-
-    static boolean boxesPresent() {
-        return java.nio.file.Files.isRegularFile(GuiScenes.Source.defaults().boxes());
+        return List.of(CubeViewScene.factory(), MembraneTestScene.factory(), coarseDiaphragm());
     }
 
     /** The diaphragm at a coarse resolution (6 rings per face), quick to build and step. */
@@ -223,7 +217,6 @@ class ParameterBindingTest {
 
     @Test
     void diaphragmControlsReachItsSceneAndTissueSpringsScale() {
-        org.junit.jupiter.api.Assumptions.assumeTrue(boxesPresent(), "BodyParts3D rib and sternum boxes absent");
         SceneFactory f = coarseDiaphragm();
         org.tensim.view.DiaphragmViewScene s = (org.tensim.view.DiaphragmViewScene) f.create(true);
         Tuning t = tuning(s, f);
