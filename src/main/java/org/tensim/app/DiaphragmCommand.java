@@ -7,7 +7,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
 import org.tensim.io.mesh.MeshCleaner;

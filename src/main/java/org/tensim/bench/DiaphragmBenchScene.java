@@ -1,7 +1,7 @@
 package org.tensim.bench;
 
 import java.nio.file.Files;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;

@@ -13,7 +13,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
 import picocli.CommandLine;
 

@@ -5,9 +5,9 @@ import java.nio.file.Path;
 import java.util.List;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.DiaphragmViewScene;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.SceneFactory;
 
 /** The scenes the GUI can show, by name. */
 public final class GuiScenes {

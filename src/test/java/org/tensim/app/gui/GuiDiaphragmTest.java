@@ -16,8 +16,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.view.Body;
-import org.tensim.view.DiaphragmViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.DiaphragmViewScene;
 
 /**
  * The GUI on the diaphragm (coarse, so that it moves quickly): drawn as a shaded

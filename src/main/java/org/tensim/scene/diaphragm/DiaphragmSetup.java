@@ -1,4 +1,4 @@
-package org.tensim.experiment.diaphragm;
+package org.tensim.scene.diaphragm;
 
 import org.tensim.io.ProjectFolder;
 import java.io.IOException;
@@ -13,14 +13,6 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.scene.diaphragm.ActionLines;
-import org.tensim.scene.diaphragm.BreathingCycle;
-import org.tensim.scene.diaphragm.DiaphragmControls;
-import org.tensim.scene.diaphragm.DiaphragmParameters;
-import org.tensim.scene.diaphragm.DiaphragmScene;
-import org.tensim.scene.diaphragm.DoubleDomeGenerator;
-import org.tensim.scene.diaphragm.ParametricRibCage;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 
 /**
  * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two
