@@ -122,7 +122,8 @@ public final class DiaphragmViewScene implements ViewScene {
      * @param units      units of the mesh file
      * @param thicknessM thickness given to a single-surface mesh, m
      * @param rings      rings per face of the generated dome (>= 2)
-     * @param boxes      rib and sternum boxes (millimetres, BodyParts3D frame)
+     * @param boxes      rib and sternum boxes file (millimetres, BodyParts3D frame), or null for the project's
+     *                   parametric rib cage
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
         return new SceneFactory() {
