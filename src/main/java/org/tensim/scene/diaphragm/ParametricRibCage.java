@@ -24,7 +24,7 @@ import org.tensim.model.Check;
  *     vertebral levels, rises from 2.7 at rib 1 to 5.1 at rib 8 and falls to 2.7 at rib 12
  *     (Gray: the obliquity increases down to the ninth rib and decreases below it).</li>
  * <li>Rib lengths: the ribs lengthen from the first to the seventh and shorten below it (Gray);
- *     the cage is widest at ribs 7-8 (274 mm outside) and deepest at rib 6 (190 mm from the
+ *     the cage is widest at ribs 7-8 (274 mm across) and deepest at rib 6 (190 mm from the
  *     rib angles to the anterior ends).</li>
  * <li>Sternum: 170 mm long (Gray: "about 17 cm" in the adult, longer in men), inclined
  *     forwards from above downwards (Gray) by 18.5 degrees from the vertical, 54 mm wide.</li>
