@@ -7,8 +7,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
 import org.tensim.scene.shell.SandwichShell;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.TriangleMembrane;
 
 /**
  * The springs of a two-surface shell ({@link TwoSurfaces}) for a {@link TissueModel}: the faces'
@@ -82,6 +84,11 @@ public final class ShellNetwork {
         }
     }
 
+    /** A face edge's membrane spring for the whole thickness (Van Gelder), N/m. */
+    private double edgeMembrane(int i, int j, double adjacentArea, double length) {
+        return TriangleMembrane.edgeStiffness(young.youngPa(i, j) * thickness, adjacentArea, length);
+    }
+
     private boolean onOneFace(int tr) {
         boolean u = s.isUpper(mesh.corner(tr, 0));
         return s.isUpper(mesh.corner(tr, 1)) == u && s.isUpper(mesh.corner(tr, 2)) == u;
@@ -100,7 +107,7 @@ public final class ShellNetwork {
             if (sandwich == null) {
                 springs.add(i, j, young.youngPa(i, j) * (thickness / 2) * a / (len * len));
             } else if (a > 0 && s.isUpper(i) == s.isUpper(j)) {
-                springs.add(i, j, sandwich.faceEdge(young.youngPa(i, j) * thickness, a, len));
+                springs.add(i, j, sandwich.faceEdge(edgeMembrane(i, j, a, len)));
             }
         }
         if (model == TissueModel.PAPER) {
@@ -136,7 +143,7 @@ public final class ShellNetwork {
                 if (d > 3 * (thickness + e)) {
                     continue; // a partner on the far side of a badly paired mesh
                 }
-                double k = sandwich.diagonal(young.youngPa(u, j) * thickness, a, e, d);
+                double k = sandwich.diagonal(edgeMembrane(u, j, a, e), e, d);
                 if (springs.add(u, l, k)) {
                     across += k * Math.max(0, d * d - e * e) / (d * d);
                 }
@@ -158,6 +165,41 @@ public final class ShellNetwork {
                 springs.add(u, l, young.youngPa(u, l) * area[l] / len);
             }
         }
+    }
+
+    /**
+     * A shell on its own, one material throughout: node v is vertex v, of mass
+     * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs
+     * (rest length the current distance, undamped), no rigid links. For the accuracy scenes.
+     */
+    public static Topology standalone(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
+        TriangleMesh mesh = s.mesh();
+        double[] area = SurfaceGeometry.vertexAreas(mesh);
+        Topology t = new Topology();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            double mass = m.densityKgPerM3() * area[v] * s.thicknessM() / 2;
+            t.addNode(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2), mass);
+        }
+        Set<Long> pairs = new java.util.HashSet<>();
+        Sink sink = new Sink() {
+            @Override
+            public boolean add(int i, int j, double stiffness) {
+                if (i == j || !pairs.add(key(i, j))) {
+                    return false;
+                }
+                t.addSpring(i, j, stiffness, TwoSurfaces.distance(mesh, i, j), 0);
+                return true;
+            }
+
+            @Override
+            public boolean contains(int i, int j) {
+                return pairs.contains(key(i, j));
+            }
+        };
+        ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);
+        n.membrane(sink);
+        n.thickness(sink, Set.of(), new boolean[mesh.vertexCount()]);
+        return t;
     }
 
     /** Key of an unordered node pair. */

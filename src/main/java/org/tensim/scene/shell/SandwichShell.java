@@ -58,22 +58,21 @@ public record SandwichShell(double faceShare, double diagonalShare) {
         return new SandwichShell(c, 1 - 2 * c);
     }
 
-    /** Stiffness of one face edge spring, N/m (E t: the material's membrane modulus, N/m). */
-    public double faceEdge(double membraneNPerM, double adjacentAreaM2, double edgeLengthM) {
-        return faceShare * TriangleMembrane.edgeStiffness(membraneNPerM, adjacentAreaM2, edgeLengthM);
+    /** Stiffness of one face edge spring, N/m, from the edge's membrane spring for the whole thickness, N/m. */
+    public double faceEdge(double edgeMembraneNPerM) {
+        return faceShare * edgeMembraneNPerM;
     }
 
     /**
      * Stiffness of one of the two diagonals of a face edge, N/m.
      *
-     * @param membraneNPerM  E t, N/m
-     * @param adjacentAreaM2 sum of the areas of the face triangles on the edge, m^2
-     * @param edgeLengthM    the face edge's length (the diagonal's in-plane projection), m
-     * @param diagonalM      the diagonal's length, m
+     * @param edgeMembraneNPerM the edge's membrane spring for the whole thickness ({@link TriangleMembrane}), N/m
+     * @param edgeLengthM       the face edge's length (the diagonal's in-plane projection), m
+     * @param diagonalM         the diagonal's length, m
      */
-    public double diagonal(double membraneNPerM, double adjacentAreaM2, double edgeLengthM, double diagonalM) {
+    public double diagonal(double edgeMembraneNPerM, double edgeLengthM, double diagonalM) {
         double r = diagonalM / edgeLengthM;
-        return 0.5 * diagonalShare * TriangleMembrane.edgeStiffness(membraneNPerM, adjacentAreaM2, edgeLengthM) * r * r;
+        return 0.5 * diagonalShare * edgeMembraneNPerM * r * r;
     }
 
     /**
