@@ -5,7 +5,7 @@ import java.util.List;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.parallel.Parallelism;
-import org.tensim.view.Body;
+import org.tensim.scene.tunable.Body;
 
 /**
  * The worker threads of the running scene's bodies: each body large enough gets

@@ -8,7 +8,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import org.tensim.solver.CriticalTimeStep;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.SystemState;
-import org.tensim.view.Body;
+import org.tensim.scene.tunable.Body;
 
 /**
  * The critical time step of the running scene for its integrators (for the status

@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.tensim.solver.SystemState;
-import org.tensim.view.Body;
+import org.tensim.scene.tunable.Body;
 
 /**
  * {@code gui --run-for S}: plays the window for S seconds of wall time once its

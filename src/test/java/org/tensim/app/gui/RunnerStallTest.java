@@ -12,11 +12,11 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.tensim.solver.SimulationDivergedException;
-import org.tensim.view.DiaphragmViewScene;
-import org.tensim.view.FrameBuffer;
-import org.tensim.view.ProbeRecorder;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * A stiffness change made in the GUI while the diaphragm runs must not stall the
