@@ -155,6 +155,7 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
     public DiaphragmParameters withTendonYoung(double pa) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, pa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor,
+                poissonRatio, tissueModel);
     }
 }
