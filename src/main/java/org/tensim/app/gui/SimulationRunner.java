@@ -17,7 +17,9 @@ import org.tensim.scene.tunable.ViewScene;
 /**
  * Runs a scene's simulations on their own thread. Everything that changes the
  * model (parameters, integrator, a new scene) is queued and done on this thread
- * between two steps, so the model is never locked and never changed mid-step.
+ * between two steps, so the model is never locked and never changed mid-step;
+ * what a change costs beyond that (a scene rebuilt with new constants) is prepared
+ * on another thread meanwhile ({@link ViewScene#prepare}), so the steps go on.
  * After every step the {@link FrameBuffer} (for the scene graph) and the
  * {@link ProbeRecorder} (for the chart) copy what they need.
  *
@@ -67,6 +69,13 @@ public final class SimulationRunner implements Tuning.Target {
     private boolean tensegrityTendon;
     private final CriticalStepWatch critical = new CriticalStepWatch();
     private final BodyThreads threads;
+    /** Prepares changes in order, one at a time (ViewScene.prepare). */
+    private final java.util.concurrent.ExecutorService preparer = java.util.concurrent.Executors.newSingleThreadExecutor(
+            r -> {
+                Thread t = new Thread(r, "tensim-prepare-change");
+                t.setDaemon(true);
+                return t;
+            });
     private long anchorWall;
     private double anchorSim;
     private boolean reanchor = true;
@@ -105,6 +114,7 @@ public final class SimulationRunner implements Tuning.Target {
             Thread.currentThread().interrupt();
         }
         critical.close();
+        preparer.shutdownNow();
     }
 
     public void play() {
@@ -156,12 +166,35 @@ public final class SimulationRunner implements Tuning.Target {
                     // Cannot change in a running simulation: a new scene with the value, from rest.
                     rebuild();
                 } else {
-                    scene.apply(key, value);
-                    critical.invalidate();
+                    prepare(scene, key, value);
                 }
             });
         }
         LockSupport.unpark(thread);
+    }
+
+    /**
+     * The costly part of a change (ViewScene.prepare: e.g. rebuilding the diaphragm with new
+     * constants) is done on the preparing thread while the simulation steps; its hand-over
+     * waits for a gap between steps, and is dropped if another scene has been installed since.
+     */
+    private void prepare(ViewScene s, String key, double value) {
+        preparer.execute(() -> {
+            Runnable handOver;
+            try {
+                handOver = s.prepare(key, value);
+            } catch (RuntimeException e) {
+                events.failed("change not applied", e);
+                return;
+            }
+            commands.add(() -> {
+                if (scene == s) {
+                    handOver.run();
+                    critical.invalidate();
+                }
+            });
+            LockSupport.unpark(thread);
+        });
     }
 
     @Override

@@ -2,7 +2,6 @@ package org.tensim.app.gui;
 
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -43,9 +42,7 @@ class RunnerStallTest {
     @ParameterizedTest
     @ValueSource(strings = {"rk2", IntegratorCatalog.REAL_TIME})
     void stiffnessChangeWhileRunningDoesNotStallTheSteps(String integrator) throws Exception {
-        assumeTrue(ParameterBindingTest.boxesPresent(), "rib boxes of ../shared not found");
-        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 14,
-                GuiScenes.Source.defaults().boxes()));
+        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 14, null));
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), true,
                 IntegratorCatalog.available());
