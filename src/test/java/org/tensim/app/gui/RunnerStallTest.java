@@ -34,6 +34,12 @@ import org.tensim.scene.tunable.ViewScene;
  */
 class RunnerStallTest {
     private static final int CHANGES = 8;
+    /**
+     * Changes made first and not measured: the first rebuilds of the scene run interpreted and
+     * grow the heap (JIT compilation, garbage collections that stop every thread), a one-time cost
+     * that under a load average of 38 stretched the first gaps to 1.5-3.3 s.
+     */
+    private static final int WARM_UP_CHANGES = 2;
     /** Steps after a change (and in each reference window) whose longest gap is taken. */
     private static final int WINDOW = 5;
     /** Largest accepted ratio of the median post-change window to the 90th percentile reference window. */
@@ -83,12 +89,12 @@ class RunnerStallTest {
         runner.setPaced(false);
         runner.start(first);
         runner.play();
-        long[] changeNanos = new long[CHANGES];
+        long[] changeNanos = new long[CHANGES + WARM_UP_CHANGES];
         try {
             GuiTestSupport.waitFor("the first steps", () -> recorded.get() > 4 * WINDOW);
             Thread.sleep(400); // the first critical-step estimate of the new scene
             double e0 = tuning.get(DiaphragmViewScene.TISSUE_STIFFNESS);
-            for (int c = 0; c < CHANGES; c++) {
+            for (int c = 0; c < changeNanos.length; c++) {
                 int before = recorded.get();
                 // Softer, then back: stays stable for RK2 at the scene's step.
                 changeNanos[c] = System.nanoTime();
@@ -102,17 +108,20 @@ class RunnerStallTest {
         assertNull(trouble.get());
         int n = recorded.get();
         long[] t = Arrays.copyOf(stepNanos, n);
+        int measuredFrom = firstStepAfter(t, changeNanos[WARM_UP_CHANGES - 1]) + WINDOW + 1;
         List<Long> afterChange = new ArrayList<>();
         boolean[] near = new boolean[n];
-        for (long c : changeNanos) {
-            int i = firstStepAfter(t, c);
-            afterChange.add(longestGap(t, i, WINDOW));
+        for (int k = 0; k < changeNanos.length; k++) {
+            int i = firstStepAfter(t, changeNanos[k]);
+            if (k >= WARM_UP_CHANGES) {
+                afterChange.add(longestGap(t, i, WINDOW));
+            }
             for (int j = Math.max(0, i - 1); j < Math.min(n, i + WINDOW + 1); j++) {
                 near[j] = true;
             }
         }
         List<Long> reference = new ArrayList<>();
-        for (int i = 2 * WINDOW; i + WINDOW < n; i += WINDOW) { // skips the first steps (JIT warm-up)
+        for (int i = measuredFrom; i + WINDOW < n; i += WINDOW) { // after the warm-up
             boolean clear = true;
             for (int j = i - 1; j <= i + WINDOW; j++) {
                 clear &= !near[j];
