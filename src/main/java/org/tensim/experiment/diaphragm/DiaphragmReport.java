@@ -11,7 +11,10 @@ import java.util.Map;
 import org.knowm.xchart.XYChart;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
-import org.tensim.io.Json;
+import org.tensim.io.Progress;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunSignals;
+import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.VtkSeriesWriter;
 import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.DiaphragmScene;
@@ -63,9 +66,16 @@ public final class DiaphragmReport {
     private DiaphragmReport() {
     }
 
-    /** Runs and writes everything to {@code out}; returns the summary (also in summary.json). */
+    /** The files and folders the diaphragm command writes into its folder (docs/outputs.md). */
+    public static final List<String> OUTPUTS = List.of("sagittal.png", "axial.png", "sagittal-cycle.png",
+            "axial-cycle.png", "breathing.png", "displacements.csv", "probe.csv", "vtk");
+
+    /**
+     * Runs and writes everything to {@code out}, a run folder of its own; returns the summary
+     * (also in summary.json, with its status).
+     */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Path out, PrintStream log)
-            throws IOException {
+            throws Exception {
         return run(built, o, "rk2", out, log);
     }
 
@@ -74,20 +84,27 @@ public final class DiaphragmReport {
      * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended RK2 step is used.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
-            PrintStream log) throws IOException {
-        return run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1, out, log);
+            PrintStream log) throws Exception {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        RunFolder.run(out, "diaphragm", OUTPUTS, folder -> {
+            Map<String, Object> s = run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1,
+                    folder, log);
+            summary.putAll(folder.finish(s.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK, s));
+        });
+        return summary;
     }
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, String, Path, PrintStream)} with an integrator
      * instance (e.g. an implicit Euler with its own CG tolerance) on {@code threads} threads (>= 1; the
      * spring pass, RK2's and symplectic Euler's node loops and the link sweeps are shared among them,
-     * see {@link org.tensim.solver.parallel.Parallelism}).
+     * see {@link org.tensim.solver.parallel.Parallelism}). Writes every output but the summary into
+     * the run folder and returns the summary's fields; a diverged run's have "diverged" (the message)
+     * and its figures are marked DIVERGED. The caller finishes the folder.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o,
-            org.tensim.solver.Integrator chosen, int threads, Path out, PrintStream log) throws IOException {
+            org.tensim.solver.Integrator chosen, int threads, RunFolder out, PrintStream log) throws IOException {
         Check.atLeast("thread count", threads, 1);
-        Files.createDirectories(out);
         Simulation sim = built.scene().newSimulation();
         sim.setIntegrator(chosen);
         try (org.tensim.solver.parallel.Parallelism par = threads > 1
@@ -97,7 +114,7 @@ public final class DiaphragmReport {
     }
 
     private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
-            long[] workers, Path out, PrintStream log) throws IOException {
+            long[] workers, RunFolder out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
         org.tensim.solver.Integrator chosen = sim.integrator();
         String integrator = chosen.name();
@@ -128,7 +145,7 @@ public final class DiaphragmReport {
         double[][] kept = new double[wanted.size()][];
         double[] keptTime = new double[wanted.size()];
 
-        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
+        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.file("vtk"), "diaphragm",
                 scene.allTriangles(), java.util.Arrays.copyOf(labels, simulated), "tissue") : null;
         double vtkEvery = o.vtkPerCycle() > 0 ? period / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
         double nextVtk = 0;
@@ -142,9 +159,11 @@ public final class DiaphragmReport {
         boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
         long cpuNanos = 0;
         String diverged = null;
+        double divergedAt = Double.NaN;
         int apex = scene.apexNode();
-        try (CsvWriter probe = new CsvWriter(out.resolve("probe.csv"), List.of("t_s", "breathing_level",
-                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20)) {
+        try (CsvWriter probe = out.csv("probe.csv", List.of("t_s", "breathing_level",
+                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20);
+                Progress progress = Progress.start("diaphragm", o.seconds())) {
             double probeEvery = 0.005;
             double nextProbe = 0;
             metrics.begin(sim);
@@ -169,6 +188,8 @@ public final class DiaphragmReport {
                 if (t >= o.seconds() - 0.5 * dt) {
                     break;
                 }
+                RunSignals.checkStop();
+                progress.update(t);
                 long c0 = cpuTimed ? cpu.getCurrentThreadCpuTime() : 0;
                 long t0 = System.nanoTime();
                 sim.step(dt);
@@ -178,6 +199,7 @@ public final class DiaphragmReport {
             }
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();
+            divergedAt = e.timeSeconds();
         }
         double wall = stepNanos / 1e9;
         for (int w = 0; w < workers.length && cpuTimed; w++) {
@@ -236,17 +258,16 @@ public final class DiaphragmReport {
         }
         if (diverged != null) {
             summary.put("diverged", diverged);
+            summary.put("diverged_at_s", divergedAt);
         }
 
-        writeDisplacements(out.resolve("displacements.csv"), csvTimes, wanted, kept, keptTime, rest, labels, nd);
-        figures(out, scene, kept, rest, o);
-        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
-        Json.write(out.resolve("summary.json"), summary);
-        if (diverged != null) {
-            throw new IllegalStateException(diverged + " (outputs so far are in " + out + ")");
-        }
+        writeDisplacements(out.file("displacements.csv"), csvTimes, wanted, kept, keptTime, rest, labels, nd);
+        String mark = diverged == null ? "" : String.format(java.util.Locale.ROOT,
+                "DIVERGED at t = %.6g s (values after it are not physical): ", divergedAt);
+        figures(out, scene, kept, rest, o, mark);
+        breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), divergedAt);
         if (log != null) {
-            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
+            log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
                     + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
         }
         return summary;
@@ -270,8 +291,8 @@ public final class DiaphragmReport {
         }
     }
 
-    private static void figures(Path out, DiaphragmScene scene, double[][] kept, double[] rest, Options o)
-            throws IOException {
+    private static void figures(RunFolder out, DiaphragmScene scene, double[][] kept, double[] rest, Options o,
+            String mark) throws IOException {
         int nd = scene.diaphragmNodes();
         int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
         int apex = scene.apexNode();
@@ -279,20 +300,20 @@ public final class DiaphragmReport {
         double zPlane = rest[3 * apex + 2] - 0.04;
         double band = 2 * meanEdge(scene);
         if (kept[0] != null && kept[1] != null) {
-            SliceFigures.write(out.resolve("sagittal.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal.png"), mark + String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
                     1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
                     o.vectorScale());
-            SliceFigures.write(out.resolve("axial.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial.png"), mark + String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
                     1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
                     o.vectorScale());
         }
         if (kept[2] != null && kept[3] != null) {
-            SliceFigures.write(out.resolve("sagittal-cycle.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal-cycle.png"), mark + String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
                     kept[3], upper, 0, xPlane, band, 1);
-            SliceFigures.write(out.resolve("axial-cycle.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial-cycle.png"), mark + String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
                     upper, 2, zPlane, band, 1);
         }
@@ -309,7 +330,7 @@ public final class DiaphragmReport {
         return s / Math.max(n, 1);
     }
 
-    private static void breathingChart(Path png, Path probeCsv) throws IOException {
+    private static void breathingChart(Path png, Path probeCsv, double divergedAt) throws IOException {
         List<String> lines = Files.readAllLines(probeCsv);
         int n = lines.size() - 1;
         if (n < 2) {
@@ -332,6 +353,9 @@ public final class DiaphragmReport {
         Charts.addLine(c, "apex z displacement", t, dz);
         Charts.addLine(c, "transverse extent change", t, ex);
         Charts.addLine(c, "antero-posterior extent change", t, ey);
+        if (!Double.isNaN(divergedAt)) {
+            Charts.markDiverged(c, divergedAt);
+        }
         Charts.savePng(c, png);
     }
 
