@@ -52,7 +52,7 @@ final class CommandChecks {
         if (!(dt > 0) || !Double.isFinite(dt)) {
             throw usage(spec, dtOption + " " + dt + ": the time step must be a finite number > 0 s");
         }
-        if (Math.round(duration / dt) < 1) {
+        if (dt > duration || Math.round(duration / dt) < 1) {
             throw usage(spec, dtOption + " " + dt + " s is longer than the run (" + durationOption + " " + duration
                     + " s): it would make no step; give a time step <= " + duration + " s");
         }

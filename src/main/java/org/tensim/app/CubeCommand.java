@@ -72,7 +72,7 @@ public final class CubeCommand implements Callable<Integer> {
             CubeReport report = CubeReport.run(p, integrator, run);
             System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
             if (report.status() == RunStatus.DIVERGED) {
-                System.err.println("tensim cube: " + report.summary().get("diverged") + " (the CSV ends at the last"
+                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged") + " (the CSV ends at the last"
                         + " finite step; the chart is marked DIVERGED)");
             }
             System.out.println(report.summaryLine());

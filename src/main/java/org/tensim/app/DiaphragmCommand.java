@@ -229,7 +229,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {
-            System.err.println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
                     + out + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));

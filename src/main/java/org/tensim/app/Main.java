@@ -5,6 +5,7 @@ import org.tensim.bench.BenchCommand;
 import java.io.IOException;
 import java.nio.file.FileSystemException;
 import org.tensim.io.OutputFiles;
+import org.tensim.io.RunFolder;
 import org.tensim.io.RunSignals;
 import org.tensim.io.RunStatus;
 import picocli.CommandLine;
@@ -32,12 +33,19 @@ public final class Main implements Runnable {
     /** Builds the configured command line (shared with tests). */
     public static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new Main());
+        long[] foldersBefore = {0};
+        cl.setExecutionStrategy(parsed -> {
+            foldersBefore[0] = RunFolder.opened();
+            return new CommandLine.RunLast().execute(parsed);
+        });
         cl.setExecutionExceptionHandler((ex, cmd, parsed) -> {
             if (RunSignals.stopRequested()) {
                 return RunStatus.INTERRUPTED.exitCode(); // the run's folder says so; no second message
             }
             cmd.getErr().println("tensim " + cmd.getCommandName() + ": " + describe(ex));
-            return RunStatus.FAILED.exitCode();
+            // A value refused before any output folder was opened is a usage error, like picocli's own.
+            boolean usage = ex instanceof IllegalArgumentException && RunFolder.opened() == foldersBefore[0];
+            return usage ? RunStatus.USAGE_EXIT : RunStatus.FAILED.exitCode();
         });
         return cl;
     }

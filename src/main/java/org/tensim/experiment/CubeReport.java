@@ -103,7 +103,8 @@ public final class CubeReport {
         s.put("ts_peak_y_m", peaks[1]);
         s.put("paper_mss_peak_y_m", CubeExperiment.PAPER_MSS_PEAK_Y_M);
         s.put("paper_ts_peak_y_m", CubeExperiment.PAPER_TS_PEAK_Y_M);
-        s.put("peak_ratio_mss_over_ts", peaks[0] / peaks[1]);
+        double ratio = peaks[0] / peaks[1];
+        s.put("peak_ratio_mss_over_ts", Double.isFinite(ratio) ? ratio : null);
         if (r != null) {
             s.put("ts_max_link_error_rel", r.tsMaxLinkError());
         }

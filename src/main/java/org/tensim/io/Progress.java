@@ -30,27 +30,29 @@ public final class Progress implements AutoCloseable {
     private final double totalS;
     private final Mode mode;
     private final PrintStream err;
+    private final double quietS;
     private final long start = System.nanoTime();
     private double nextCheck;
     private int nextPercent = LINE_PERCENT;
     private ProgressBar bar;
 
-    private Progress(String task, double totalS, Mode mode, PrintStream err) {
+    private Progress(String task, double totalS, Mode mode, PrintStream err, double quietS) {
         this.task = task;
         this.totalS = totalS;
         this.mode = mode;
         this.err = err;
+        this.quietS = quietS;
     }
 
     /** Progress of {@code task} over {@code totalSimulatedS} seconds of simulated time. */
     public static Progress start(String task, double totalSimulatedS) {
         return new Progress(task, totalSimulatedS, mode(System.getenv("TENSIM_PROGRESS"), System.console() != null),
-                System.err);
+                System.err, QUIET_S);
     }
 
-    /** Progress lines (no terminal) into {@code err}: for tests. */
-    static Progress lines(String task, double totalSimulatedS, PrintStream err) {
-        return new Progress(task, totalSimulatedS, Mode.LINES, err);
+    /** Progress lines (no terminal) into {@code err}, from {@code quietS} seconds on: for tests. */
+    static Progress lines(String task, double totalSimulatedS, PrintStream err, double quietS) {
+        return new Progress(task, totalSimulatedS, Mode.LINES, err, quietS);
     }
 
     private static Mode mode(String setting, boolean terminal) {
@@ -72,7 +74,7 @@ public final class Progress implements AutoCloseable {
         }
         nextCheck = t + totalS / BAR_TICKS;
         double wall = (System.nanoTime() - start) / 1e9;
-        if (wall < QUIET_S) {
+        if (wall < quietS) {
             return;
         }
         double rt = t / Math.max(wall, 1e-9);

@@ -48,6 +48,7 @@ public final class RunFolder {
         void run(RunFolder run) throws Exception;
     }
 
+    private static final java.util.concurrent.atomic.AtomicLong OPENED = new java.util.concurrent.atomic.AtomicLong();
     private final Path dir;
     private final String command;
     private final Set<String> files = new LinkedHashSet<>();
@@ -95,10 +96,16 @@ public final class RunFolder {
         if (!Files.isWritable(dir)) {
             throw new IOException("cannot write into " + dir + ": permission denied");
         }
+        OPENED.incrementAndGet();
         RunFolder run = new RunFolder(dir, command);
         run.clearPrevious(ownNames);
         RunSignals.activate(run);
         return run;
+    }
+
+    /** Run folders opened so far in this JVM (tells a refusal of options from a failed run). */
+    public static long opened() {
+        return OPENED.get();
     }
 
     private void clearPrevious(List<String> ownNames) throws IOException {

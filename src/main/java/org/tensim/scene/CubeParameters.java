@@ -35,7 +35,7 @@ public record CubeParameters(double sideM, double nodeMassKg, double stiffnessNP
         }
         Check.positive("cube time step", "s", dtS);
         Check.positive("cube duration", "s", durationS);
-        if (Math.round(durationS / dtS) < 1) {
+        if (dtS > durationS) {
             throw new IllegalArgumentException("cube time step " + dtS + " s is longer than the run (" + durationS
                     + " s): the run would make no step; give a time step <= the duration");
         }

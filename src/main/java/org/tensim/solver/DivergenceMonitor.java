@@ -6,16 +6,14 @@ import org.tensim.model.Check;
  * The divergence checks of {@link Simulation}, run after every step:
  * <ul>
  * <li>every step: every position and velocity finite, and no runaway node: none
- * faster than {@link #runawayLimit()} scene sizes per step ({@code |v_k| dt <= limit * size})
- * nor farther than {@value #RUNAWAY_REACH} scene sizes from the origin beyond where
- * the scene started ({@code |x_k| <= max|x0| + reach * size}), the size being the
- * larger of the diagonal of the starting bounding box and the longest spring (1 m
- * if both are 0). A stable run never moves a node across ten scenes in one step; an
+ * faster than {@link #runawayLimit()} scene sizes per step ({@code |v_k| dt <= limit * size}),
+ * the size being the larger of the diagonal of the starting bounding box and the
+ * longest spring (1 m if both are 0). A stable run never moves a node across ten
+ * scenes in one step (a free fall may take a node far away, but not that fast); an
  * unstable one does so within a few steps of leaving the physical range, long
- * before it overflows. One combined comparison per coordinate
- * ({@code |x_k|/X + |v_k|/V <= 1}, false for NaN and infinities) keeps the check as
- * cheap as the finiteness test alone; the exact limits are applied only when it
- * fails;</li>
+ * before it overflows. One comparison per coordinate
+ * ({@code |v_k|/V + (x_k - x_k) <= 1}, false for NaN and infinities in either) keeps
+ * the check as cheap as the finiteness test alone;</li>
  * <li>every {@link #energyCheckInterval()} steps, the mechanical energy
  * E = kinetic + spring + change of gravity's potential since the first step (J)
  * at most {@link #energyGrowthLimit()} times
@@ -47,12 +45,8 @@ final class DivergenceMonitor {
     static final double EXCHANGE_FRACTION = 1e-3;
     /** Default runaway speed: scene sizes per step. */
     static final double DEFAULT_RUNAWAY_LIMIT = 10;
-    /** Runaway distance: scene sizes beyond the starting coordinates. */
-    static final double RUNAWAY_REACH = 1000;
-
     private double runawayLimit = DEFAULT_RUNAWAY_LIMIT;
     private double sceneSize = Double.NaN;
-    private double positionLimit;
 
     double runawayLimit() {
         return runawayLimit;
@@ -99,12 +93,11 @@ final class DivergenceMonitor {
         if (Double.isNaN(sceneSize)) {
             startingSize(s);
         }
-        final double invX = 1 / positionLimit;
         final double speedLimit = runawayLimit * sceneSize / dt;
         final double invV = 1 / speedLimit;
         for (int k = 0; k < x.length; k++) {
-            // One comparison per coordinate: false for NaN and infinities, and when either is near its limit.
-            if (!(Math.abs(x[k]) * invX + Math.abs(v[k]) * invV <= 1)) {
+            // One comparison per coordinate: x - x is 0, or NaN for a NaN or infinite x; |v|/V > 1 is a runaway.
+            if (!(Math.abs(v[k]) * invV + (x[k] - x[k]) <= 1)) {
                 checkCoordinate(s, k, step, t, speedLimit, criticalStep);
             }
         }
@@ -149,25 +142,21 @@ final class DivergenceMonitor {
                     + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
                     criticalStep.getAsDouble());
         }
-        if (Math.abs(x[k]) > positionLimit || Math.abs(v[k]) > speedLimit) {
-            int node = k / 3;
-            throw new SimulationDivergedException(step, t, node, "ran away: position (" + x[3 * node] + ", "
-                    + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m, velocity (" + v[3 * node] + ", "
-                    + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s, beyond " + positionLimit + " m from the"
-                    + " origin or " + speedLimit + " m/s (" + runawayLimit + " scene sizes of " + sceneSize
-                    + " m per step); " + advice(criticalStep), criticalStep.getAsDouble());
-        }
+        int node = k / 3;
+        throw new SimulationDivergedException(step, t, node, "ran away: position (" + x[3 * node] + ", "
+                + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m, velocity (" + v[3 * node] + ", "
+                + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s, faster than " + speedLimit + " m/s ("
+                + runawayLimit + " scene sizes of " + sceneSize + " m per step); " + advice(criticalStep),
+                criticalStep.getAsDouble());
     }
 
-    /** The scene size and the position limit, from the state the run starts with. */
+    /** The scene size, from the state the run starts with. */
     private void startingSize(SystemState s) {
         double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        double maxAbs = 0;
         for (int k = 0; k < s.x0.length; k++) {
             lo[k % 3] = Math.min(lo[k % 3], s.x0[k]);
             hi[k % 3] = Math.max(hi[k % 3], s.x0[k]);
-            maxAbs = Math.max(maxAbs, Math.abs(s.x0[k]));
         }
         double diag = s.nodeCount == 0 ? 0 : Math.sqrt(Math.pow(hi[0] - lo[0], 2) + Math.pow(hi[1] - lo[1], 2)
                 + Math.pow(hi[2] - lo[2], 2));
@@ -177,7 +166,6 @@ final class DivergenceMonitor {
         }
         double size = Math.max(diag, longest);
         sceneSize = size > 0 && Double.isFinite(size) ? size : 1;
-        positionLimit = maxAbs + RUNAWAY_REACH * sceneSize;
     }
 
     private static String advice(java.util.function.DoubleSupplier criticalStep) {
