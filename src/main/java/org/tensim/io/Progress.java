@@ -69,7 +69,7 @@ public final class Progress implements AutoCloseable {
 
     /** Reports simulated time {@code t} (s). */
     public void update(double t) {
-        if (t < nextCheck || mode == Mode.NONE || !(totalS > 0)) {
+        if ((t < nextCheck && t < totalS) || mode == Mode.NONE || !(totalS > 0)) {
             return;
         }
         nextCheck = t + totalS / BAR_TICKS;
