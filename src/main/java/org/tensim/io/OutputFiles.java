@@ -31,7 +31,21 @@ public final class OutputFiles {
     /** rw-r--r--. */
     public static final Set<PosixFilePermission> MODE_0644 = PosixFilePermissions.fromString("rw-r--r--");
 
+    /** Temporary files being written now: removed by {@link RunSignals} when a signal ends the JVM. */
+    private static final Set<Path> IN_FLIGHT = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
     private OutputFiles() {
+    }
+
+    /** Deletes the temporary files of writes still in progress (at a signal; SIGKILL leaves them). */
+    static void deleteInFlight() {
+        for (Path p : IN_FLIGHT) {
+            try {
+                Files.deleteIfExists(p);
+            } catch (IOException e) {
+                // the JVM is ending: nothing more to do about it
+            }
+        }
     }
 
     /** Writes to an output stream; the stream is closed by the caller of the callback. */
@@ -72,12 +86,14 @@ public final class OutputFiles {
         Path abs = file.toAbsolutePath();
         createFolder(abs.getParent());
         refuseLink(abs);
+        RunSignals.install();
         Path tmp;
         try {
             tmp = Files.createTempFile(abs.getParent(), "." + abs.getFileName(), ".tmp");
         } catch (IOException e) {
             throw describe("create a temporary file in", abs.getParent(), e);
         }
+        IN_FLIGHT.add(tmp);
         try {
             try (OutputStream out = Channels.newOutputStream(FileChannel.open(tmp, StandardOpenOption.WRITE,
                     StandardOpenOption.TRUNCATE_EXISTING))) {
@@ -89,6 +105,7 @@ public final class OutputFiles {
             throw describe("write", file, e);
         } finally {
             Files.deleteIfExists(tmp);
+            IN_FLIGHT.remove(tmp);
         }
     }
 

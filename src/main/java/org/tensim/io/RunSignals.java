@@ -33,11 +33,16 @@ public final class RunSignals {
     }
 
     static synchronized void activate(RunFolder run) {
+        install();
+        active = run;
+    }
+
+    /** Installs the shutdown hook (once). */
+    static synchronized void install() {
         if (!installed) {
             Runtime.getRuntime().addShutdownHook(new Thread(RunSignals::onShutdown, "tensim-run-signals"));
             installed = true;
         }
-        active = run;
     }
 
     static void deactivate(RunFolder run) {
@@ -64,6 +69,7 @@ public final class RunSignals {
         if (exiting) {
             return;
         }
+        OutputFiles.deleteInFlight();
         RunFolder run = active;
         RunStatus status = lastStatus;
         if (run != null) {

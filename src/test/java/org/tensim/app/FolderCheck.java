@@ -46,7 +46,11 @@ final class FolderCheck {
             }
             @SuppressWarnings("unchecked")
             List<String> files = (List<String>) s.get("files");
-            listed.addAll(files);
+            if (files == null) {
+                p.add("the summary lists no files (not written by a run folder)");
+            } else {
+                listed.addAll(files);
+            }
         } else if (!"KILL".equals(signal) && exitCode != 137) {
             p.add("no summary, but the run was not killed with SIGKILL (exit " + exitCode + ")");
         }

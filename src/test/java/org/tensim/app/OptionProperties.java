@@ -25,7 +25,10 @@ import picocli.CommandLine.Model.OptionSpec;
 class OptionProperties {
     /** Values no numeric option may take. */
     static final List<String> BAD = List.of("abc", "", "NaN", "nan", "Infinity", "-Infinity", "1e400", "-1e400",
-            "99999999999999999999", "1..2", "0x", "--", "1,,2", "\u00e9");
+            "1..2", "0x", "--", "1,,2", "\u00e9");
+    /** Beyond int and long, or not whole: no count option may take them. */
+    static final List<String> BAD_INTEGERS = List.of("99999999999999999999", "2147483648", "-2147483649", "1.5",
+            "1e3");
     /** The GUI opens a window for any value its options accept: only values no parser accepts. */
     static final List<String> BAD_FOR_ANY_PARSER = List.of("abc", "", "1..2", "0x", "1,,2", "\u00e9");
 
@@ -42,7 +45,9 @@ class OptionProperties {
                 boolean numeric = isNumber(t) || ((List.class.isAssignableFrom(t) || t.isArray()) && isNumber(
                         t.isArray() ? t.getComponentType() : item));
                 if (numeric && !o.usageHelp() && !o.versionHelp()) {
-                    pairs.add(new String[] {e.getKey(), o.longestName()});
+                    boolean integer = t == int.class || t == Integer.class || t == long.class || t == Long.class
+                            || item == Integer.class || item == Long.class || t == int[].class;
+                    pairs.add(new String[] {e.getKey(), o.longestName(), integer ? "int" : "double"});
                 }
             }
         }
@@ -60,7 +65,10 @@ class OptionProperties {
         List<String[]> options = numericOptions();
         RandomCases.check("numeric options", 250, r -> {
             String[] p = options.get(r.nextInt(options.size()));
-            List<String> values = p[0].equals("gui") ? BAD_FOR_ANY_PARSER : BAD;
+            List<String> values = new ArrayList<>(p[0].equals("gui") ? BAD_FOR_ANY_PARSER : BAD);
+            if (p[2].equals("int")) {
+                values.addAll(BAD_INTEGERS);
+            }
             refused(new Case(p[0], p[1], values.get(r.nextInt(values.size()))));
         });
     }

@@ -31,7 +31,8 @@ final class RunProcess {
     static RunProcess start(Path cwd, Map<String, String> env, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xss8m", "-XX:+UseParallelGC", "-XX:TieredStopAtLevel=1", "-Dtensim.home=" + HOME, "-cp",
-                System.getProperty("java.class.path"), "org.tensim.app.Main"));
+                System.getProperty("tensim.classpath", System.getProperty("java.class.path")),
+                "org.tensim.app.Main"));
         cmd.addAll(List.of(args));
         ProcessBuilder b = new ProcessBuilder(cmd).directory(cwd.toFile());
         env.forEach((k, v) -> {
@@ -56,9 +57,30 @@ final class RunProcess {
         return process.exitValue();
     }
 
-    /** Sends a signal by name (INT, TERM, KILL) with kill(1). */
-    void signal(String name) throws Exception {
-        new ProcessBuilder("kill", "-" + name, Long.toString(process.pid())).inheritIO().start().waitFor();
+    /**
+     * Sends a signal by name (INT, TERM, KILL) with kill(1) and returns the one sent: a
+     * process started with SIGINT ignored (a background job of a non-interactive shell, as
+     * the test runner may be) keeps ignoring it, as any program does, so TERM is sent instead.
+     */
+    String signal(String name) throws Exception {
+        String sent = name.equals("INT") && ignores(2) ? "TERM" : name;
+        new ProcessBuilder("kill", "-" + sent, Long.toString(process.pid())).inheritIO().start().waitFor();
+        return sent;
+    }
+
+    /** Whether the process ignores signal number {@code sig} (SigIgn in /proc/PID/status). */
+    private boolean ignores(int sig) throws IOException {
+        Path status = Path.of("/proc", Long.toString(process.pid()), "status");
+        if (!Files.exists(status)) {
+            return false;
+        }
+        for (String line : Files.readAllLines(status)) {
+            if (line.startsWith("SigIgn:")) {
+                long mask = Long.parseUnsignedLong(line.substring(7).trim(), 16);
+                return (mask & (1L << (sig - 1))) != 0;
+            }
+        }
+        return false;
     }
 
     String out() throws IOException {
