@@ -114,8 +114,11 @@ public final class OutputFiles {
         if (dir == null) {
             return;
         }
-        if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            throw new IOException("cannot use " + dir + " as a folder: it exists and is a file");
+        for (Path p = dir.toAbsolutePath(); p != null; p = p.getParent()) {
+            if (Files.exists(p) && !Files.isDirectory(p)) {
+                throw new IOException("cannot use " + dir + " as a folder: " + (p.equals(dir.toAbsolutePath())
+                        ? "it" : p.toString()) + " exists and is a file");
+            }
         }
         try {
             Files.createDirectories(dir);
