@@ -37,8 +37,8 @@ public final class GuiCommand implements Callable<Integer> {
     double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
 
     @Option(names = "--resolution", paramLabel = "RINGS",
-            description = "rings per face of the generated double dome: 20 gives about 2,500 nodes (interactive),"
-                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE})")
+            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, opened with"
+                    + " the large-step bdf2 solver; 20 gives about 2,500 nodes (default: ${DEFAULT-VALUE})")
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
@@ -121,7 +121,8 @@ public final class GuiCommand implements Callable<Integer> {
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
-        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads);
+        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
+                GuiScenes.opensInRealTime(scene));
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();
@@ -164,15 +165,22 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play)
             throws Exception {
-        return open(factory, restoreDir, saveDir, preset, play, 0);
+        return open(factory, restoreDir, saveDir, preset, play, 0, false);
     }
 
-    /** As {@link #open(SceneFactory, Path, Path, Path, boolean)} with a thread count (0: automatic). */
-    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads)
-            throws Exception {
+    /**
+     * As {@link #open(SceneFactory, Path, Path, Path, boolean)} with a thread count (0: automatic),
+     * starting from the large-step solver when realTime (before last-used parameters and the preset).
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
+            boolean realTime) throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
                 IntegratorCatalog.available());
+        if (realTime) {
+            tuning.setIntegrator(IntegratorCatalog.REAL_TIME);
+            tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
+        }
         String note = restoreDir == null ? null : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()));
         if (preset != null) {
             try {

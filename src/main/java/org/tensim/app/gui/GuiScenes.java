@@ -24,10 +24,28 @@ public final class GuiScenes {
      * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
-        /** The defaults: generated dome at the interactive resolution, the project's parametric rib cage. */
+        /** The defaults: generated dome at the paper's resolution, the project's parametric rib cage. */
         public static Source defaults() {
-            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, null);
+            return new Source(null, "mm", 2.5, PAPER_RINGS, null);
         }
+    }
+
+    /**
+     * Rings per face of the generated double dome at the paper's resolution: 11,354 diaphragm nodes
+     * (16,120 with ribs, sternum and cartilage), the mesh of {@code ./tensim diaphragm}
+     * ({@code meshes/diaphragm-default.obj}). The GUI opens it with the large-step solver
+     * ({@link IntegratorCatalog#REAL_TIME}); {@code --resolution 20} gives a 2,500-node model for RK2.
+     */
+    public static final int PAPER_RINGS = 43;
+
+    /**
+     * Whether the scene opens with the large-step solver ({@link IntegratorCatalog#REAL_TIME} at
+     * {@link IntegratorCatalog#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
+     * runs at a few hundredths of real time at the paper's resolution. Last-used parameters and presets
+     * still apply over it.
+     */
+    public static boolean opensInRealTime(String name) {
+        return "diaphragm".equals(name);
     }
 
     /** Names accepted by {@code --scene}, the default first. */

@@ -28,28 +28,37 @@ class GuiCommandTest {
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
         StringWriter err = new StringWriter();
-        assertEquals(1, run(err, "gui", "--scene", "teapot"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "teapot"));
         assertTrue(err.toString().contains("'teapot'") && err.toString().contains("cube"), err.toString());
         StringWriter err2 = new StringWriter();
-        assertEquals(1, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
         assertTrue(err2.toString().contains("organ.obj"), err2.toString());
         StringWriter err3 = new StringWriter();
-        assertEquals(1, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
         assertTrue(err3.toString().contains("none.obj") && err3.toString().contains("no such file"), err3.toString());
         StringWriter err4 = new StringWriter();
-        assertEquals(1, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
+    }
+
+    @Test
+    void theDiaphragmOpensAtThePapersResolution() {
+        GuiCommand c = new GuiCommand();
+        new CommandLine(c).parseArgs();
+        assertEquals(GuiScenes.PAPER_RINGS, c.rings);
+        assertEquals("diaphragm", c.scene);
+        assertTrue(GuiScenes.opensInRealTime("diaphragm") && !GuiScenes.opensInRealTime("cube"));
     }
 
     @Test
     void badRunForOrThreadsIsRefusedWithTheValueNamed() {
         for (String bad : new String[] {"0", "-2", "NaN"}) {
             StringWriter err = new StringWriter();
-            assertEquals(1, run(err, "gui", "--scene", "cube", "--run-for", bad));
+            assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "cube", "--run-for", bad));
             assertTrue(err.toString().contains("--run-for") && err.toString().contains(bad), err.toString());
         }
         StringWriter err = new StringWriter();
-        assertEquals(1, run(err, "gui", "--scene", "cube", "--threads", "-1"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "cube", "--threads", "-1"));
         assertTrue(err.toString().contains("--threads") && err.toString().contains("-1"), err.toString());
     }
 
