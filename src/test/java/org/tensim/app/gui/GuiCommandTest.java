@@ -16,6 +16,8 @@ import org.tensim.app.Main;
 import picocli.CommandLine;
 
 class GuiCommandTest {
+    private static final int USAGE = org.tensim.io.RunStatus.USAGE_EXIT;
+
     @TempDir
     Path dir;
 
@@ -28,16 +30,16 @@ class GuiCommandTest {
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
         StringWriter err = new StringWriter();
-        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "teapot"));
+        assertEquals(USAGE, run(err, "gui", "--scene", "teapot"));
         assertTrue(err.toString().contains("'teapot'") && err.toString().contains("cube"), err.toString());
         StringWriter err2 = new StringWriter();
-        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
+        assertEquals(USAGE, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
         assertTrue(err2.toString().contains("organ.obj"), err2.toString());
         StringWriter err3 = new StringWriter();
-        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
+        assertEquals(USAGE, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
         assertTrue(err3.toString().contains("none.obj") && err3.toString().contains("no such file"), err3.toString());
         StringWriter err4 = new StringWriter();
-        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
+        assertEquals(USAGE, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
     }
 
@@ -54,11 +56,11 @@ class GuiCommandTest {
     void badRunForOrThreadsIsRefusedWithTheValueNamed() {
         for (String bad : new String[] {"0", "-2", "NaN"}) {
             StringWriter err = new StringWriter();
-            assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "cube", "--run-for", bad));
+            assertEquals(USAGE, run(err, "gui", "--scene", "cube", "--run-for", bad));
             assertTrue(err.toString().contains("--run-for") && err.toString().contains(bad), err.toString());
         }
         StringWriter err = new StringWriter();
-        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "cube", "--threads", "-1"));
+        assertEquals(USAGE, run(err, "gui", "--scene", "cube", "--threads", "-1"));
         assertTrue(err.toString().contains("--threads") && err.toString().contains("-1"), err.toString());
     }
 
