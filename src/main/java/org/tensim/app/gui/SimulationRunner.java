@@ -69,13 +69,7 @@ public final class SimulationRunner implements Tuning.Target {
     private boolean tensegrityTendon;
     private final CriticalStepWatch critical = new CriticalStepWatch();
     private final BodyThreads threads;
-    /** Prepares changes in order, one at a time (ViewScene.prepare). */
-    private final java.util.concurrent.ExecutorService preparer = java.util.concurrent.Executors.newSingleThreadExecutor(
-            r -> {
-                Thread t = new Thread(r, "tensim-prepare-change");
-                t.setDaemon(true);
-                return t;
-            });
+    private final ChangePreparer preparer = new ChangePreparer();
     private long anchorWall;
     private double anchorSim;
     private boolean reanchor = true;
@@ -114,7 +108,7 @@ public final class SimulationRunner implements Tuning.Target {
             Thread.currentThread().interrupt();
         }
         critical.close();
-        preparer.shutdownNow();
+        preparer.close();
     }
 
     public void play() {
@@ -179,22 +173,15 @@ public final class SimulationRunner implements Tuning.Target {
      * waits for a gap between steps, and is dropped if another scene has been installed since.
      */
     private void prepare(ViewScene s, String key, double value) {
-        preparer.execute(() -> {
-            Runnable handOver;
-            try {
-                handOver = s.prepare(key, value);
-            } catch (RuntimeException e) {
-                events.failed("change not applied", e);
-                return;
-            }
+        preparer.submit(s, key, value, rest -> {
             commands.add(() -> {
                 if (scene == s) {
-                    handOver.run();
+                    rest.run();
                     critical.invalidate();
                 }
             });
             LockSupport.unpark(thread);
-        });
+        }, e -> events.failed("change not applied", e));
     }
 
     @Override

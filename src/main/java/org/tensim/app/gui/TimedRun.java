@@ -66,6 +66,7 @@ final class TimedRun {
             probe.set(t);
         });
         SimulationRunner r = w.runner();
+        long cpu0 = processCpuNanos();
         long t0 = System.nanoTime();
         double sim0 = r.simTime();
         long steps0 = r.steps();
@@ -82,6 +83,7 @@ final class TimedRun {
             }
         }
         double wall = (System.nanoTime() - t0) * 1e-9;
+        double cpu = (processCpuNanos() - cpu0) * 1e-9;
         double sim = r.simTime() - sim0;
         long steps = r.steps() - steps0;
         long frames = w.view().framesRendered() - frames0;
@@ -123,6 +125,9 @@ final class TimedRun {
         m.put("edt_longest_delay_at_s", round(edtWorstAt.get() * 1e-9, 2));
         m.put("diverged", r.divergence());
         m.put("wall_s", round(wall, 3));
+        // On a shared machine: what the process got (simulation, drawing in Mesa's llvmpipe, Swing).
+        m.put("process_cpu_s", round(cpu, 2));
+        m.put("sim_s_per_process_cpu_s", cpu > 0 ? round(sim / cpu, 4) : null);
         m.put("sim_s", round(sim, 4));
         m.put("steps", steps);
         m.put("frames", frames);
@@ -140,6 +145,12 @@ final class TimedRun {
                     error.get());
         }
         return m;
+    }
+
+    /** CPU time of this process, every thread, ns (-1 where the JVM does not tell). */
+    private static long processCpuNanos() {
+        return ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
+                ? os.getProcessCpuTime() : -1;
     }
 
     private static Object finiteOrNull(double v) {
