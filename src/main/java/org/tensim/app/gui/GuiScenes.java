@@ -50,8 +50,10 @@ public final class GuiScenes {
                 return CubeViewScene.factory();
             case "diaphragm":
                 if (src.mesh() != null && !Files.isRegularFile(src.mesh())) {
-                    throw new IllegalArgumentException("--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
-                            + " or .off mesh of the diaphragm)");
+                    // A missing input file is a refused file (exit 1), not a usage error (docs/outputs.md).
+                    String msg = "--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
+                            + " or .off mesh of the diaphragm)";
+                    throw new java.io.UncheckedIOException(msg, new java.io.FileNotFoundException(msg));
                 }
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());
