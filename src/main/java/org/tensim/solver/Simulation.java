@@ -3,6 +3,7 @@ package org.tensim.solver;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.tensim.model.Topology;
+import org.tensim.solver.stability.CriticalTimeStep;
 
 /**
  * Runs the paper's three-stage loop on a compiled {@link SystemState}:
@@ -23,7 +24,7 @@ import org.tensim.model.Topology;
  * <p>Checks, on every run:
  * <ul>
  * <li>Critical time step: on the first step with a given integrator and dt, an
- * explicit integrator stepping beyond {@link CriticalTimeStep#forIntegrator} of
+ * explicit integrator stepping beyond {@link CriticalTimeStep#forMethod} of
  * the state's estimate is reported ({@link #setStepLimitSeverity}, default
  * {@link Severity#WARN}; {@link Severity#ERROR} throws
  * {@link IllegalArgumentException} naming the estimate).</li>
@@ -185,7 +186,7 @@ public final class Simulation {
 
     /** The step beyond which the current integrator is expected to go unstable on this state, s. */
     public double criticalStepOfIntegrator() {
-        return state.criticalTimeStep().forIntegrator(integrator);
+        return state.criticalTimeStep().forMethod(integrator.explicit(), integrator.undampedStabilityLimit());
     }
 
     public void addListener(StepListener l) {

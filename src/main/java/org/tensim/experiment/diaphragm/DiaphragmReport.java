@@ -17,6 +17,7 @@ import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.stability.TimeStep;
 
 /**
  * Runs breathing cycles of a built diaphragm headless and writes, into one folder:
@@ -38,7 +39,7 @@ public final class DiaphragmReport {
      * Run settings.
      *
      * @param seconds         simulated time, s (at least one inspiration)
-     * @param dtS             time step, s; 0 for the scene's recommended RK2 step
+     * @param dtS             time step, s; 0 for the step the time-step policy recommends for the integrator on the scene
      * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
      * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
      * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
@@ -71,7 +72,7 @@ public final class DiaphragmReport {
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, Path, PrintStream)} with the named integrator
-     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended RK2 step is used.
+     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended step for that integrator is used.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
             PrintStream log) throws IOException {
@@ -101,7 +102,8 @@ public final class DiaphragmReport {
         DiaphragmScene scene = built.scene();
         org.tensim.solver.Integrator chosen = sim.integrator();
         String integrator = chosen.name();
-        double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
+        TimeStep step = scene.timeStep(chosen, o.dtS());
+        double dt = step.seconds();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
         double start = metrics.measuredCycleStart();
         double ti = scene.cycle().inspirationS();
@@ -217,8 +219,7 @@ public final class DiaphragmReport {
             summary.put("cg_unconverged_solves", ie.unconvergedSolves());
         }
         summary.put("dt_s", dt);
-        summary.put("dt_rule", o.dtS() > 0 ? "given (--dt)" : "RK2 stable step for w_max (Gershgorin) and the Rayleigh damping, x"
-                + org.tensim.scene.diaphragm.Rk2Step.SAFETY);
+        summary.put("dt_rule", step.reason());
         summary.put("omega_max_bound_rad_s", round(scene.omegaMaxBound(), 1));
         summary.put("steps", sim.steps());
         summary.put("steps_per_s", round(sim.steps() / Math.max(wall, 1e-9), 1));

@@ -4,6 +4,7 @@ import org.tensim.model.Check;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.stability.LinearStability;
 
 /**
  * Backward (implicit) Euler, linearised once per step (Baraff and Witkin 1998):
@@ -38,6 +39,12 @@ public final class ImplicitEuler implements Integrator {
     public static final double DEFAULT_TOLERANCE = 1e-12;
     /** Default cap on CG iterations per step. */
     public static final int DEFAULT_MAX_ITERATIONS = 500;
+
+    private static final LinearStability STABILITY = LinearStability.declared(Double.POSITIVE_INFINITY,
+            (h, zeta, x, v) -> {
+                double v1 = (v - h * x) / (1 + h * (2 * zeta) + h * h);
+                return new double[] {x + h * v1, v1};
+            });
 
     private double tolerance = DEFAULT_TOLERANCE;
     private int maxIterations = DEFAULT_MAX_ITERATIONS;
@@ -86,9 +93,10 @@ public final class ImplicitEuler implements Integrator {
         return false;
     }
 
+    /** (1 + h c + h^2) v1 = v - h x, x1 = x + h v1 on x'' = -x - c x': |R| &lt; 1 at every step. */
     @Override
-    public double undampedStabilityLimit() {
-        return Double.POSITIVE_INFINITY;
+    public LinearStability stability() {
+        return STABILITY;
     }
 
     /** Relative residual at which CG stops (dimensionless, > 0). */
