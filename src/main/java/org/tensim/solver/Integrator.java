@@ -40,6 +40,14 @@ public interface Integrator {
     }
 
     /**
+     * Takes the settings that concern the method (an implicit one: the tolerance and
+     * iteration cap of its linear solves); called by {@link Simulation#apply}. Default:
+     * none.
+     */
+    default void configure(SolverSettings settings) {
+    }
+
+    /**
      * How the method behaves on the linear test oscillator (its stability function
      * and step formula), for {@link org.tensim.solver.stability.StabilityTheory} and
      * {@link org.tensim.solver.stability.TimeStepPolicy}; null when the method does not

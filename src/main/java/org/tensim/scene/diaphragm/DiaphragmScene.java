@@ -202,7 +202,7 @@ public final class DiaphragmScene {
     public Simulation newSimulation() {
         Simulation sim = Simulation.of(topology);
         // Disjoint links: one sweep is exact; a tolerance still guards the general case.
-        sim.projection().setTolerance(1e-9).setMaxIterations(50);
+        sim.apply(sim.settings().withProjection(1e-9, 50));
         return sim;
     }
 

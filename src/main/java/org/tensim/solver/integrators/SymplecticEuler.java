@@ -27,6 +27,11 @@ public final class SymplecticEuler implements Integrator {
         return new double[] {x + h * v1, v1};
     });
 
+    @Override
+    public LinearStability stability() {
+        return STABILITY;
+    }
+
     private final NodeLoops.Body update = this::updateRange;
     private final double[] scratch = new double[6];
     private double[] f;
@@ -46,11 +51,6 @@ public final class SymplecticEuler implements Integrator {
     @Override
     public int forceEvaluationsPerStep() {
         return 1;
-    }
-
-    @Override
-    public LinearStability stability() {
-        return STABILITY;
     }
 
     @Override

@@ -45,6 +45,11 @@ public final class VelocityVerlet implements Integrator {
         return new double[] {x1, vh + h / 2 * a1};
     });
 
+    @Override
+    public LinearStability stability() {
+        return STABILITY;
+    }
+
     private final NodeLoops.Body kickDrift = this::kickDriftRange;
     private final NodeLoops.Body kick = this::kickRange;
     private double[] f;
@@ -71,11 +76,6 @@ public final class VelocityVerlet implements Integrator {
     @Override
     public int forceEvaluationsPerStep() {
         return 1;
-    }
-
-    @Override
-    public LinearStability stability() {
-        return STABILITY;
     }
 
     @Override

@@ -43,6 +43,11 @@ public final class Parallelism implements AutoCloseable {
         sim.projection().setSweeps(links);
     }
 
+    /** Installs with the thread count of the simulation's settings ({@code SolverSettings.threads}). */
+    public static Parallelism install(Simulation sim) {
+        return install(sim, sim.settings().threads());
+    }
+
     /** Installs with the automatic node order ({@link ParallelSpringPass.Order#AUTO}). */
     public static Parallelism install(Simulation sim, int threads) {
         return install(sim, threads, ParallelSpringPass.Order.AUTO);
