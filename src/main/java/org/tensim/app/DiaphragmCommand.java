@@ -19,6 +19,7 @@ import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -104,10 +105,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
     List<ActionLines.Line> actionLines;
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     /**
      * Springs from which the automatic thread count uses every core: the real-time study
@@ -126,7 +126,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: 1e-12)")
     Double cgTolerance;
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
+                    + " this scene; summary.json's dt_rule says how it was chosen)")
     double dt = 0;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
