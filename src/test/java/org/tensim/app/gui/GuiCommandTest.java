@@ -28,16 +28,16 @@ class GuiCommandTest {
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
         StringWriter err = new StringWriter();
-        assertEquals(1, run(err, "gui", "--scene", "teapot"));
+        assertEquals(2, run(err, "gui", "--scene", "teapot"), "a refused option value is a usage error");
         assertTrue(err.toString().contains("'teapot'") && err.toString().contains("cube"), err.toString());
         StringWriter err2 = new StringWriter();
-        assertEquals(1, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
+        assertEquals(2, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"), "a refused option value is a usage error");
         assertTrue(err2.toString().contains("organ.obj"), err2.toString());
         StringWriter err3 = new StringWriter();
-        assertEquals(1, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
+        assertEquals(2, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()), "a refused option value is a usage error");
         assertTrue(err3.toString().contains("none.obj") && err3.toString().contains("no such file"), err3.toString());
         StringWriter err4 = new StringWriter();
-        assertEquals(1, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
+        assertEquals(2, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"), "a refused option value is a usage error");
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
     }
 
