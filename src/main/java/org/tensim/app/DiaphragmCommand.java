@@ -51,7 +51,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " rib cage, placed on the generated dome)")
     Path boxes;
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s; the breathing figures need one"
+            + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
     double seconds = 4;
 
     @Option(names = "--rib-amplitude", paramLabel = "FACTOR",

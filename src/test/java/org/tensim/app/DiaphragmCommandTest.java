@@ -54,6 +54,21 @@ class DiaphragmCommandTest {
     }
 
     @Test
+    void aRunShorterThanAnInspirationSucceedsAndSaysTheBreathingWasNotMeasured() throws Exception {
+        Path mesh = coarseMesh(6);
+        Path out = dir.resolve("short");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "0.2", "--out", out.toString());
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertFalse(s.containsKey("dome_excursion_mm"), s.toString());
+        assertTrue(String.valueOf(s.get("breathing")).startsWith("not measured: the run of 0.2 s"), s.toString());
+        assertEquals(0.2, ((Number) s.get("simulated_s")).doubleValue(), 1e-3);
+        // the displacement CSV holds the end of the run: a header and one row per diaphragm node
+        int nodes = ((Number) s.get("diaphragm_nodes")).intValue();
+        assertEquals(1 + nodes, Files.readAllLines(out.resolve("displacements.csv")).size());
+    }
+
+    @Test
     void writesEveryOutputAndASummaryWithTheIssuesKeys() throws Exception {
         Path mesh = coarseMesh(10);
         Path out = dir.resolve("out");

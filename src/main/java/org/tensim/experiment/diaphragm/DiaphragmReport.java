@@ -41,13 +41,13 @@ public final class DiaphragmReport {
     /**
      * Run settings.
      *
-     * @param seconds         simulated time, s (at least one inspiration)
+     * @param seconds         simulated time, s (the breathing figures need at least one inspiration)
      * @param dtS             time step, s; 0 for the scene's recommended RK2 step
      * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
      * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
      * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
      * @param csvTimes        times of the displacement CSV, s; null for end-inspiration and the end of the
-     *                        measured cycle
+     *                        measured cycle (those within the run; the end of a run shorter than Ti)
      */
     public record Options(double seconds, double dtS, int vtkPerCycle, double vectorScale, double vectorIntervalS,
             double[] csvTimes) {
@@ -131,6 +131,9 @@ public final class DiaphragmReport {
         describeScene(summary, built);
         if (metrics.complete()) {
             describeBreathing(summary, metrics);
+        } else {
+            summary.put("breathing", "not measured: the run of " + o.seconds() + " s ends before end-inspiration, "
+                    + metrics.inspirationEnd() + " s");
         }
         describeRun(summary, built, o, sim, threads, dt, metrics.measuredCycleStart(), stepping);
         writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
