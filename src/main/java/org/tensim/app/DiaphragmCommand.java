@@ -234,8 +234,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {
-            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
-                    + out + ", figures marked DIVERGED)");
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
+                    + " (outputs up to that step are in " + out + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));
     }
