@@ -81,6 +81,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: ${DEFAULT-VALUE})")
     double bandPaPerM = BoundaryConditions.DEFAULT_BAND_PA_PER_M;
 
+    @Option(names = "--band-all-segments",
+            description = "attachment band: attach to every cage segment within the threshold, not only to the"
+                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
+    boolean allSegments;
+
     @Option(names = "--muscle-load", paramLabel = "MODEL",
             description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
                     + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
@@ -210,7 +215,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         try {
             bc = new BoundaryConditions(BoundaryConditions.parse(BoundaryConditions.Attachment.class, attachment),
                     bandPaPerM, BoundaryConditions.DEFAULT_TAPER_M,
-                    BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));
+                    BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad), !allSegments);
         } catch (IllegalArgumentException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--attachment, --band-stiffness,"
                     + " --muscle-load: " + e.getMessage());

@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
 import org.tensim.view.CubeViewScene;
@@ -25,9 +26,13 @@ public final class GuiScenes {
      * @param boxes       rib and sternum boxes file
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
-        /** The defaults: generated dome at the interactive resolution, the project's boxes. */
+        /**
+         * The defaults: the generated dome at the resolution the resolution study picked
+         * ({@link ResolutionPick}, meshes/resolution-pick.json; the paper's 43 rings when there is none),
+         * the project's boxes.
+         */
         public static Source defaults() {
-            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, DiaphragmSetup.DEFAULT_BOXES);
+            return new Source(null, "mm", 2.5, ResolutionPick.read().rings(), DiaphragmSetup.DEFAULT_BOXES);
         }
     }
 

@@ -16,11 +16,8 @@ import org.tensim.io.CsvWriter;
  * What a resolution study measured, family by family: each model's error against the
  * family's finest, the convergence order, and the coarsest model within a tolerance.
  *
- * <p>Error: for every upper-surface node of the finest model, the nearest upper-surface
- * node (at rest) of the coarser one is taken, and
- * {@code e = sqrt(sum |u_coarse - u_fine|^2 / sum |u_fine|^2)} (relative RMS of the
- * end-inspiration displacement; the nearest-node transfer itself adds an error of the order
- * of the displacement gradient times the coarse edge length, first order in h).
+ * <p>Error: relative RMS of the end-inspiration displacement of the upper surface against the
+ * finest model's, the coarse field interpolated at each fine node ({@link ResolutionStudy#error}).
  *
  * <p>Order: with h the mean edge length, the least-squares slope p of log e against log h
  * over the models coarser than the reference ({@code e ~ C h^p}), and the order between

@@ -32,7 +32,7 @@ final class AttachmentBand {
             throw new IllegalArgumentException("attachment band taper (" + taper * 1e3 + " mm) must not exceed the"
                     + " attachment threshold (" + w * 1e3 + " mm)");
         }
-        List<RibCage.Segment> segs = b.cage.segments();
+        List<RibCage.Segment> segs = bc.costalOriginsOnly() ? origins(b.cage.segments()) : b.cage.segments();
         boolean spineFound = false;
         double[] weight = new double[b.nv];
         RibCage.Segment[] nearest = new RibCage.Segment[b.nv];
@@ -94,6 +94,46 @@ final class AttachmentBand {
                 nearest[v] = null;
             }
         }
+    }
+
+    /**
+     * The diaphragm's origins among the cage's segments (Gray's Anatomy): the costal part arises from
+     * the inner surfaces of the lower six ribs and their cartilages (ribs 7-12), the sternal part from
+     * the back of the xiphoid process (the sternum's lowest segment), the lumbar part (crura) from the
+     * spine. Ribs 1-6 and their cartilages lie against the dome (the zone of apposition is apposed, not
+     * attached) and are left out.
+     */
+    static List<RibCage.Segment> origins(List<RibCage.Segment> all) {
+        List<RibCage.Segment> out = new java.util.ArrayList<>();
+        RibCage.Segment xiphoid = null;
+        for (RibCage.Segment s : all) {
+            switch (s.kind()) {
+                case RIB, CARTILAGE -> {
+                    if (ribNumber(s.name()) >= 7) {
+                        out.add(s);
+                    }
+                }
+                case STERNUM -> xiphoid = s; // segments run from the manubrium down: the last is the lowest
+                case SPINE -> out.add(s);
+                default -> throw new IllegalStateException("unknown cage segment kind " + s.kind());
+            }
+        }
+        if (xiphoid != null) {
+            out.add(xiphoid);
+        }
+        return out;
+    }
+
+    /** The rib number at the end of a segment name such as {@code rib-r7} or {@code cartilage-l10}. */
+    private static int ribNumber(String name) {
+        int i = name.length();
+        while (i > 0 && Character.isDigit(name.charAt(i - 1))) {
+            i--;
+        }
+        if (i == name.length()) {
+            throw new IllegalStateException("cage segment '" + name + "' has no rib number");
+        }
+        return Integer.parseInt(name.substring(i));
     }
 
     /** 1 inside the band, falling as cos^2 over the last {@code taper} metres to 0 at {@code w}. */

@@ -15,9 +15,11 @@ import org.tensim.model.Check;
  * @param bandTaperM          band: width over which the tie's stiffness falls smoothly to zero at the band's outer
  *                            edge (the attachment threshold), m; in [0, threshold]
  * @param muscleLoad          {@link MuscleLoad#PRESSURE} (default) or the paper's {@link MuscleLoad#PAPER_NODES}
+ * @param costalOriginsOnly   band: attach only to the diaphragm's anatomical origins (ribs 7-12 and their
+ *                            cartilages, the xiphoid, the spine) rather than to any cage segment
  */
 public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPerM, double bandTaperM,
-        MuscleLoad muscleLoad) {
+        MuscleLoad muscleLoad, boolean costalOriginsOnly) {
 
     /** Default band stiffness, Pa/m (docs/diaphragm.md: boundary layer sqrt(E t / k_b) near 2 mm). */
     public static final double DEFAULT_BAND_PA_PER_M = 2.5e7;
@@ -65,25 +67,31 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
 
     /** The defaults: an elastic band and an integrated pressure. */
     public static BoundaryConditions defaults() {
-        return new BoundaryConditions(Attachment.BAND, DEFAULT_BAND_PA_PER_M, DEFAULT_TAPER_M, MuscleLoad.PRESSURE);
+        return new BoundaryConditions(Attachment.BAND, DEFAULT_BAND_PA_PER_M, DEFAULT_TAPER_M, MuscleLoad.PRESSURE,
+                true);
     }
 
     /** The paper's: attachment by a distance threshold, muscle forces per node. */
     public static BoundaryConditions paper() {
         return new BoundaryConditions(Attachment.PAPER_THRESHOLD, DEFAULT_BAND_PA_PER_M, DEFAULT_TAPER_M,
-                MuscleLoad.PAPER_NODES);
+                MuscleLoad.PAPER_NODES, false);
     }
 
     public BoundaryConditions withAttachment(Attachment a) {
-        return new BoundaryConditions(a, bandStiffnessPaPerM, bandTaperM, muscleLoad);
+        return new BoundaryConditions(a, bandStiffnessPaPerM, bandTaperM, muscleLoad, costalOriginsOnly);
     }
 
     public BoundaryConditions withMuscleLoad(MuscleLoad m) {
-        return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, m);
+        return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, m, costalOriginsOnly);
     }
 
     public BoundaryConditions withBandStiffness(double paPerM) {
-        return new BoundaryConditions(attachment, paPerM, bandTaperM, muscleLoad);
+        return new BoundaryConditions(attachment, paPerM, bandTaperM, muscleLoad, costalOriginsOnly);
+    }
+
+    /** The same with the band attached to the anatomical origins only (true) or to any cage segment. */
+    public BoundaryConditions withCostalOriginsOnly(boolean only) {
+        return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, muscleLoad, only);
     }
 
     /** Parses a model name as given on the command line: "band", "paper-threshold", "pressure", "paper-nodes". */

@@ -22,9 +22,15 @@ final class SceneFixture {
 
     /** A coarse double dome (rings per face) with the default parameters. */
     static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa) throws IOException {
+        return coarse(rings, ribAmplitude, musclePa, BoundaryConditions.defaults());
+    }
+
+    /** As {@link #coarse(int, double, double)} with the given attachment and muscle-load models. */
+    static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa, BoundaryConditions bc)
+            throws IOException {
         return DiaphragmScene.build(
                 TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings))),
                 boxes(), DiaphragmParameters.defaults(), BreathingCycle.quiet(),
-                new DiaphragmControls(ribAmplitude, musclePa), null);
+                new DiaphragmControls(ribAmplitude, musclePa), null, bc);
     }
 }
