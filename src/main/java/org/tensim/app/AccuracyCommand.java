@@ -10,9 +10,11 @@ import java.util.concurrent.Callable;
 import org.knowm.xchart.XYChart;
 import org.tensim.analysis.AccuracyScenes;
 import org.tensim.analysis.AccuracyStudy;
+import org.tensim.analysis.ShellStudy;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -26,8 +28,11 @@ import picocli.CommandLine.Option;
             "Writes per scene to --out: accuracy-SCENE.csv, SCENE-work-precision.png",
             "(error against wall time), SCENE-evaluations.png (error against force",
             "evaluations), SCENE-convergence.png (error against dt). Prints the measured",
-            "order of each method; the last line is one JSON object with, per",
-            "integrator, `order` (first scene), `expected_order` and `order_by_scene`."})
+            "order of each method. Then the shell's statics against element size",
+            "(--shell): the patch test and the clamped circular plate against Kirchhoff,",
+            "shell-MODEL.csv and shell-MODEL-convergence.png, with the measured orders.",
+            "The last line is one JSON object with, per integrator, `order` (first",
+            "scene), `expected_order` and `order_by_scene`, and `shell` (the static section)."})
 public final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
             description = "scenes (default: all of ${COMPLETION-CANDIDATES})", completionCandidates = SceneNames.class)
@@ -42,6 +47,15 @@ public final class AccuracyCommand implements Callable<Integer> {
 
     @Option(names = "--rungs", paramLabel = "N", description = "number of time steps in the ladder (default: the scene's)")
     Integer rungs;
+
+    @Option(names = "--shell", paramLabel = "MODEL",
+            description = "tissue model of the shell statics section: material, paper or none (default: ${DEFAULT-VALUE})")
+    String shell = "material";
+
+    @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]",
+            description = "ring counts of the clamped plate, coarsest first (default: 6,10,14,20,28,43; 43 is the "
+                    + "default diaphragm's element size)")
+    int[] shellRings = ShellStudy.PLATE_RINGS;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
     Path out = Path.of("out", "accuracy");
@@ -63,6 +77,12 @@ public final class AccuracyCommand implements Callable<Integer> {
         }
         if (largestDt != null && !(largestDt > 0)) {
             throw new IllegalArgumentException("--dt must be a number > 0 s, got " + largestDt);
+        }
+        TissueModel shellModel = "none".equalsIgnoreCase(shell) ? null : TissueModel.parse(shell);
+        for (int n : shellRings) {
+            if (n < 2) {
+                throw new IllegalArgumentException("--shell-rings must be at least 2, got " + n);
+            }
         }
         if (rungs != null && rungs < 2) {
             throw new IllegalArgumentException("--rungs must be at least 2, got " + rungs);
@@ -93,6 +113,9 @@ public final class AccuracyCommand implements Callable<Integer> {
             byScene.forEach((s, m) -> per.put(s, round(m.get(i))));
             e.put("order_by_scene", per);
             json.put(i, e);
+        }
+        if (shellModel != null) {
+            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println), out));
         }
         System.out.println(Json.line(json));
         return 0;

@@ -7,7 +7,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
 import org.tensim.io.mesh.MeshCleaner;
@@ -45,8 +45,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double thicknessMm = 2.5;
 
     @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
-    Path boxes = DiaphragmSetup.DEFAULT_BOXES;
+            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
+                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
+                    + " rib cage, placed on the generated dome)")
+    Path boxes;
 
     @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
     double seconds = 4;

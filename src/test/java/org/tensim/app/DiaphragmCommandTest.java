@@ -13,7 +13,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
 import picocli.CommandLine;
 
@@ -45,9 +45,8 @@ class DiaphragmCommandTest {
         return new String[] {String.valueOf(code), out.toString(), err.toString()};
     }
 
-    /** A generated mesh of the given rings in the test folder; skips without rib boxes or AWT (figures). */
+    /** A generated mesh of the given rings in the test folder; skips without AWT (figures). */
     private Path coarseMesh(int rings) {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
         Path mesh = dir.resolve("coarse-" + rings + ".obj");
         assertEquals("0", run("diaphragm-mesh", "--rings", String.valueOf(rings), "--out", mesh.toString())[0]);
@@ -121,7 +120,6 @@ class DiaphragmCommandTest {
 
     @Test
     void aDivergingRunStopsWithOneLineAndKeepsWhatItWrote() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
         Path mesh = dir.resolve("coarse.obj");
         run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());
@@ -139,13 +137,12 @@ class DiaphragmCommandTest {
 
     @Test
     void aSingleSurfaceMeshIsOffset() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         Path mesh = dir.resolve("upper.obj");
         org.tensim.io.mesh.ObjWriter.write(mesh, org.tensim.scene.diaphragm.DoubleDomeGenerator.upperSurface(
                 org.tensim.scene.diaphragm.DoubleDomeGenerator.Shape.adult().withRings(8)),
                 org.tensim.io.mesh.MeshUnits.MM, List.of(), 4);
         DiaphragmSetup.Built b = DiaphragmSetup.load(mesh, org.tensim.io.mesh.MeshUnits.MM, 0.002,
-                DiaphragmSetup.DEFAULT_BOXES, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
+                null, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
                 org.tensim.scene.diaphragm.BreathingCycle.quiet(),
                 new org.tensim.scene.diaphragm.DiaphragmControls(1, 2600));
         assertEquals(DiaphragmSetup.SurfaceMode.OFFSET, b.mode());

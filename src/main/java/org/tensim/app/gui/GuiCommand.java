@@ -6,8 +6,8 @@ import java.nio.file.StandardCopyOption;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.ViewScene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -43,8 +43,10 @@ public final class GuiCommand implements Callable<Integer> {
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
-    Path boxes = GuiScenes.Source.defaults().boxes();
+            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
+                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
+                    + " rib cage, placed on the generated dome)")
+    Path boxes;
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
     Path preset;
@@ -128,7 +130,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // The first scene was made with the defaults: make it again if what was restored needs a new one.
         boolean remake = factory.hasTendonChoice() && !tuning.tensegrityTendon();
-        for (org.tensim.view.TunableParameter p : first.parameters()) {
+        for (org.tensim.scene.tunable.TunableParameter p : first.parameters()) {
             remake |= p.restarts() && tuning.get(p.key()) != p.defaultValue();
         }
         if (remake) {

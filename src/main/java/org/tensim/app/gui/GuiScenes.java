@@ -3,13 +3,12 @@ package org.tensim.app.gui;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.DiaphragmViewScene;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.SceneFactory;
 
 /** The scenes the GUI can show, by name. */
 public final class GuiScenes {
@@ -23,16 +22,16 @@ public final class GuiScenes {
      * @param units       units of the mesh file, {@code mm} or {@code m}
      * @param thicknessMm thickness given to a single-surface mesh, mm
      * @param rings       resolution of the generated double dome, rings per face
-     * @param boxes       rib and sternum boxes file
+     * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
         /**
          * The defaults: the generated dome at the resolution the resolution study picked
          * ({@link ResolutionPick}, meshes/resolution-pick.json; the paper's 43 rings when there is none),
-         * the project's boxes.
+         * the project's parametric rib cage.
          */
         public static Source defaults() {
-            return new Source(null, "mm", 2.5, ResolutionPick.read().rings(), DiaphragmSetup.DEFAULT_BOXES);
+            return new Source(null, "mm", 2.5, ResolutionPick.read().rings(), null);
         }
     }
 

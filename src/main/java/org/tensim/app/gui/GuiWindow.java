@@ -28,11 +28,11 @@ import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.solver.SimulationDivergedException;
-import org.tensim.view.FrameBuffer;
-import org.tensim.view.ProbeRecorder;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.view.SceneView;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * The main window: the Java3D view, the control panel, the live probe chart and

@@ -1,5 +1,6 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -96,45 +97,57 @@ public final class DiaphragmReport {
         }
     }
 
+    /**
+     * The run in named steps: plan the instants whose positions are kept, step and sample, sum up,
+     * write the files.
+     */
     private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
             long[] workers, Path out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
-        org.tensim.solver.Integrator chosen = sim.integrator();
-        String integrator = chosen.name();
         double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
-        double start = metrics.measuredCycleStart();
-        double ti = scene.cycle().inspirationS();
-        double period = scene.cycle().periodS();
+        Snapshots snapshots = Snapshots.plan(scene, o, metrics.measuredCycleStart());
+        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
+                scene.allTriangles(), java.util.Arrays.copyOf(scene.labels(), scene.simulatedNodes()), "tissue") : null;
+        Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out.resolve("probe.csv"), workers);
+        Map<String, Object> summary = new LinkedHashMap<>();
+        describeScene(summary, built);
+        if (metrics.complete()) {
+            describeBreathing(summary, metrics);
+        }
+        describeRun(summary, built, o, sim, threads, dt, metrics.measuredCycleStart(), stepping);
+        writeDisplacements(out.resolve("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
+        figures(out, scene, snapshots.kept, snapshots.rest, o);
+        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
+        Json.write(out.resolve("summary.json"), summary);
+        if (stepping.diverged != null) {
+            throw new IllegalStateException(stepping.diverged + " (outputs so far are in " + out + ")");
+        }
+        if (log != null) {
+            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
+                    + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
+        }
+        return summary;
+    }
+
+    /** What the stepping loop measured: wall and CPU time of the steps, and the divergence message if any. */
+    private record Stepping(double wallS, double cpuS, String diverged) {
+    }
+
+    /**
+     * Steps to the end, sampling as it goes: snapshots, VTK frames, the probe CSV every 5 ms, the
+     * breathing metrics after every step. Stops early, with the message, when the run diverges.
+     */
+    private static Stepping step(DiaphragmScene scene, Simulation sim, Options o, double dt,
+            BreathingMetrics metrics, Snapshots snapshots, VtkSeriesWriter vtk, Path probeCsv, long[] workers)
+            throws IOException {
         int simulated = scene.simulatedNodes();
         int nd = scene.diaphragmNodes();
-        int[] labels = scene.labels();
-
-        // Instants whose positions are kept: the vector pair at mid-inspiration, end-exp/insp, CSV times.
-        double vecA = start + 0.5 * ti - 0.5 * o.vectorIntervalS();
-        double vecB = vecA + o.vectorIntervalS();
-        double[] csvTimes = o.csvTimes() != null ? o.csvTimes().clone()
-                : new double[] {start + ti, Math.min(o.seconds(), start + period)};
-        for (double t : csvTimes) {
-            if (!(t >= 0 && t <= o.seconds())) {
-                throw new IllegalArgumentException("CSV time " + t + " s is outside the run [0, " + o.seconds()
-                        + "] s");
-            }
-        }
-        List<Double> wanted = new ArrayList<>(List.of(vecA, vecB, start, start + ti));
-        for (double t : csvTimes) {
-            wanted.add(t);
-        }
-        double[][] kept = new double[wanted.size()][];
-        double[] keptTime = new double[wanted.size()];
-
-        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
-                scene.allTriangles(), java.util.Arrays.copyOf(labels, simulated), "tissue") : null;
-        double vtkEvery = o.vtkPerCycle() > 0 ? period / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
+        int apex = scene.apexNode();
+        double vtkEvery = o.vtkPerCycle() > 0 ? scene.cycle().periodS() / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
         double nextVtk = 0;
         double[] rest = java.util.Arrays.copyOf(sim.state().x0, 3 * simulated);
-
-        Map<String, Object> summary = new LinkedHashMap<>();
+        snapshots.rest = rest;
         long stepNanos = 0;
         // CPU time of this thread as well as wall time: on a shared machine the wall time also
         // counts the time the thread waited for a core.
@@ -142,20 +155,14 @@ public final class DiaphragmReport {
         boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
         long cpuNanos = 0;
         String diverged = null;
-        int apex = scene.apexNode();
-        try (CsvWriter probe = new CsvWriter(out.resolve("probe.csv"), List.of("t_s", "breathing_level",
+        try (CsvWriter probe = new CsvWriter(probeCsv, List.of("t_s", "breathing_level",
                 "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20)) {
             double probeEvery = 0.005;
             double nextProbe = 0;
             metrics.begin(sim);
             while (true) {
                 double t = sim.time();
-                for (int i = 0; i < wanted.size(); i++) {
-                    if (kept[i] == null && t >= wanted.get(i) - 0.5 * dt) {
-                        kept[i] = java.util.Arrays.copyOf(sim.state().x, 3 * simulated);
-                        keptTime[i] = t;
-                    }
-                }
+                snapshots.offer(t, dt, sim.state().x, simulated);
                 if (vtk != null && t >= nextVtk - 0.5 * dt) {
                     vtk.frame(t, java.util.Arrays.copyOf(sim.state().x, 3 * simulated), rest);
                     nextVtk += vtkEvery;
@@ -179,16 +186,20 @@ public final class DiaphragmReport {
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();
         }
-        double wall = stepNanos / 1e9;
         for (int w = 0; w < workers.length && cpuTimed; w++) {
             // Worker threads exist for this run only: their whole CPU time is the steps' (spinning included).
             cpuNanos += Math.max(0, cpu.getThreadCpuTime(workers[w]));
         }
-        double cpuS = cpuTimed ? cpuNanos / 1e9 : Double.NaN;
+        return new Stepping(stepNanos / 1e9, cpuTimed ? cpuNanos / 1e9 : Double.NaN, diverged);
+    }
+
+    /** The scene's make-up: source, sizes, attachments, tendon, thickness. */
+    private static void describeScene(Map<String, Object> summary, DiaphragmSetup.Built built) {
+        DiaphragmScene scene = built.scene();
         summary.put("source", built.source());
         summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
         summary.put("nodes", scene.topology().nodeCount());
-        summary.put("diaphragm_nodes", nd);
+        summary.put("diaphragm_nodes", scene.diaphragmNodes());
         summary.put("anchor_nodes", scene.anchorNodes());
         summary.put("springs", scene.topology().springs().size());
         summary.put("rigid_links", scene.topology().rigidLinks().size());
@@ -198,19 +209,30 @@ public final class DiaphragmReport {
         summary.put("attached_to_spine", scene.attachedToSpine());
         summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
-        if (metrics.complete()) {
-            summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-            summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-            summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-            summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-            summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-            summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-            summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-            summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        }
+    }
+
+    /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
+    private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
+        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
+        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
+        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
+        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
+        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
+        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
+        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+    }
+
+    /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */
+    private static void describeRun(Map<String, Object> summary, DiaphragmSetup.Built built, Options o,
+            Simulation sim, int threads, double dt, double measuredCycleStart, Stepping stepping) {
+        DiaphragmScene scene = built.scene();
+        org.tensim.solver.Integrator chosen = sim.integrator();
+        double wall = stepping.wallS();
+        double cpuS = stepping.cpuS();
         summary.put("simulated_s", round(sim.time(), 6));
-        summary.put("measured_cycle_start_s", start);
-        summary.put("integrator", integrator);
+        summary.put("measured_cycle_start_s", measuredCycleStart);
+        summary.put("integrator", chosen.name());
         summary.put("threads", threads);
         if (chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie) {
             summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
@@ -229,42 +251,29 @@ public final class DiaphragmReport {
                 .getSystemLoadAverage(), 2));
         summary.put("rib_amplitude", scene.controls().ribAmplitude());
         summary.put("muscle_force_pa", scene.controls().muscleAmplitudePa());
-        summary.put("breathing_period_s", period);
+        summary.put("breathing_period_s", scene.cycle().periodS());
         summary.put("unconverged_projections", sim.unconvergedProjections());
         if (built.meshReport() != null) {
             summary.put("mesh", built.meshReport().toMap());
         }
-        if (diverged != null) {
-            summary.put("diverged", diverged);
+        if (stepping.diverged() != null) {
+            summary.put("diverged", stepping.diverged());
         }
-
-        writeDisplacements(out.resolve("displacements.csv"), csvTimes, wanted, kept, keptTime, rest, labels, nd);
-        figures(out, scene, kept, rest, o);
-        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
-        Json.write(out.resolve("summary.json"), summary);
-        if (diverged != null) {
-            throw new IllegalStateException(diverged + " (outputs so far are in " + out + ")");
-        }
-        if (log != null) {
-            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
-                    + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
-        }
-        return summary;
     }
 
-    private static void writeDisplacements(Path file, double[] csvTimes, List<Double> wanted, double[][] kept,
-            double[] keptTime, double[] rest, int[] labels, int nd) throws IOException {
+    private static void writeDisplacements(Path file, Snapshots snapshots, int[] labels, int nd) throws IOException {
+        double[] rest = snapshots.rest;
         try (CsvWriter w = new CsvWriter(file, List.of("t_s", "node", "tissue", "x_m", "y_m", "z_m", "ux_m", "uy_m",
                 "uz_m"), 1000)) {
-            for (int c = 0; c < csvTimes.length; c++) {
+            for (int c = 0; c < snapshots.csvTimes.length; c++) {
                 int idx = 4 + c;
-                if (kept[idx] == null) {
+                if (snapshots.kept[idx] == null) {
                     continue; // the run stopped before this time
                 }
-                double[] x = kept[idx];
+                double[] x = snapshots.kept[idx];
                 for (int i = 0; i < nd; i++) {
-                    w.row(keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], x[3 * i] - rest[3 * i],
-                            x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
+                    w.row(snapshots.keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2],
+                            x[3 * i] - rest[3 * i], x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
                 }
             }
         }

@@ -25,6 +25,7 @@ import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.Simulation;

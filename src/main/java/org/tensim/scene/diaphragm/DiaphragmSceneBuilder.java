@@ -2,7 +2,6 @@ package org.tensim.scene.diaphragm;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Collections;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -10,6 +9,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.ShellMaterial;
 
 /**
  * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
@@ -36,6 +36,7 @@ final class DiaphragmSceneBuilder {
     int[] labels;
     boolean[] linked;
     Set<Long> linkPairs = new HashSet<>();
+    ShellNetwork network;
     RibCage cage;
     int apex = -1;
     ActionLines lines;
@@ -133,55 +134,12 @@ final class DiaphragmSceneBuilder {
         return labels[a] == DiaphragmScene.TENDON && labels[b] == DiaphragmScene.TENDON ? p.tendonYoungPa() : p.muscleYoungPa();
     }
 
+    /** The faces' springs, by the tissue model (see {@link ShellNetwork}). */
     void meshSprings() {
-        // sum of the areas of the triangles on each edge, then k = E (t/2) sum / |e|^2
-        java.util.Map<Long, double[]> edgeArea = new java.util.HashMap<>();
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            double a = mesh.area(tr);
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                edgeArea.computeIfAbsent(key(i, j), x -> new double[1])[0] += a;
-            }
-        }
-        List<Long> keys = new ArrayList<>(edgeArea.keySet());
-        Collections.sort(keys); // deterministic order
-        for (long e : keys) {
-            int i = (int) (e >>> 32);
-            int j = (int) e;
-            double len = TwoSurfaces.distance(mesh, i, j);
-            springs.add(i, j, young(i, j) * (thickness / 2) * edgeArea.get(e)[0] / (len * len));
-        }
-        bendingSprings(edgeArea);
-    }
-
-    /**
-     * Across every edge shared by two triangles of the same face, a spring between the two
-     * opposite vertices: it resists folding about the edge (as in cloth models), which keeps
-     * the thin compressed walls from buckling at the scale of the mesh.
-     */
-    private void bendingSprings(java.util.Map<Long, double[]> edgeArea) {
-        if (p.bendingFactor() == 0) {
-            return;
-        }
-        java.util.Map<Long, Integer> firstOpposite = new java.util.HashMap<>();
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                int o = mesh.corner(tr, (k + 2) % 3);
-                if (surfaces.isUpper(i) != surfaces.isUpper(o) || surfaces.isUpper(j) != surfaces.isUpper(o)
-                        || surfaces.isUpper(i) != surfaces.isUpper(j)) {
-                    continue;
-                }
-                Integer other = firstOpposite.putIfAbsent(key(i, j), o);
-                if (other != null && other != o) {
-                    double len = TwoSurfaces.distance(mesh, o, other);
-                    double a = edgeArea.get(key(i, j))[0];
-                    springs.add(o, other, p.bendingFactor() * young(o, other) * (thickness / 2) * a / (len * len));
-                }
-            }
-        }
+        network = new ShellNetwork(surfaces, area, this::young,
+                new ShellMaterial(p.muscleYoungPa(), p.poissonRatio(), thickness, p.densityKgPerM3()),
+                p.tissueModel(), p.bendingFactor());
+        network.membrane(springs);
     }
 
     void rigidLinks() {
@@ -208,60 +166,7 @@ final class DiaphragmSceneBuilder {
     }
 
     void thicknessSprings() {
-        List<Set<Integer>> neighbours = new ArrayList<>();
-        for (int v = 0; v < nv; v++) {
-            neighbours.add(new HashSet<>());
-        }
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                neighbours.get(i).add(j);
-                neighbours.get(j).add(i);
-            }
-        }
-        boolean[] connected = new boolean[nv];
-        double maxLen = 3 * thickness;
-        for (int u = 0; u < nv; u++) {
-            if (!surfaces.isUpper(u)) {
-                continue;
-            }
-            Set<Integer> targets = new java.util.TreeSet<>();
-            targets.add(surfaces.partner(u));
-            double longestEdge = 0;
-            for (int j : neighbours.get(u)) {
-                longestEdge = Math.max(longestEdge, TwoSurfaces.distance(mesh, u, j));
-                if (surfaces.isUpper(j)) {
-                    targets.add(surfaces.partner(j));
-                }
-            }
-            // The diagonals couple the two faces in shear: they must exist at every element size, so the
-            // cap (against a partner found on the far side of a badly paired mesh) grows with the local
-            // edge length. A cap of 3 thicknesses alone dropped every diagonal on meshes coarser than
-            // about 7 mm and left the faces free to slide (docs/diaphragm.md, resolution study).
-            final double cap = 3 * (thickness + longestEdge);
-            final int up = u;
-            targets.removeIf(l -> l < 0 || surfaces.isUpper(l) || springs.contains(up, l)
-                    || linkPairs.contains(key(up, l)) || TwoSurfaces.distance(mesh, up, l) > cap);
-            for (int l : targets) {
-                double len = TwoSurfaces.distance(mesh, u, l);
-                // Across the thickness the tendon is held by its rigid links; its springs there are muscle-like.
-                springs.add(u, l, p.muscleYoungPa() * area[u] / (targets.size() * len));
-                connected[u] = true;
-                connected[l] = true;
-            }
-            connected[u] |= linked[u];
-        }
-        for (int l = 0; l < nv; l++) {
-            int u = surfaces.partner(l);
-            if (surfaces.isUpper(l) || connected[l] || linked[l] || u < 0 || springs.contains(u, l)) {
-                continue;
-            }
-            double len = TwoSurfaces.distance(mesh, u, l);
-            if (len > 0 && len <= maxLen) {
-                springs.add(u, l, p.muscleYoungPa() * area[l] / len);
-            }
-        }
+        network.thickness(springs, linkPairs, linked);
     }
 
     void attach() {

@@ -157,10 +157,8 @@ public final class DoubleDomeGenerator {
         double[] radius = ringRadii(s);
         int nv = faceVertices(n);
         double[] xyz = new double[3 * nv];
-        int[] ringStart = new int[n + 1];
         int v = 0;
         for (int i = 0; i <= n; i++) {
-            ringStart[i] = v;
             int count = i == 0 ? 1 : 6 * i;
             for (int j = 0; j < count; j++) {
                 double th = 2 * Math.PI * j / count;
@@ -171,6 +169,20 @@ public final class DoubleDomeGenerator {
                 xyz[3 * v + 2] = s.height(u, w);
                 v++;
             }
+        }
+        return new TriangleMesh(xyz, ringTriangles(n));
+    }
+
+    /**
+     * Triangles of a disc of concentric rings: vertex 0 at the centre, then ring i (1..rings) of 6 i
+     * vertices in order of angle; each ring is zipped to the one inside it by angle, so every
+     * triangle advances one of the two rings by one vertex (6 rings^2 triangles, 3 indices each).
+     */
+    public static int[] ringTriangles(int rings) {
+        int n = rings;
+        int[] ringStart = new int[n + 1];
+        for (int i = 1; i <= n; i++) {
+            ringStart[i] = ringStart[i - 1] + (i == 1 ? 1 : 6 * (i - 1));
         }
         int[] tri = new int[3 * 6 * n * n];
         int k = 0;
@@ -198,7 +210,7 @@ public final class DoubleDomeGenerator {
                 }
             }
         }
-        return new TriangleMesh(xyz, Arrays.copyOf(tri, k));
+        return Arrays.copyOf(tri, k);
     }
 
     /** Normalised ring radii 0..1, equally spaced in arc length along the mean meridian. */

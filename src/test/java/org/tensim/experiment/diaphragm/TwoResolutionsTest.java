@@ -2,9 +2,7 @@ package org.tensim.experiment.diaphragm;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.nio.file.Files;
 import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.MidpointSubdivision;
@@ -13,6 +11,7 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 
@@ -25,9 +24,8 @@ import org.tensim.scene.diaphragm.TwoSurfaces;
  */
 class TwoResolutionsTest {
     private static ResolutionStudy.Setup setup() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes not present");
         BreathingCycle cycle = BreathingCycle.quiet();
-        return new ResolutionStudy.Setup(DiaphragmSetup.boxes(DiaphragmSetup.DEFAULT_BOXES),
+        return new ResolutionStudy.Setup(DiaphragmSetup.boxes(null),
                 DiaphragmParameters.defaults(), BoundaryConditions.defaults(), cycle,
                 new DiaphragmControls(1, DiaphragmSetup.DEFAULT_MUSCLE_PA), cycle.inspirationS(),
                 ResolutionStudy.TOLERANCE, null);

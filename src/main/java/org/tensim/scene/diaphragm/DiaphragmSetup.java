@@ -1,4 +1,4 @@
-package org.tensim.experiment.diaphragm;
+package org.tensim.scene.diaphragm;
 
 import org.tensim.io.ProjectFolder;
 import java.io.IOException;
@@ -13,26 +13,23 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.scene.diaphragm.ActionLines;
-import org.tensim.scene.diaphragm.BoundaryConditions;
-import org.tensim.scene.diaphragm.BreathingCycle;
-import org.tensim.scene.diaphragm.DiaphragmControls;
-import org.tensim.scene.diaphragm.DiaphragmParameters;
-import org.tensim.scene.diaphragm.DiaphragmScene;
-import org.tensim.scene.diaphragm.DoubleDomeGenerator;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 
 /**
  * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two
  * boundary surfaces (a thin closed shell is split; a single surface is offset by
- * the thickness), reads the rib boxes, builds the scene. Shared by the command,
- * the tests and the resolution study.
+ * the thickness), takes the rib cage (the project's parametric one, or boxes read
+ * from a file), builds the scene. Shared by the command, the GUI, the tests and the
+ * studies. A boxes file of null everywhere below means the parametric cage,
+ * {@link ParametricRibCage#adult()}.
  */
 public final class DiaphragmSetup {
     /** The project's default mesh, relative to the project folder. */
     public static final Path DEFAULT_MESH = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
-    /** The BodyParts3D rib and sternum boxes, relative to the project folder. */
-    public static final Path DEFAULT_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+    /**
+     * BodyParts3D's rib and sternum boxes beside the project (optional: {@code --boxes} this file;
+     * the default cage is {@link ParametricRibCage}).
+     */
+    public static final Path BODYPARTS3D_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
     /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
     public static final double DEFAULT_MUSCLE_PA = 2600;
@@ -82,7 +79,7 @@ public final class DiaphragmSetup {
         MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
         Surfaces s = surfaces(r.mesh(), offsetThicknessM);
         return new Built(DiaphragmScene.build(s.surfaces(), boxes(boxesFile), p, cycle, controls, lines, bc), r.report(),
-                s.mode(), meshFile.toString());
+                s.mode(), meshFile + ", " + cage(boxesFile));
     }
 
     /** A mesh's two boundary surfaces and how they were found. */
@@ -120,17 +117,28 @@ public final class DiaphragmSetup {
             BreathingCycle cycle, DiaphragmControls controls, BoundaryConditions bc) throws IOException {
         TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
         return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines, bc),
-                null,
-                SurfaceMode.SHELL, "generated double dome, " + rings + " rings");
+                null, SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
     }
 
-    /** Reads the rib and sternum boxes (millimetres), with a message that says where to find them. */
+    /**
+     * The rib and sternum boxes, metres: the project's parametric cage when {@code file} is null, else
+     * the file's boxes (millimetres), with a message that says where to find them.
+     */
     public static Map<String, double[]> boxes(Path file) throws IOException {
+        if (file == null) {
+            return ParametricRibCage.adult();
+        }
         if (!Files.isRegularFile(file)) {
             throw new IOException(file + ": rib and sternum boxes not found; expected BodyParts3D's"
-                    + " rib-sternum-bounds-mm.json (give its path with --boxes)");
+                    + " rib-sternum-bounds-mm.json or boxes of that form (or leave out --boxes for the project's"
+                    + " parametric rib cage)");
         }
         return BoxesJson.read(file, 1e-3);
+    }
+
+    /** Which rib cage a boxes file (null: the parametric one) stands for, for summaries. */
+    public static String cage(Path boxesFile) {
+        return boxesFile == null ? "parametric rib cage" : "rib boxes " + boxesFile;
     }
 
     private static double sq(double x) {
