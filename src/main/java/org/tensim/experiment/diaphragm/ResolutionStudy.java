@@ -39,7 +39,8 @@ import org.tensim.solver.Simulation;
  *
  * <p>Families: without a mesh, the project's double dome at several ring counts (reference:
  * the default 43 rings) and the BodyParts3D diaphragm simplified by vertex clustering, faces
- * kept apart (reference: its finest simplification; only when that mesh is present). With a
+ * kept apart, with BodyParts3D's rib boxes (reference: its finest simplification; only when that
+ * mesh is present). With a
  * mesh ({@link #runMesh}), that mesh decimated by vertex clustering at the given cell sizes,
  * as given, and refined by midpoint subdivision; the finest is the reference.
  */
@@ -83,6 +84,10 @@ public final class ResolutionStudy {
                         + tolerance);
             }
         }
+
+        Setup withBoxes(Map<String, double[]> b) {
+            return new Setup(b, p, bc, cycle, controls, seconds, tolerance, log);
+        }
     }
 
     private ResolutionStudy() {
@@ -102,7 +107,10 @@ public final class ResolutionStudy {
         List<List<Run>> families = new ArrayList<>(List.of(parametric));
         if (Files.isRegularFile(BODYPARTS_MESH)) {
             TriangleMesh full = MeshLoader.load(BODYPARTS_MESH, MeshUnits.MM).mesh();
-            families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, s));
+            // the mesh with the rib boxes of the same anatomy when they are there
+            Setup bp = Files.isRegularFile(DiaphragmSetup.BODYPARTS3D_BOXES) ? s.withBoxes(
+                    DiaphragmSetup.boxes(DiaphragmSetup.BODYPARTS3D_BOXES)) : s;
+            families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, bp));
         }
         Map<String, Object> summary = report(families, s, out);
         List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.MidpointSubdivision;
+import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
@@ -47,7 +48,7 @@ class TwoResolutionsTest {
 
     @Test
     void theMeasureInterpolatesALinearFieldExactlyWhereTheNearestNodeDoesNot() {
-        TriangleMesh coarse = square(0.1, 6);
+        TriangleMesh coarse = FlatMeshes.square(0.1, 6);
         TriangleMesh fine = MidpointSubdivision.refine(coarse, 1);
         assertEquals(4 * coarse.triangleCount(), fine.triangleCount());
         assertEquals(coarse.totalArea(), fine.totalArea(), 1e-12 * coarse.totalArea(), "subdivision keeps the surface");
@@ -57,26 +58,6 @@ class TwoResolutionsTest {
         assertEquals(0, ResolutionStudy.error(rf, rc), 1e-12, "u = A x is interpolated exactly on the coarse faces");
         double nearest = ResolutionStudy.error(rf, linear(coarse, false));
         assertTrue(nearest > 0.05, "the nearest coarse node is half an edge away: error " + nearest);
-    }
-
-    /** A flat square [-l, l]^2 (z = 0) cut into n x n squares, two triangles each. */
-    private static TriangleMesh square(double l, int n) {
-        double[] xyz = new double[3 * (n + 1) * (n + 1)];
-        int[] tri = new int[6 * n * n];
-        for (int i = 0; i <= n; i++) {
-            for (int j = 0; j <= n; j++) {
-                int v = i * (n + 1) + j;
-                xyz[3 * v] = -l + 2 * l * j / n;
-                xyz[3 * v + 1] = -l + 2 * l * i / n;
-            }
-        }
-        for (int i = 0, k = 0; i < n; i++) {
-            for (int j = 0; j < n; j++, k += 6) {
-                int a = i * (n + 1) + j;
-                System.arraycopy(new int[] {a, a + 1, a + n + 2, a, a + n + 2, a + n + 1}, 0, tri, k, 6);
-            }
-        }
-        return new TriangleMesh(xyz, tri);
     }
 
     /** A run of the whole mesh as upper surface, end field u = (0.01 x - 0.02 z, 0.03 y, 0.02 x) m. */

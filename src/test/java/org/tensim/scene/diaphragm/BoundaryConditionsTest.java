@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Spring;
@@ -93,29 +94,6 @@ class BoundaryConditionsTest {
         }
     }
 
-    /** A flat square [-l, l]^2 at z = 0 cut into n x n squares, two triangles each. */
-    static TriangleMesh square(double l, int n) {
-        double[] xyz = new double[3 * (n + 1) * (n + 1)];
-        int[] tri = new int[6 * n * n];
-        for (int i = 0; i <= n; i++) {
-            for (int j = 0; j <= n; j++) {
-                int v = i * (n + 1) + j;
-                xyz[3 * v] = -l + 2 * l * j / n;
-                xyz[3 * v + 1] = -l + 2 * l * i / n;
-            }
-        }
-        int k = 0;
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                int a = i * (n + 1) + j;
-                int[] two = {a, a + 1, a + n + 2, a, a + n + 2, a + n + 1};
-                System.arraycopy(two, 0, tri, k, 6);
-                k += 6;
-            }
-        }
-        return new TriangleMesh(xyz, tri);
-    }
-
     private static double total(double[] w) {
         double s = 0;
         for (double x : w) {
@@ -133,7 +111,7 @@ class BoundaryConditionsTest {
         double exact = Math.PI * r * r * (0.25 - 1 / (Math.PI * Math.PI));
         Vec3 up = new Vec3(0, 0, 1);
         for (int n : new int[] {20, 40}) {
-            TriangleMesh m = square(0.1, n);
+            TriangleMesh m = FlatMeshes.square(0.1, n);
             int[] labels = new int[m.vertexCount()];
             double[] area = SurfaceGeometry.vertexAreas(m);
             double pressure = total(MusclePressure.weights(m, lines, BoundaryConditions.MuscleLoad.PRESSURE, up, 1,
