@@ -69,8 +69,12 @@ final class AttachmentBand {
                 b.attachedRibs++;
             } else {
                 double f = projection(b, s, n.position());
-                b.springs.add(v, s.a(), Math.max(k * (1 - f), 1e-9 * k));
-                b.springs.add(v, s.b(), Math.max(k * f, 1e-9 * k));
+                if (f < 1) {
+                    b.springs.add(v, s.a(), k * (1 - f));
+                }
+                if (f > 0) {
+                    b.springs.add(v, s.b(), k * f);
+                }
                 b.attachedCartilage++;
             }
         }
