@@ -92,10 +92,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // Bad names and files fail here, before any window.
         SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
-        if (java.awt.GraphicsEnvironment.isHeadless()) {
-            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
-                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
-        }
+        requireDisplay();
         setScripted(screenshot != null);
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
@@ -107,6 +104,24 @@ public final class GuiCommand implements Callable<Integer> {
         }
         w.awaitClosed();
         return 0;
+    }
+
+    /**
+     * Fails with one line when there is no display or it cannot be reached (AWT's
+     * AWTError would otherwise surface as a long stack trace from the first window).
+     */
+    static void requireDisplay() {
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
+                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
+        }
+        try {
+            java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();
+        } catch (java.awt.AWTError | java.awt.HeadlessException | UnsatisfiedLinkError e) {
+            throw new IllegalStateException("cannot reach the display DISPLAY='" + System.getenv("DISPLAY")
+                    + "' (" + e.getMessage() + "); start the X server, fix DISPLAY, or unset it so that ./tensim gui"
+                    + " starts Xvfb");
+        }
     }
 
     /**

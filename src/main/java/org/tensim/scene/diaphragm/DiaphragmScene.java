@@ -124,6 +124,7 @@ public final class DiaphragmScene {
         b.thicknessSprings();
         b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
         b.attach();
+        b.columnLinks();
         b.muscle(lines == null ? defaultActionLines(surfaces) : lines);
         b.support();
         b.damping();

@@ -37,6 +37,7 @@ final class DiaphragmSceneBuilder {
     boolean[] linked;
     Set<Long> linkPairs = new HashSet<>();
     ShellNetwork network;
+    final List<int[]> pendingColumns = new ArrayList<>();
     RibCage cage;
     int apex = -1;
     ActionLines lines;
@@ -142,26 +143,40 @@ final class DiaphragmSceneBuilder {
         network.membrane(springs);
     }
 
+    /**
+     * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
+     * material model also the muscle's, made after the attachment ({@link #columnLinks}).
+     */
     void rigidLinks() {
         linked = new boolean[nv];
-        List<int[]> cand = new ArrayList<>();
-        for (int v = 0; v < nv; v++) {
-            int q = surfaces.partner(v);
-            if (labels[v] == DiaphragmScene.TENDON && q >= 0 && labels[q] == DiaphragmScene.TENDON) {
-                cand.add(surfaces.isUpper(v) ? new int[] {v, q} : new int[] {q, v});
-            }
-        }
-        cand.sort((x, y) -> Double.compare(TwoSurfaces.distance(mesh, x[0], x[1]),
-                TwoSurfaces.distance(mesh, y[0], y[1])));
-        for (int[] c : cand) {
-            double len = TwoSurfaces.distance(mesh, c[0], c[1]);
-            if (linked[c[0]] || linked[c[1]] || len < 0.3 * thickness || len > 2.5 * thickness) {
-                continue;
-            }
+        boolean all = p.tissueModel().rigidColumns();
+        for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
             linked[c[0]] = true;
             linked[c[1]] = true;
             linkPairs.add(key(c[0], c[1]));
-            t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            if (labels[c[0]] == DiaphragmScene.TENDON && labels[c[1]] == DiaphragmScene.TENDON) {
+                t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            } else {
+                pendingColumns.add(c);
+            }
+        }
+    }
+
+    /**
+     * The muscle's rigid columns (material model), once the attachment is known: a column whose two
+     * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
+     * {@code E A / L} instead.
+     */
+    void columnLinks() {
+        for (int[] c : pendingColumns) {
+            Node a = t.node(c[0]);
+            Node b = t.node(c[1]);
+            if ((a.isDriven() || a.isFixed()) && (b.isDriven() || b.isFixed())) {
+                double len = TwoSurfaces.distance(mesh, c[0], c[1]);
+                springs.add(c[0], c[1], young(c[0], c[1]) * area[c[0]] / len);
+            } else {
+                t.addRigidLink(a, b);
+            }
         }
     }
 

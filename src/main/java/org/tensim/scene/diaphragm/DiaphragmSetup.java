@@ -77,6 +77,8 @@ public final class DiaphragmSetup {
             List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
             DiaphragmControls controls, BoundaryConditions bc) throws IOException, MeshFormatException {
         MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
+        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(r.mesh(), meshFile, units, "diaphragm",
+                PLAUSIBLE_SIZE_M[0], PLAUSIBLE_SIZE_M[1]);
         Surfaces s = surfaces(r.mesh(), offsetThicknessM);
         return new Built(DiaphragmScene.build(s.surfaces(), boxes(boxesFile), p, cycle, controls, lines, bc), r.report(),
                 s.mode(), meshFile + ", " + cage(boxesFile));
@@ -119,6 +121,14 @@ public final class DiaphragmSetup {
         return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines, bc),
                 null, SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
     }
+
+    /**
+     * Plausible largest side of a diaphragm's bounding box, m: an adult's is about 0.3 m
+     * transversely (BodyParts3D: 0.27 m; the project's double dome: 0.28 m); 0.08 m admits
+     * a newborn's, 1 m any adult's with room to spare. A mesh outside this range is read in the
+     * wrong --units (a metre file read as mm measures 0.3 mm) or is not a diaphragm.
+     */
+    public static final double[] PLAUSIBLE_SIZE_M = {0.08, 1.0};
 
     /**
      * The rib and sternum boxes, metres: the project's parametric cage when {@code file} is null, else
