@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicBoolean;
-import org.tensim.solver.CriticalTimeStep;
+import org.tensim.solver.stability.CriticalTimeStep;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.SystemState;
 import org.tensim.scene.tunable.Body;
@@ -77,7 +77,11 @@ final class CriticalStepWatch {
             try {
                 double c = Double.POSITIVE_INFINITY;
                 for (int i = 0; i < states.size(); i++) {
-                    c = Math.min(c, CriticalTimeStep.estimate(states.get(i)).forIntegrator(integrators.get(i)));
+                    SystemState st = states.get(i);
+                    Integrator in = integrators.get(i);
+                    CriticalTimeStep e = CriticalTimeStep.estimate(st.nodeCount, st.springA, st.springB, st.springK,
+                            st.mass, st.invMass, st.x0);
+                    c = Math.min(c, e.forMethod(in.explicit(), in.undampedStabilityLimit()));
                 }
                 if (gen == generation) {
                     criticalStep = c;

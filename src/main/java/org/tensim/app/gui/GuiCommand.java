@@ -37,8 +37,9 @@ public final class GuiCommand implements Callable<Integer> {
     double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
 
     @Option(names = "--resolution", paramLabel = "RINGS",
-            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, opened with"
-                    + " the large-step bdf2 solver; 20 gives about 2,500 nodes (default: ${DEFAULT-VALUE})")
+            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
+                    + " 2,500 (default: ${DEFAULT-VALUE}, the resolution study's pick in meshes/resolution-pick.json,"
+                    + " the paper's 43 when there is none); the diaphragm opens with the large-step bdf2 solver")
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
