@@ -8,6 +8,8 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.stability.CriticalTimeStep;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
@@ -237,7 +239,11 @@ public final class SimulationRunner implements Tuning.Target {
         double c = Double.POSITIVE_INFINITY;
         for (Body b : scene.bodies()) {
             Simulation s = b.simulation();
-            c = Math.min(c, s.criticalStepOfIntegrator()); // the state re-estimates after a parameter change
+            SystemState st = s.state();
+            // A fresh estimate: tunable scenes may change stiffness and mass arrays in place.
+            CriticalTimeStep e = CriticalTimeStep.estimate(st.nodeCount, st.springA, st.springB, st.springK, st.mass,
+                    st.invMass, st.x0);
+            c = Math.min(c, e.forMethod(s.integrator().explicit(), s.integrator().undampedStabilityLimit()));
         }
         criticalDt = c;
         criticalStale = false;
