@@ -38,7 +38,8 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--resolution", paramLabel = "RINGS",
             description = "rings per face of the generated double dome: 20 gives about 2,500 nodes (interactive),"
-                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE})")
+                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE}, the resolution study's pick in"
+                    + " meshes/resolution-pick.json)")
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",

@@ -15,7 +15,7 @@ import org.tensim.solver.integrators.Integrators;
  */
 public final class IntegratorCatalog {
     /** The default: the paper's integrator. */
-    public static final String DEFAULT = "rk2";
+    public static final String DEFAULT = Integrators.DEFAULT;
     /**
      * Implicit Euler with its CG stopped at a relative residual of 1e-3: the setting of the real-time
      * study (docs/diaphragm.md), with which a 14-ring diaphragm at a 10 ms step runs 2.9 times real

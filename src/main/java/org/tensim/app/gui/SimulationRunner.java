@@ -6,7 +6,6 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
-import org.tensim.solver.CriticalTimeStep;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.Body;
@@ -238,7 +237,7 @@ public final class SimulationRunner implements Tuning.Target {
         double c = Double.POSITIVE_INFINITY;
         for (Body b : scene.bodies()) {
             Simulation s = b.simulation();
-            c = Math.min(c, CriticalTimeStep.estimate(s.state()).forIntegrator(s.integrator()));
+            c = Math.min(c, s.criticalStepOfIntegrator()); // the state re-estimates after a parameter change
         }
         criticalDt = c;
         criticalStale = false;

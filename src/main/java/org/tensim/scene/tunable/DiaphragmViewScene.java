@@ -50,8 +50,6 @@ public final class DiaphragmViewScene implements ViewScene {
 
     /** Inspiration:expiration of quiet breathing, 1:2 (PHYSICS.md). */
     static final double EXPIRATION_RATIO = 2;
-    /** Rings per face of the generated double dome used by default: about 2,500 nodes, interactive. */
-    public static final int DEFAULT_RINGS = 20;
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
