@@ -130,16 +130,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
     String integrator = Integrators.DEFAULT;
 
-    /**
-     * Springs from which the automatic thread count uses every core: the real-time study
-     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
-     * up, and a third slower at 12,144 (14 rings) and below.
-     */
-    static final int AUTO_PARALLEL_SPRINGS = 20_000;
-
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "
-                    + AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
     int threads = 0;
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
@@ -294,8 +287,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
-                        ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
+                : org.tensim.solver.parallel.Parallelism.automaticThreads(built.scene().topology().springs().size());
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);

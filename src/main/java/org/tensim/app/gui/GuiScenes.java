@@ -35,6 +35,17 @@ public final class GuiScenes {
         }
     }
 
+    /**
+     * Whether the scene opens with the large-step solver ({@link IntegratorCatalog#REAL_TIME} at
+     * {@link IntegratorCatalog#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
+     * runs at a few hundredths of real time at the paper's resolution (43 rings: 11,354 diaphragm nodes,
+     * the mesh of {@code ./tensim diaphragm}). Last-used parameters and presets
+     * still apply over it.
+     */
+    public static boolean opensInRealTime(String name) {
+        return "diaphragm".equals(name);
+    }
+
     /** Names accepted by {@code --scene}, the default first. */
     public static List<String> names() {
         return List.of("diaphragm", "cube");
