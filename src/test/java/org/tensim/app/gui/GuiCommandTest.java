@@ -27,17 +27,18 @@ class GuiCommandTest {
 
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
+        // refused before any output: usage errors (exit 2), as picocli's own
         StringWriter err = new StringWriter();
-        assertEquals(1, run(err, "gui", "--scene", "teapot"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err, "gui", "--scene", "teapot"));
         assertTrue(err.toString().contains("'teapot'") && err.toString().contains("cube"), err.toString());
         StringWriter err2 = new StringWriter();
-        assertEquals(1, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
         assertTrue(err2.toString().contains("organ.obj"), err2.toString());
         StringWriter err3 = new StringWriter();
-        assertEquals(1, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
         assertTrue(err3.toString().contains("none.obj") && err3.toString().contains("no such file"), err3.toString());
         StringWriter err4 = new StringWriter();
-        assertEquals(1, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
+        assertEquals(org.tensim.io.RunStatus.USAGE_EXIT, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
     }
 
