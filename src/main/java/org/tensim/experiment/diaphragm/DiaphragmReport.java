@@ -198,16 +198,7 @@ public final class DiaphragmReport {
         summary.put("attached_to_spine", scene.attachedToSpine());
         summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
-        if (metrics.complete()) {
-            summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-            summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-            summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-            summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-            summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-            summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-            summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-            summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        }
+        metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
         summary.put("simulated_s", round(sim.time(), 6));
         summary.put("measured_cycle_start_s", start);
         summary.put("integrator", integrator);
