@@ -44,7 +44,7 @@ public final class Calibration {
                 f.put("objective", e.fitness());
                 f.put("generation", (double) e.generation());
                 PointResult r = e.result();
-                file.write(new PointResult(r.id(), r.values(), r.status(), r.message(), f, r.wallS()));
+                file.write(new PointResult(r.id(), r.values(), r.status(), r.message(), f, r.wallS(), r.cpuS()));
             }, log);
         }
         Map<String, Object> summary = CalibrationReport.write(out, spec, o, engine.describe());

@@ -15,9 +15,11 @@ import java.util.Map;
  * @param fields  summary fields (name to value; units in the names); those measured before a divergence
  *                are kept
  * @param wallS   wall time of the run, s (scene building included)
+ * @param cpuS    CPU time of the thread that ran it, s (NaN where the JVM cannot tell); on a shared machine
+ *                wallS - cpuS is the time the run waited for a core
  */
 public record PointResult(int id, double[] values, String status, String message, Map<String, Double> fields,
-        double wallS) implements Serializable {
+        double wallS, double cpuS) implements Serializable {
     private static final long serialVersionUID = 1L;
     public static final String OK = "ok";
     public static final String DIVERGED = "diverged";

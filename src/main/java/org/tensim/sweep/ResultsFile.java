@@ -21,7 +21,7 @@ import java.util.Map;
 /**
  * The sweep's results CSV: one row per finished point, appended as points finish.
  * Columns: {@code point}, the swept parameters, {@code status}, {@code message},
- * {@code wall_s}, then the outputs. Numbers are written with {@link Double#toString},
+ * {@code wall_s}, {@code cpu_s}, then the outputs. Numbers are written with {@link Double#toString},
  * which reads back to the same bits; a field the run did not produce is left empty.
  *
  * <p>Durability: each row is written with one {@code write} call and forced to the disk
@@ -51,7 +51,7 @@ public final class ResultsFile implements Closeable {
         List<String> h = new ArrayList<>();
         h.add("point");
         h.addAll(parameters);
-        h.addAll(List.of("status", "message", "wall_s"));
+        h.addAll(List.of("status", "message", "wall_s", "cpu_s"));
         h.addAll(outputs);
         this.header = List.copyOf(h);
         boolean fresh = !Files.exists(path) || Files.size(path) == 0;
@@ -84,6 +84,7 @@ public final class ResultsFile implements Closeable {
         cells.add(r.status());
         cells.add(r.message().replace('\n', ' ').replace('\r', ' '));
         cells.add(Double.toString(r.wallS()));
+        cells.add(Double.toString(r.cpuS()));
         for (String o : outputs) {
             double v = r.field(o);
             cells.add(Double.isNaN(v) ? "" : Double.toString(v));
@@ -141,13 +142,13 @@ public final class ResultsFile implements Closeable {
                 int k = 1 + values.length;
                 Map<String, Double> fields = new LinkedHashMap<>();
                 for (int o = 0; o < outputs.size(); o++) {
-                    String cell = c.get(k + 3 + o);
+                    String cell = c.get(k + 4 + o);
                     if (!cell.isEmpty()) {
                         fields.put(outputs.get(o), Double.parseDouble(cell));
                     }
                 }
                 done.put(id, new PointResult(id, values, c.get(k), c.get(k + 1), fields,
-                        Double.parseDouble(c.get(k + 2))));
+                        Double.parseDouble(c.get(k + 2)), Double.parseDouble(c.get(k + 3))));
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException(where + ": not a number (" + e.getMessage() + ")", e);
             }

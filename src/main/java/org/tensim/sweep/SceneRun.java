@@ -72,6 +72,7 @@ public final class SceneRun {
     /** Runs one point; never throws for a bad value or a divergence (they become the status). */
     public static PointResult run(RunSetup setup, List<String> names, Point point) {
         long t0 = System.nanoTime();
+        long c0 = cpu();
         Map<String, Double> fields = new LinkedHashMap<>();
         Map<String, Double> values = new LinkedHashMap<>(setup.fixed());
         for (int i = 0; i < names.size(); i++) {
@@ -91,7 +92,8 @@ public final class SceneRun {
                 }
             }
         } catch (RuntimeException e) {
-            return new PointResult(point.id(), point.values(), PointResult.REFUSED, message(e), fields, wall(t0));
+            return new PointResult(point.id(), point.values(), PointResult.REFUSED, message(e), fields, wall(t0),
+                    cpuSince(c0));
         }
         double dt = setup.dtS() > 0 ? setup.dtS() : defaultStep(scene, values);
         List<Simulation> sims = new ArrayList<>();
@@ -124,7 +126,7 @@ public final class SceneRun {
         fields.put("steps", (double) first.steps());
         fields.put("dt_s", dt);
         fields.put("simulated_s", first.time());
-        return new PointResult(point.id(), point.values(), status, message, fields, wall(t0));
+        return new PointResult(point.id(), point.values(), status, message, fields, wall(t0), cpuSince(c0));
     }
 
     /** The named parameter of a scene, or an exception naming the known ones. */
@@ -168,6 +170,15 @@ public final class SceneRun {
     private static String message(Throwable e) {
         String m = e.getMessage();
         return m == null ? e.getClass().getSimpleName() : m;
+    }
+
+    private static long cpu() {
+        java.lang.management.ThreadMXBean b = java.lang.management.ManagementFactory.getThreadMXBean();
+        return b.isCurrentThreadCpuTimeSupported() ? b.getCurrentThreadCpuTime() : -1;
+    }
+
+    private static double cpuSince(long c0) {
+        return c0 < 0 ? Double.NaN : (cpu() - c0) / 1e9;
     }
 
     private static double wall(long t0) {

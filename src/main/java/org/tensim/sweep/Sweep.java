@@ -60,7 +60,7 @@ public final class Sweep {
         List<Point> todo = new ArrayList<>();
         int skipped = 0;
         long t0;
-        double[] busy = {0};
+        double[] busy = {0, 0};
         try (ResultsFile csv = new ResultsFile(out.resolve("results.csv"), names, spec.outputs())) {
             Map<Integer, PointResult> old = csv.done();
             for (Point p : points) {
@@ -86,6 +86,7 @@ public final class Sweep {
                 engine.run(spec.setup(), names, todo, r -> {
                     csv.write(r);
                     busy[0] += r.wallS();
+                    busy[1] += r.cpuS();
                     n[0]++;
                     if (bar != null) {
                         bar.step();
@@ -100,7 +101,7 @@ public final class Sweep {
             double wall = (System.nanoTime() - t0) / 1e9;
             List<PointResult> all = new ArrayList<>(csv.done().values());
             all.sort(Comparator.comparingInt(PointResult::id));
-            Map<String, Object> s = summary(spec, engine, points.size(), skipped, todo.size(), wall, busy[0], all);
+            Map<String, Object> s = summary(spec, engine, points.size(), skipped, todo.size(), wall, busy, all);
             List<Path> charts = SweepCharts.write(out.resolve("charts"), names, spec.outputs(), all);
             s.put("charts", charts.size());
             Json.write(out.resolve("sweep.json"), s);
@@ -109,7 +110,7 @@ public final class Sweep {
     }
 
     private static Map<String, Object> summary(SweepSpec spec, SweepEngine engine, int total, int skipped, int ran,
-            double wall, double busy, List<PointResult> all) {
+            double wall, double[] busy, List<PointResult> all) {
         Map<String, Object> s = new LinkedHashMap<>();
         s.put("scene", spec.setup().geometry());
         s.put("engine", engine.describe());
@@ -121,8 +122,11 @@ public final class Sweep {
         }
         s.put("wall_s", round(wall));
         s.put("points_per_s", ran == 0 ? 0 : round(ran / wall));
-        s.put("sum_point_wall_s", round(busy));
-        s.put("mean_point_wall_s", ran == 0 ? 0 : round(busy / ran));
+        s.put("sum_point_wall_s", round(busy[0]));
+        s.put("mean_point_wall_s", ran == 0 ? 0 : round(busy[0] / ran));
+        // CPU time the runs got: on a shared machine, busy[1] / wall is how many cores the sweep obtained.
+        s.put("sum_point_cpu_s", round(busy[1]));
+        s.put("cores_obtained", ran == 0 ? 0 : round(busy[1] / wall));
         s.put("load_average", round(java.lang.management.ManagementFactory.getOperatingSystemMXBean()
                 .getSystemLoadAverage()));
         return s;
