@@ -21,7 +21,7 @@ import org.tensim.sweep.RunSetup;
 import org.tensim.sweep.SceneRun;
 import org.tensim.sweep.SpecReader;
 import org.tensim.sweep.SpecReader.SpecException;
-import org.tensim.view.TunableParameter;
+import org.tensim.scene.tunable.TunableParameter;
 
 /**
  * Reads and validates a calibration spec ({@link CalibrationSpec} shows the format). As for

@@ -18,7 +18,8 @@ import java.util.Map;
  * @param units       units of the mesh file, {@code mm} or {@code m}
  * @param thicknessMm thickness given to a single-surface mesh, mm
  * @param rings       rings per face of the generated double dome (when there is no mesh file)
- * @param boxesFile   rib and sternum boxes (millimetres, BodyParts3D frame)
+ * @param boxesFile   rib and sternum boxes (millimetres, BodyParts3D frame), or null for the project's parametric
+ *                    rib cage (the GUI's default)
  * @param integrator  integrator name, as the GUI's (e.g. {@code rk2}, {@code implicit-euler-cg1e-3})
  * @param dtS         time step, s; 0 for the scene's own (see {@link SceneRun})
  * @param seconds     simulated time of each run, s

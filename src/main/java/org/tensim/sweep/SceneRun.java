@@ -14,11 +14,11 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
-import org.tensim.view.Body;
-import org.tensim.view.DiaphragmViewScene;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.TunableParameter;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * One point of a sweep, run headless on one thread: the scene is made by the GUI's own
@@ -63,7 +63,7 @@ public final class SceneRun {
     public static List<TunableParameter> parameters(String scene) {
         return switch (scene) {
             case "diaphragm" -> DiaphragmViewScene.PARAMETERS;
-            case "cube" -> org.tensim.view.CubeViewScene.PARAMETERS;
+            case "cube" -> org.tensim.scene.tunable.CubeViewScene.PARAMETERS;
             default -> throw new IllegalArgumentException("scene '" + scene + "' is not a scene; expected one of "
                     + GuiScenes.names());
         };
@@ -164,7 +164,7 @@ public final class SceneRun {
                 + s.boxesFile();
         return FACTORIES.computeIfAbsent(key, k -> GuiScenes.factory(s.scene(), new GuiScenes.Source(
                 s.meshFile() == null ? null : Path.of(s.meshFile()), s.units(), s.thicknessMm(), s.rings(),
-                Path.of(s.boxesFile()))));
+                s.boxesFile() == null ? null : Path.of(s.boxesFile()))));
     }
 
     private static String message(Throwable e) {

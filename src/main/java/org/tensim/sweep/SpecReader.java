@@ -14,9 +14,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tensim.app.gui.GuiScenes;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
-import org.tensim.view.TunableParameter;
+import org.tensim.scene.tunable.TunableParameter;
 
 /**
  * Reads and validates a sweep spec ({@link SweepSpec} shows the format). Everything is
@@ -101,7 +100,7 @@ public final class SpecReader {
         String file = null;
         String units = "mm";
         double thicknessMm = 2.5;
-        int rings = org.tensim.view.DiaphragmViewScene.DEFAULT_RINGS;
+        int rings = org.tensim.scene.tunable.DiaphragmViewScene.DEFAULT_RINGS;
         if (mesh != null) {
             if (!scene.equals("diaphragm")) {
                 throw fail("mesh", mesh, "no mesh: scene '" + scene + "' is built in");
@@ -130,10 +129,8 @@ public final class SpecReader {
                 rings = r.asInt();
             }
         }
-        Path boxes = root.has("boxes") ? existing("boxes", text(root, "boxes", null)) : DiaphragmSetup.DEFAULT_BOXES;
-        if (scene.equals("diaphragm") && !Files.isRegularFile(boxes)) {
-            throw fail("boxes", root.get("boxes"), "the rib and sternum boxes file; " + boxes + " does not exist");
-        }
+        // No boxes: the project's parametric rib cage (as in the GUI).
+        Path boxes = root.has("boxes") ? existing("boxes", text(root, "boxes", null)) : null;
         JsonNode solver = root.get("solver");
         String integrator = "rk2";
         double dt = 0;
@@ -170,7 +167,8 @@ public final class SpecReader {
                 fixed.put(e.getKey(), v);
             }
         }
-        return new RunSetup(scene, file, units, thicknessMm, rings, boxes.toString(), integrator, dt, seconds, fixed,
+        return new RunSetup(scene, file, units, thicknessMm, rings, boxes == null ? null : boxes.toString(), integrator,
+                dt, seconds, fixed,
                 List.of());
     }
 

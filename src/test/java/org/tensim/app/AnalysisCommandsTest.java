@@ -42,6 +42,7 @@ class AnalysisCommandsTest {
     @Test
     void accuracyWritesCsvChartsAndEndsWithOrders(@TempDir Path dir) throws Exception {
         String[] r = run("accuracy", "--scene", "spring", "--integrators", "symplectic-euler,rk4", "--rungs", "5",
+                "--shell-rings", "3,4",
                 "--dt", "0.005", "--out", dir.toString());
         assertEquals("0", r[0], r[2]);
         JsonNode json = new ObjectMapper().readTree(lastLine(r[1]));
@@ -51,6 +52,10 @@ class AnalysisCommandsTest {
         assertTrue(Files.size(dir.resolve("spring-work-precision.png")) > 1000);
         assertTrue(Files.size(dir.resolve("spring-convergence.png")) > 1000);
         assertEquals(1 + 2 * 5, Files.readAllLines(dir.resolve("accuracy-spring.csv")).size());
+        // The static section: 3 triangulations x 3 patch sizes and the plate at 3 and 4 rings.
+        assertEquals(1 + 9 + 2, Files.readAllLines(dir.resolve("shell-material.csv")).size());
+        assertTrue(Files.size(dir.resolve("shell-material-convergence.png")) > 1000);
+        assertTrue(json.get("shell").get("plate_error_finest").asDouble() < 0.2, json.toString());
     }
 
     @Test
@@ -69,11 +74,11 @@ class AnalysisCommandsTest {
     @Test
     void badNamesGiveOneLineErrors(@TempDir Path dir) {
         String[] r = run("accuracy", "--scene", "diaphragm", "--out", dir.toString());
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0], "a bad option value is a usage error");
         assertEquals(1, r[2].strip().split("\n").length, "one line, no stack trace: " + r[2]);
         assertTrue(r[2].contains("unknown scene 'diaphragm'") && r[2].contains("spring"), r[2]);
         r = run("stability", "--integrators", "leapfrog", "--out", dir.toString());
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0]);
         assertTrue(r[2].contains("unknown integrator 'leapfrog'"), r[2]);
         r = run("stability", "--zeta", "-1", "--out", dir.toString());
         assertTrue(r[2].contains("--zeta") && r[2].contains("-1"), r[2]);

@@ -30,12 +30,17 @@ import org.tensim.model.Vec3;
  *                             (an elastic foundation: each free node of the lower surface is tied to its rest
  *                             position by a spring of stiffness K A_i); 0 turns it off
  * @param bendingFactor        stiffness of the bending springs (across each edge, between the opposite
- *                             vertices) relative to the membrane formula; 0 turns them off
+ *                             vertices) relative to the membrane formula, in the paper's tissue model only;
+ *                             0 turns them off
+ * @param poissonRatio         Poisson's ratio of muscle and tendon, in (-1, 0.5) (soft tissue 0.45-0.49); sets the
+ *                             faces' share of the membrane in the material model
+ * @param tissueModel          how the springs are derived from the tissue ({@link TissueModel})
  */
 public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, double tendonYoungPa,
         double highDampingRatio, double viscousPerS, double tendonAreaFraction, Vec3 tendonNormal, Vec3 tendonPoint,
         double attachThresholdM, double structureStiffness, double structureNodeMassKg, double attachStiffness,
-        double ribQuietFraction, double ribTranslationM, double abdominalSupportPaPerM, double bendingFactor) {
+        double ribQuietFraction, double ribTranslationM, double abdominalSupportPaPerM, double bendingFactor,
+        double poissonRatio, TissueModel tissueModel) {
     public DiaphragmParameters {
         Check.positive("tissue density", "kg/m^3", densityKgPerM3);
         Check.positive("muscle Young's modulus", "Pa", muscleYoungPa);
@@ -60,62 +65,97 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
         Check.finite("rib translation", "m", ribTranslationM);
         Check.nonNegative("abdominal support stiffness", "Pa/m", abdominalSupportPaPerM);
         Check.nonNegative("bending spring factor", "", bendingFactor);
+        if (!(poissonRatio > -1 && poissonRatio < 0.5)) {
+            throw new IllegalArgumentException("Poisson's ratio nu must be in (-1, 0.5) (dimensionless), got "
+                    + poissonRatio);
+        }
+        if (tissueModel == null) {
+            throw new IllegalArgumentException("tissue model must be paper or material, got null");
+        }
     }
 
     /** The defaults (docs/diaphragm.md). */
     public static DiaphragmParameters defaults() {
         return new DiaphragmParameters(1060, 40e3, 160e3, 0.9, 60, 0.12, new Vec3(0, 0, 1), null, 0.020, 2e5,
-                0.02, 100, 0.3, 0.0005, 50e3, 1);
+                0.02, 100, 0.3, 0.0005, 50e3, 1, 0.45, TissueModel.MATERIAL);
     }
 
     public DiaphragmParameters withAttachThreshold(double m) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, m, structureStiffness, structureNodeMassKg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     public DiaphragmParameters withDamping(double zetaHigh, double viscousPerS) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, zetaHigh, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
                 structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
-                bendingFactor);
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     public DiaphragmParameters withViscous(double perS) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, perS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     public DiaphragmParameters withTendonPlane(Vec3 normal, Vec3 point) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, normal, point, attachThresholdM, structureStiffness, structureNodeMassKg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     public DiaphragmParameters withAbdominalSupport(double paPerM) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM, bendingFactor);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, paPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     /** The same parameters with another tendon area fraction (places the plane when no point is given). */
     public DiaphragmParameters withTendonAreaFraction(double fraction) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 fraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness, structureNodeMassKg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     /** The same parameters with another sternum node mass, kg. */
     public DiaphragmParameters withStructureNodeMass(double kg) {
         return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness, kg,
-                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
     }
 
     public DiaphragmParameters withMuscleYoung(double pa) {
         return new DiaphragmParameters(densityKgPerM3, pa, tendonYoungPa, highDampingRatio, viscousPerS,
                 tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
-                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor);
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, tissueModel);
+    }
+
+    /** The same parameters with another tissue model. */
+    public DiaphragmParameters withTissueModel(TissueModel model) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, tendonYoungPa, highDampingRatio, viscousPerS,
+                tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
+                bendingFactor, poissonRatio, model);
+    }
+
+    /** The same parameters with the muscle's Young's modulus, Pa, and the tendon's scaled to keep its ratio to it. */
+    public DiaphragmParameters withTissueYoung(double musclePa) {
+        Check.positive("muscle Young's modulus", "Pa", musclePa);
+        return withMuscleYoung(musclePa).withTendonYoung(tendonYoungPa * musclePa / muscleYoungPa);
+    }
+
+    public DiaphragmParameters withTendonYoung(double pa) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, pa, highDampingRatio, viscousPerS,
+                tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor,
+                poissonRatio, tissueModel);
     }
 }

@@ -2,7 +2,6 @@ package org.tensim.scene.diaphragm;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Collections;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -10,6 +9,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.ShellMaterial;
 
 /**
  * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
@@ -34,6 +34,8 @@ final class DiaphragmSceneBuilder {
     int[] labels;
     boolean[] linked;
     Set<Long> linkPairs = new HashSet<>();
+    ShellNetwork network;
+    final List<int[]> pendingColumns = new ArrayList<>();
     RibCage cage;
     int apex = -1;
     ActionLines lines;
@@ -125,135 +127,53 @@ final class DiaphragmSceneBuilder {
         return labels[a] == DiaphragmScene.TENDON && labels[b] == DiaphragmScene.TENDON ? p.tendonYoungPa() : p.muscleYoungPa();
     }
 
+    /** The faces' springs, by the tissue model (see {@link ShellNetwork}). */
     void meshSprings() {
-        // sum of the areas of the triangles on each edge, then k = E (t/2) sum / |e|^2
-        java.util.Map<Long, double[]> edgeArea = new java.util.HashMap<>();
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            double a = mesh.area(tr);
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                edgeArea.computeIfAbsent(key(i, j), x -> new double[1])[0] += a;
-            }
-        }
-        List<Long> keys = new ArrayList<>(edgeArea.keySet());
-        Collections.sort(keys); // deterministic order
-        for (long e : keys) {
-            int i = (int) (e >>> 32);
-            int j = (int) e;
-            double len = TwoSurfaces.distance(mesh, i, j);
-            springs.add(i, j, young(i, j) * (thickness / 2) * edgeArea.get(e)[0] / (len * len));
-        }
-        bendingSprings(edgeArea);
+        network = new ShellNetwork(surfaces, area, this::young,
+                new ShellMaterial(p.muscleYoungPa(), p.poissonRatio(), thickness, p.densityKgPerM3()),
+                p.tissueModel(), p.bendingFactor());
+        network.membrane(springs);
     }
 
     /**
-     * Across every edge shared by two triangles of the same face, a spring between the two
-     * opposite vertices: it resists folding about the edge (as in cloth models), which keeps
-     * the thin compressed walls from buckling at the scale of the mesh.
+     * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
+     * material model also the muscle's, made after the attachment ({@link #columnLinks}).
      */
-    private void bendingSprings(java.util.Map<Long, double[]> edgeArea) {
-        if (p.bendingFactor() == 0) {
-            return;
-        }
-        java.util.Map<Long, Integer> firstOpposite = new java.util.HashMap<>();
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                int o = mesh.corner(tr, (k + 2) % 3);
-                if (surfaces.isUpper(i) != surfaces.isUpper(o) || surfaces.isUpper(j) != surfaces.isUpper(o)
-                        || surfaces.isUpper(i) != surfaces.isUpper(j)) {
-                    continue;
-                }
-                Integer other = firstOpposite.putIfAbsent(key(i, j), o);
-                if (other != null && other != o) {
-                    double len = TwoSurfaces.distance(mesh, o, other);
-                    double a = edgeArea.get(key(i, j))[0];
-                    springs.add(o, other, p.bendingFactor() * young(o, other) * (thickness / 2) * a / (len * len));
-                }
+    void rigidLinks() {
+        linked = new boolean[nv];
+        boolean all = p.tissueModel().rigidColumns();
+        for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
+            linked[c[0]] = true;
+            linked[c[1]] = true;
+            linkPairs.add(key(c[0], c[1]));
+            if (labels[c[0]] == DiaphragmScene.TENDON && labels[c[1]] == DiaphragmScene.TENDON) {
+                t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            } else {
+                pendingColumns.add(c);
             }
         }
     }
 
-    void rigidLinks() {
-        linked = new boolean[nv];
-        List<int[]> cand = new ArrayList<>();
-        for (int v = 0; v < nv; v++) {
-            int q = surfaces.partner(v);
-            if (labels[v] == DiaphragmScene.TENDON && q >= 0 && labels[q] == DiaphragmScene.TENDON) {
-                cand.add(surfaces.isUpper(v) ? new int[] {v, q} : new int[] {q, v});
+    /**
+     * The muscle's rigid columns (material model), once the attachment is known: a column whose two
+     * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
+     * {@code E A / L} instead.
+     */
+    void columnLinks() {
+        for (int[] c : pendingColumns) {
+            Node a = t.node(c[0]);
+            Node b = t.node(c[1]);
+            if ((a.isDriven() || a.isFixed()) && (b.isDriven() || b.isFixed())) {
+                double len = TwoSurfaces.distance(mesh, c[0], c[1]);
+                springs.add(c[0], c[1], young(c[0], c[1]) * area[c[0]] / len);
+            } else {
+                t.addRigidLink(a, b);
             }
-        }
-        cand.sort((x, y) -> Double.compare(TwoSurfaces.distance(mesh, x[0], x[1]),
-                TwoSurfaces.distance(mesh, y[0], y[1])));
-        for (int[] c : cand) {
-            double len = TwoSurfaces.distance(mesh, c[0], c[1]);
-            if (linked[c[0]] || linked[c[1]] || len < 0.3 * thickness || len > 2.5 * thickness) {
-                continue;
-            }
-            linked[c[0]] = true;
-            linked[c[1]] = true;
-            linkPairs.add(key(c[0], c[1]));
-            t.addRigidLink(t.node(c[0]), t.node(c[1]));
         }
     }
 
     void thicknessSprings() {
-        List<Set<Integer>> neighbours = new ArrayList<>();
-        for (int v = 0; v < nv; v++) {
-            neighbours.add(new HashSet<>());
-        }
-        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
-            for (int k = 0; k < 3; k++) {
-                int i = mesh.corner(tr, k);
-                int j = mesh.corner(tr, (k + 1) % 3);
-                neighbours.get(i).add(j);
-                neighbours.get(j).add(i);
-            }
-        }
-        boolean[] connected = new boolean[nv];
-        double maxLen = 3 * thickness;
-        for (int u = 0; u < nv; u++) {
-            if (!surfaces.isUpper(u)) {
-                continue;
-            }
-            Set<Integer> targets = new java.util.TreeSet<>();
-            targets.add(surfaces.partner(u));
-            double longestEdge = 0;
-            for (int j : neighbours.get(u)) {
-                longestEdge = Math.max(longestEdge, TwoSurfaces.distance(mesh, u, j));
-                if (surfaces.isUpper(j)) {
-                    targets.add(surfaces.partner(j));
-                }
-            }
-            // The diagonals couple the two faces in shear: they must exist at every element size, so the
-            // cap (against a partner found on the far side of a badly paired mesh) grows with the local
-            // edge length. A cap of 3 thicknesses alone dropped every diagonal on meshes coarser than
-            // about 7 mm and left the faces free to slide (docs/diaphragm.md, resolution study).
-            final double cap = 3 * (thickness + longestEdge);
-            final int up = u;
-            targets.removeIf(l -> l < 0 || surfaces.isUpper(l) || springs.contains(up, l)
-                    || linkPairs.contains(key(up, l)) || TwoSurfaces.distance(mesh, up, l) > cap);
-            for (int l : targets) {
-                double len = TwoSurfaces.distance(mesh, u, l);
-                // Across the thickness the tendon is held by its rigid links; its springs there are muscle-like.
-                springs.add(u, l, p.muscleYoungPa() * area[u] / (targets.size() * len));
-                connected[u] = true;
-                connected[l] = true;
-            }
-            connected[u] |= linked[u];
-        }
-        for (int l = 0; l < nv; l++) {
-            int u = surfaces.partner(l);
-            if (surfaces.isUpper(l) || connected[l] || linked[l] || u < 0 || springs.contains(u, l)) {
-                continue;
-            }
-            double len = TwoSurfaces.distance(mesh, u, l);
-            if (len > 0 && len <= maxLen) {
-                springs.add(u, l, p.muscleYoungPa() * area[l] / len);
-            }
-        }
+        network.thickness(springs, linkPairs, linked);
     }
 
     /**

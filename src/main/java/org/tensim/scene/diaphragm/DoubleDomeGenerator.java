@@ -54,6 +54,10 @@ public final class DoubleDomeGenerator {
             double thickness) {
         public Shape {
             Check.atLeast("double dome rings", rings, 2);
+            if (rings > MAX_RINGS) {
+                throw new IllegalArgumentException("double dome rings must be at most " + MAX_RINGS + " ("
+                        + faceVertices(MAX_RINGS) + " vertices a face), got " + rings);
+            }
             Check.positive("double dome transverse semi-axis", "m", semiAxisX);
             Check.positive("double dome antero-posterior semi-axis", "m", semiAxisY);
             Check.finite("double dome centre y", "m", centreY);
@@ -106,6 +110,12 @@ public final class DoubleDomeGenerator {
     private DoubleDomeGenerator() {
     }
 
+    /**
+     * Most rings per face: 500 give 751,501 vertices a face, 60 times the paper's model; the
+     * counts of larger ones overflow the int indices of the mesh long before memory runs out.
+     */
+    public static final int MAX_RINGS = 500;
+
     /** Vertices per face for a number of rings. */
     public static int faceVertices(int rings) {
         return 1 + 3 * rings * (rings + 1);
@@ -157,10 +167,8 @@ public final class DoubleDomeGenerator {
         double[] radius = ringRadii(s);
         int nv = faceVertices(n);
         double[] xyz = new double[3 * nv];
-        int[] ringStart = new int[n + 1];
         int v = 0;
         for (int i = 0; i <= n; i++) {
-            ringStart[i] = v;
             int count = i == 0 ? 1 : 6 * i;
             for (int j = 0; j < count; j++) {
                 double th = 2 * Math.PI * j / count;
@@ -171,6 +179,20 @@ public final class DoubleDomeGenerator {
                 xyz[3 * v + 2] = s.height(u, w);
                 v++;
             }
+        }
+        return new TriangleMesh(xyz, ringTriangles(n));
+    }
+
+    /**
+     * Triangles of a disc of concentric rings: vertex 0 at the centre, then ring i (1..rings) of 6 i
+     * vertices in order of angle; each ring is zipped to the one inside it by angle, so every
+     * triangle advances one of the two rings by one vertex (6 rings^2 triangles, 3 indices each).
+     */
+    public static int[] ringTriangles(int rings) {
+        int n = rings;
+        int[] ringStart = new int[n + 1];
+        for (int i = 1; i <= n; i++) {
+            ringStart[i] = ringStart[i - 1] + (i == 1 ? 1 : 6 * (i - 1));
         }
         int[] tri = new int[3 * 6 * n * n];
         int k = 0;
@@ -198,7 +220,7 @@ public final class DoubleDomeGenerator {
                 }
             }
         }
-        return new TriangleMesh(xyz, Arrays.copyOf(tri, k));
+        return Arrays.copyOf(tri, k);
     }
 
     /** Normalised ring radii 0..1, equally spaced in arc length along the mean meridian. */

@@ -11,7 +11,7 @@ import org.tensim.model.Topology;
  * network, known only once all springs are there. Duplicate node pairs are refused
  * silently (the first one wins).
  */
-final class SpringList {
+final class SpringList implements ShellNetwork.Sink {
     private int[] a = new int[1024];
     private int[] b = new int[1024];
     private double[] k = new double[1024];
@@ -19,7 +19,8 @@ final class SpringList {
     private final Set<Long> pairs = new HashSet<>();
 
     /** Adds a spring of stiffness k (N/m) between nodes i and j; returns false for a duplicate. */
-    boolean add(int i, int j, double stiffness) {
+    @Override
+    public boolean add(int i, int j, double stiffness) {
         if (i == j || !pairs.add(key(i, j))) {
             return false;
         }
@@ -35,7 +36,8 @@ final class SpringList {
         return true;
     }
 
-    boolean contains(int i, int j) {
+    @Override
+    public boolean contains(int i, int j) {
         return pairs.contains(key(i, j));
     }
 

@@ -1,0 +1,139 @@
+package org.tensim.scene.diaphragm;
+
+import org.tensim.io.ProjectFolder;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.tensim.io.BoxesJson;
+import org.tensim.io.mesh.MeshCleaner;
+import org.tensim.io.mesh.MeshFormatException;
+import org.tensim.io.mesh.MeshLoader;
+import org.tensim.io.mesh.MeshReport;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.TriangleMesh;
+
+/**
+ * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two
+ * boundary surfaces (a thin closed shell is split; a single surface is offset by
+ * the thickness), takes the rib cage (the project's parametric one, or boxes read
+ * from a file), builds the scene. Shared by the command, the GUI, the tests and the
+ * studies. A boxes file of null everywhere below means the parametric cage,
+ * {@link ParametricRibCage#adult()}.
+ */
+public final class DiaphragmSetup {
+    /** The project's default mesh, relative to the project folder. */
+    public static final Path DEFAULT_MESH = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
+    /**
+     * BodyParts3D's rib and sternum boxes beside the project (optional: {@code --boxes} this file;
+     * the default cage is {@link ParametricRibCage}).
+     */
+    public static final Path BODYPARTS3D_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+            "rib-sternum-bounds-mm.json");
+    /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
+    public static final double DEFAULT_MUSCLE_PA = 2600;
+
+    /** How the two boundary surfaces were obtained. */
+    public enum SurfaceMode { SHELL, OFFSET }
+
+    /**
+     * A built scene and where it came from.
+     *
+     * @param meshReport what the mesh cleaner found (null for a generated mesh)
+     */
+    public record Built(DiaphragmScene scene, MeshReport meshReport, SurfaceMode mode, String source) {
+    }
+
+    private DiaphragmSetup() {
+    }
+
+    /**
+     * Reads a mesh and makes its two surfaces: split when it is a thin closed shell
+     * (both sides found, thickness under 3 % of the size), else offset by
+     * {@code offsetThicknessM}.
+     */
+    public static Built load(Path meshFile, MeshUnits units, double offsetThicknessM, Path boxesFile,
+            DiaphragmParameters p, BreathingCycle cycle, DiaphragmControls controls)
+            throws IOException, MeshFormatException {
+        return load(meshFile, units, MeshCleaner.Options.defaults(), offsetThicknessM, null, boxesFile, p, cycle,
+                controls);
+    }
+
+    /**
+     * As {@link #load(Path, MeshUnits, double, Path, DiaphragmParameters, BreathingCycle, DiaphragmControls)}
+     * with the mesh cleaner's settings (welding, small pieces kept or dropped) and the muscle's action lines
+     * (null: the scene's default, one line through the top of each dome).
+     */
+    public static Built load(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
+            List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls) throws IOException, MeshFormatException {
+        MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
+        TriangleMesh m = r.mesh();
+        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(m, meshFile, units, "diaphragm", PLAUSIBLE_SIZE_M[0],
+                PLAUSIBLE_SIZE_M[1]);
+        TwoSurfaces s;
+        SurfaceMode mode;
+        TwoSurfaces split = TwoSurfaces.split(m);
+        double[] b = m.bounds();
+        double size = Math.sqrt(sq(b[3] - b[0]) + sq(b[4] - b[1]) + sq(b[5] - b[2]));
+        boolean shell = split.lowerCount() > 0.3 * split.upperCount() && split.upperCount() > 0.3 * split.lowerCount()
+                && split.thicknessM() < 0.03 * size;
+        if (shell) {
+            s = split;
+            mode = SurfaceMode.SHELL;
+        } else {
+            s = TwoSurfaces.offset(m, offsetThicknessM);
+            mode = SurfaceMode.OFFSET;
+        }
+        return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, lines), r.report(), mode,
+                meshFile + ", " + cage(boxesFile));
+    }
+
+    /** The generated double dome at a resolution (rings per face), split into its two faces. */
+    public static Built generated(int rings, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls) throws IOException {
+        return generated(rings, null, boxesFile, p, cycle, controls);
+    }
+
+    /** As {@link #generated(int, Path, DiaphragmParameters, BreathingCycle, DiaphragmControls)} with action lines. */
+    public static Built generated(int rings, List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls) throws IOException {
+        TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
+        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines), null,
+                SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
+    }
+
+    /**
+     * Plausible largest side of a diaphragm's bounding box, m: an adult's is about 0.3 m
+     * transversely (BodyParts3D: 0.27 m; the project's double dome: 0.28 m); 0.08 m admits
+     * a newborn's, 1 m any adult's with room to spare. A mesh outside this range is read in the
+     * wrong --units (a metre file read as mm measures 0.3 mm) or is not a diaphragm.
+     */
+    public static final double[] PLAUSIBLE_SIZE_M = {0.08, 1.0};
+
+    /**
+     * The rib and sternum boxes, metres: the project's parametric cage when {@code file} is null, else
+     * the file's boxes (millimetres), with a message that says where to find them.
+     */
+    public static Map<String, double[]> boxes(Path file) throws IOException {
+        if (file == null) {
+            return ParametricRibCage.adult();
+        }
+        if (!Files.isRegularFile(file)) {
+            throw new IOException(file + ": rib and sternum boxes not found; expected BodyParts3D's"
+                    + " rib-sternum-bounds-mm.json or boxes of that form (or leave out --boxes for the project's"
+                    + " parametric rib cage)");
+        }
+        return BoxesJson.read(file, 1e-3);
+    }
+
+    /** Which rib cage a boxes file (null: the parametric one) stands for, for summaries. */
+    public static String cage(Path boxesFile) {
+        return boxesFile == null ? "parametric rib cage" : "rib boxes " + boxesFile;
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+}

@@ -1,0 +1,248 @@
+package org.tensim.scene.diaphragm;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
+import org.tensim.scene.shell.SandwichShell;
+import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.TriangleMembrane;
+
+/**
+ * The springs of a two-surface shell ({@link TwoSurfaces}) for a {@link TissueModel}: the faces'
+ * membrane springs, and the columns and diagonals across the thickness. Used by the diaphragm and
+ * by the flat shells of the accuracy scenes, so both are built by the same rules.
+ */
+public final class ShellNetwork {
+    /** Where springs go (N/m; the first spring on a node pair wins). */
+    public interface Sink {
+        boolean add(int i, int j, double stiffness);
+
+        boolean contains(int i, int j);
+    }
+
+    /** Young's modulus of the tissue along an edge (i, j), Pa. */
+    @FunctionalInterface
+    public interface EdgeModulus {
+        double youngPa(int i, int j);
+    }
+
+    private final TwoSurfaces s;
+    private final TriangleMesh mesh;
+    private final double[] area;
+    private final EdgeModulus young;
+    private final double columnYoungPa;
+    private final TissueModel model;
+    private final ShellMaterial material;
+    private final double bendingFactor;
+    private final double thickness;
+    private final Map<Long, double[]> edgeArea = new HashMap<>();
+    private final List<List<Integer>> neighbours = new ArrayList<>();
+
+    /**
+     * @param s             the two faces (their median distance is the thickness t)
+     * @param vertexArea    each vertex's third of its triangles' area, m^2
+     * @param young         E along an edge, Pa (muscle or tendon)
+     * @param material      the muscle: its E is the columns' in the paper's model, its nu sets the faces' share
+     * @param model         which identification
+     * @param bendingFactor folding-spring factor of the paper's model (ignored by the material model)
+     */
+    public ShellNetwork(TwoSurfaces s, double[] vertexArea, EdgeModulus young, ShellMaterial material,
+            TissueModel model, double bendingFactor) {
+        this.s = s;
+        this.mesh = s.mesh();
+        this.area = vertexArea;
+        this.young = young;
+        this.material = material;
+        this.columnYoungPa = material.youngPa();
+        this.model = model;
+        this.bendingFactor = bendingFactor;
+        this.thickness = s.thicknessM();
+        int nv = mesh.vertexCount();
+        for (int v = 0; v < nv; v++) {
+            neighbours.add(new ArrayList<>());
+        }
+        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
+            boolean face = model == TissueModel.PAPER || onOneFace(tr);
+            double a = mesh.area(tr);
+            for (int k = 0; k < 3; k++) {
+                int i = mesh.corner(tr, k);
+                int j = mesh.corner(tr, (k + 1) % 3);
+                double[] sum = edgeArea.get(key(i, j));
+                if (sum == null) {
+                    sum = new double[1];
+                    edgeArea.put(key(i, j), sum);
+                    neighbours.get(i).add(j);
+                    neighbours.get(j).add(i);
+                }
+                sum[0] += face ? a : 0;
+            }
+        }
+    }
+
+    /** A face edge's membrane spring for the whole thickness (Van Gelder), N/m. */
+    private double edgeMembrane(int i, int j, double adjacentArea, double length) {
+        return TriangleMembrane.edgeStiffness(young.youngPa(i, j) * thickness, adjacentArea, length);
+    }
+
+    private boolean onOneFace(int tr) {
+        boolean u = s.isUpper(mesh.corner(tr, 0));
+        return s.isUpper(mesh.corner(tr, 1)) == u && s.isUpper(mesh.corner(tr, 2)) == u;
+    }
+
+    /** The faces' springs (and, in the paper's model, the folding springs). */
+    public void membrane(Sink springs) {
+        List<Long> keys = new ArrayList<>(edgeArea.keySet());
+        Collections.sort(keys); // deterministic order
+        SandwichShell sandwich = model == TissueModel.MATERIAL ? SandwichShell.of(material, thickness) : null;
+        for (long e : keys) {
+            int i = (int) (e >>> 32);
+            int j = (int) e;
+            double len = TwoSurfaces.distance(mesh, i, j);
+            double a = edgeArea.get(e)[0];
+            if (sandwich == null) {
+                springs.add(i, j, young.youngPa(i, j) * (thickness / 2) * a / (len * len));
+            } else if (a > 0 && s.isUpper(i) == s.isUpper(j)) {
+                springs.add(i, j, sandwich.faceEdge(edgeMembrane(i, j, a, len)));
+            }
+        }
+        if (model == TissueModel.PAPER) {
+            PaperShellSprings.folding(s, edgeArea, young, thickness, bendingFactor, springs);
+        }
+    }
+
+    /**
+     * The springs across the thickness: none along a rigid link ({@code linkPairs}, keys as
+     * {@link #key}); {@code linked[v]} marks the nodes that carry one.
+     */
+    public void thickness(Sink springs, Set<Long> linkPairs, boolean[] linked) {
+        if (model == TissueModel.PAPER) {
+            PaperShellSprings.thickness(s, area, columnYoungPa, neighbours, springs, linkPairs, linked);
+            return;
+        }
+        SandwichShell sandwich = SandwichShell.of(material, thickness);
+        int nv = mesh.vertexCount();
+        boolean[] columnDone = new boolean[nv];
+        for (int u = 0; u < nv; u++) {
+            if (!s.isUpper(u)) {
+                continue;
+            }
+            for (int j : neighbours.get(u)) {
+                int l = s.partner(j);
+                double a = edgeArea.get(key(u, j))[0];
+                if (!s.isUpper(j) || l < 0 || a == 0 || linkPairs.contains(key(u, l))) {
+                    continue;
+                }
+                double e = TwoSurfaces.distance(mesh, u, j);
+                double d = TwoSurfaces.distance(mesh, u, l);
+                if (d > 3 * (thickness + e)) {
+                    continue; // a partner on the far side of a badly paired mesh
+                }
+                springs.add(u, l, sandwich.diagonal(edgeMembrane(u, j, a, e), e, d));
+            }
+            int l = s.partner(u);
+            if (l >= 0 && !linked[u] && !linked[l]) {
+                double len = TwoSurfaces.distance(mesh, u, l);
+                columnDone[l] |= springs.add(u, l, young.youngPa(u, l) * area[u] / len);
+            }
+            columnDone[u] = true;
+        }
+        for (int l = 0; l < nv; l++) {
+            int u = s.partner(l);
+            if (s.isUpper(l) || columnDone[l] || linked[l] || u < 0 || springs.contains(u, l)) {
+                continue;
+            }
+            double len = TwoSurfaces.distance(mesh, u, l);
+            if (len > 0 && len <= 3 * thickness) {
+                springs.add(u, l, young.youngPa(u, l) * area[l] / len);
+            }
+        }
+    }
+
+    /**
+     * A shell on its own, one material throughout: node v is vertex v, of mass
+     * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs
+     * (rest length the current distance, undamped) and, in the material model, its rigid columns.
+     * For the accuracy scenes.
+     */
+    public static Topology standalone(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
+        TriangleMesh mesh = s.mesh();
+        double[] area = SurfaceGeometry.vertexAreas(mesh);
+        Topology t = new Topology();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            double mass = m.densityKgPerM3() * area[v] * s.thicknessM() / 2;
+            t.addNode(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2), mass);
+        }
+        Set<Long> pairs = new java.util.HashSet<>();
+        Sink sink = new Sink() {
+            @Override
+            public boolean add(int i, int j, double stiffness) {
+                if (i == j || !pairs.add(key(i, j))) {
+                    return false;
+                }
+                t.addSpring(i, j, stiffness, TwoSurfaces.distance(mesh, i, j), 0);
+                return true;
+            }
+
+            @Override
+            public boolean contains(int i, int j) {
+                return pairs.contains(key(i, j));
+            }
+        };
+        ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);
+        n.membrane(sink);
+        boolean[] linked = new boolean[mesh.vertexCount()];
+        Set<Long> linkPairs = new java.util.HashSet<>();
+        if (model.rigidColumns()) {
+            for (int[] c : columnPairs(s, v -> true)) {
+                linked[c[0]] = true;
+                linked[c[1]] = true;
+                linkPairs.add(key(c[0], c[1]));
+                t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            }
+        }
+        n.thickness(sink, linkPairs, linked);
+        return t;
+    }
+
+    /**
+     * Struts across the thickness: each eligible node with its partner (also eligible) on the other
+     * face, shortest first, each node at most once, length 0.3 to 2.5 thicknesses (disjoint struts:
+     * "compression discontinuous", paper section 2.1). Pairs are (upper, lower).
+     */
+    public static List<int[]> columnPairs(TwoSurfaces s, java.util.function.IntPredicate eligible) {
+        TriangleMesh mesh = s.mesh();
+        int nv = mesh.vertexCount();
+        double th = s.thicknessM();
+        List<int[]> cand = new ArrayList<>();
+        for (int v = 0; v < nv; v++) {
+            int q = s.partner(v);
+            if (eligible.test(v) && q >= 0 && eligible.test(q)) {
+                cand.add(s.isUpper(v) ? new int[] {v, q} : new int[] {q, v});
+            }
+        }
+        cand.sort((x, y) -> Double.compare(TwoSurfaces.distance(mesh, x[0], x[1]),
+                TwoSurfaces.distance(mesh, y[0], y[1])));
+        boolean[] used = new boolean[nv];
+        List<int[]> out = new ArrayList<>();
+        for (int[] c : cand) {
+            double len = TwoSurfaces.distance(mesh, c[0], c[1]);
+            if (used[c[0]] || used[c[1]] || len < 0.3 * th || len > 2.5 * th) {
+                continue;
+            }
+            used[c[0]] = true;
+            used[c[1]] = true;
+            out.add(c);
+        }
+        return out;
+    }
+
+    /** Key of an unordered node pair. */
+    public static long key(int i, int j) {
+        return ((long) Math.min(i, j) << 32) | Math.max(i, j);
+    }
+}

@@ -1,0 +1,252 @@
+package org.tensim.scene.tunable;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.io.mesh.MeshFormatException;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.model.Vec3;
+import org.tensim.scene.diaphragm.BreathingCycle;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.RibCage;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SystemState;
+
+/**
+ * The paper's diaphragm (section 3.2) for the GUI, over
+ * {@link DiaphragmScene}: the diaphragm's two surfaces shaded, muscle red and
+ * tendon pale, with the ribs, sternum and cartilage as lines; the dome apex is
+ * the probe. The two control parameters of the paper (rib motion, muscle action)
+ * act through the scene's {@link DiaphragmControls}; the breathing period is
+ * fixed when a scene is built, so changing it restarts.
+ *
+ * <p><b>Tissue constants</b> go through the scene's own rules, those of
+ * {@code tensim diaphragm}: a new tissue stiffness (the muscle's Young's modulus,
+ * the tendon's kept in its ratio to it, {@link DiaphragmParameters#withTissueYoung}),
+ * tissue damping (the damping ratio of the highest mode) or surrounding damping
+ * (viscous, per second) makes new {@link DiaphragmParameters}; the scene is rebuilt
+ * with them ({@link DiaphragmScene#rebuiltWith}) and the running simulation takes the
+ * rebuilt scene's spring and damping constants
+ * ({@link DiaphragmScene#copyConstantsTo}), keeping its positions, velocities and time.
+ * The recommended time step becomes the rebuilt scene's. A rebuild takes about 0.4 s at
+ * the GUI's default resolution (20 rings, measured at a load average of 25), during which
+ * the simulation waits.
+ *
+ * <p>Tendon model: with rigid links (tensegrity, the paper's), or with every link
+ * replaced by a spring ({@link RigidLinksAsSprings}) to compare.
+ */
+public final class DiaphragmViewScene implements ViewScene {
+    public static final String RIB_AMPLITUDE = "ribAmplitudeFactor";
+    public static final String MUSCLE_ACTION = "muscleActionPa";
+    public static final String TISSUE_STIFFNESS = "tissueYoungPa";
+    public static final String TISSUE_DAMPING = "tissueDampingRatio";
+    public static final String SURROUNDING_DAMPING = "surroundingDampingPerS";
+    public static final String BREATHING_PERIOD = "breathingPeriodS";
+
+    /** Inspiration:expiration of quiet breathing, 1:2 (PHYSICS.md). */
+    static final double EXPIRATION_RATIO = 2;
+    /** Rings per face of the generated double dome used by default: about 2,500 nodes, interactive. */
+    public static final int DEFAULT_RINGS = 20;
+
+    private static final DiaphragmParameters P = DiaphragmParameters.defaults();
+
+    /** The tunable parameters (the sweep and calibration read their names and ranges here). */
+    public static final List<TunableParameter> PARAMETERS = List.of(
+            TunableParameter.linear(RIB_AMPLITUDE, "Rib motion amplitude", "x quiet", 0,
+                    DiaphragmControls.MAX_RIB_AMPLITUDE, 1,
+                    "Rib rotation about each rib's helical axis, times quiet breathing (0: ribs still)."),
+            TunableParameter.linear(MUSCLE_ACTION, "Muscle action amplitude", "Pa", 0, DiaphragmControls.MAX_MUSCLE_PA,
+                    DiaphragmSetup.DEFAULT_MUSCLE_PA,
+                    "Peak contraction force of the action lines per unit area of diaphragm, at end-inspiration."),
+            TunableParameter.log(TISSUE_STIFFNESS, "Tissue stiffness (muscle E)", "Pa", 4e3, 4e5, P.muscleYoungPa(),
+                    "Young's modulus of the muscle; the tendon's springs keep their ratio to it. Stiffer: smaller"
+                            + " deformation and a smaller stable time step."),
+            TunableParameter.log(TISSUE_DAMPING, "Tissue damping ratio", "", 0.02, 1, P.highDampingRatio(),
+                    "Damping ratio of the fastest mode from the springs' axial damping (RK2 needs some)."),
+            TunableParameter.linear(SURROUNDING_DAMPING, "Surrounding damping", "1/s", 0, 200, P.viscousPerS(),
+                    "Viscous drag per unit mass standing for the surrounding organs; damps the slow modes."),
+            TunableParameter.linear(BREATHING_PERIOD, "Breathing period", "s", 2, 12, 4,
+                    "Duration of one breath (inspiration:expiration 1:2). 4 s is 15 breaths per minute.")
+                    .restarting());
+
+    private final boolean tensegrity;
+    private final Simulation sim;
+    private final List<Body> bodies;
+    /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
+    private DiaphragmScene scene;
+
+    private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity) {
+        this.scene = scene;
+        this.tensegrity = tensegrity;
+        if (tensegrity) {
+            sim = scene.newSimulation();
+        } else {
+            sim = Simulation.of(RigidLinksAsSprings.of(scene.topology()));
+        }
+        SystemState s = sim.state();
+        List<RibCage.Segment> segments = scene.cage().segments();
+        int[] structure = new int[2 * segments.size()];
+        for (int i = 0; i < segments.size(); i++) {
+            structure[2 * i] = segments.get(i).a();
+            structure[2 * i + 1] = segments.get(i).b();
+        }
+        bodies = List.of(new Body("diaphragm apex", sim, scene.allTriangles(), colours(scene, s.nodeCount), Vec3.ZERO,
+                scene.apexNode(), scene.simulatedNodes(), structure));
+    }
+
+    private static float[] colours(DiaphragmScene scene, int nodes) {
+        int[] labels = scene.labels();
+        float[] c = new float[3 * nodes];
+        for (int i = 0; i < nodes; i++) {
+            float[] rgb = switch (i < labels.length ? labels[i] : -1) {
+                case DiaphragmScene.MUSCLE -> new float[] {0.78f, 0.23f, 0.2f};
+                case DiaphragmScene.TENDON -> new float[] {0.94f, 0.91f, 0.8f};
+                case DiaphragmScene.RIB -> new float[] {0.93f, 0.89f, 0.76f};
+                case DiaphragmScene.STERNUM_CARTILAGE -> new float[] {0.62f, 0.76f, 0.86f};
+                default -> new float[] {0.5f, 0.5f, 0.5f};
+            };
+            System.arraycopy(rgb, 0, c, 3 * i, 3);
+        }
+        return c;
+    }
+
+    /**
+     * Where the diaphragm comes from: a mesh file, or the generated double dome
+     * at a resolution; and the rib and sternum boxes. The surfaces and boxes are
+     * read once and kept, so that a reset or a restart only rebuilds the scene.
+     *
+     * @param mesh       mesh file, or null for the generated double dome
+     * @param units      units of the mesh file
+     * @param thicknessM thickness given to a single-surface mesh, m
+     * @param rings      rings per face of the generated dome (>= 2)
+     * @param boxes      rib and sternum boxes file (millimetres, BodyParts3D frame), or null for the project's
+     *                   parametric rib cage
+     */
+    public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
+        return new SceneFactory() {
+            private DiaphragmSetup.Built first;
+
+            @Override
+            public String name() {
+                return "diaphragm";
+            }
+
+            @Override
+            public boolean hasTendonChoice() {
+                return true;
+            }
+
+            @Override
+            public synchronized ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
+                double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
+                BreathingCycle cycle = new BreathingCycle(period, EXPIRATION_RATIO);
+                DiaphragmControls controls = new DiaphragmControls(values.getOrDefault(RIB_AMPLITUDE, 1.0),
+                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.DEFAULT_MUSCLE_PA));
+                try {
+                    if (first == null) {
+                        first = mesh == null ? DiaphragmSetup.generated(rings, boxes, P, cycle, controls)
+                                : DiaphragmSetup.load(mesh, units, thicknessM, boxes, P, cycle, controls);
+                        return new DiaphragmViewScene(first.scene(), tensegrityTendon);
+                    }
+                    DiaphragmScene s = DiaphragmScene.build(first.scene().surfaces(), DiaphragmSetup.boxes(boxes), P,
+                            cycle, controls, null);
+                    return new DiaphragmViewScene(s, tensegrityTendon);
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e.getMessage(), e);
+                } catch (MeshFormatException e) {
+                    throw new IllegalArgumentException(e.getMessage(), e);
+                }
+            }
+        };
+    }
+
+    /** The underlying scene (for tests and reports): the built one, or its rebuild with the latest constants. */
+    public DiaphragmScene scene() {
+        return scene;
+    }
+
+    @Override
+    public String name() {
+        return "diaphragm";
+    }
+
+    @Override
+    public String title() {
+        return "Diaphragm: " + scene.diaphragmNodes() + " nodes, muscle (red) mass-spring, tendon (pale) "
+                + (sim.state().linkCount() > 0 ? "tensegrity" : "mass-spring");
+    }
+
+    @Override
+    public List<Body> bodies() {
+        return bodies;
+    }
+
+    @Override
+    public List<TunableParameter> parameters() {
+        return PARAMETERS;
+    }
+
+    @Override
+    public double defaultTimeStep() {
+        return scene.recommendedTimeStep();
+    }
+
+    /** The vertical axis of the BodyParts3D frame (z, superior): the dome's excursion. */
+    @Override
+    public int defaultProbeAxis() {
+        return 2;
+    }
+
+    /** As the paper's Fig. 5. */
+    @Override
+    public double displacementScale() {
+        return 100;
+    }
+
+    /** z is superior in the BodyParts3D frame. */
+    @Override
+    public Vec3 up() {
+        return new Vec3(0, 0, 1);
+    }
+
+    /** From the front (anterior is -y), a little to the patient's right, and above: the tendon shows. */
+    @Override
+    public Vec3 viewFrom() {
+        return new Vec3(-0.3, -0.8, 0.55);
+    }
+
+    @Override
+    public void apply(String key, double value) {
+        DiaphragmControls c = scene.controls();
+        switch (key) {
+            case RIB_AMPLITUDE -> c.setRibAmplitude(value);
+            case MUSCLE_ACTION -> c.setMuscleAmplitudePa(value);
+            case TISSUE_STIFFNESS -> retune(scene.parameters().withTissueYoung(value));
+            case TISSUE_DAMPING -> retune(scene.parameters().withDamping(value, scene.parameters().viscousPerS()));
+            case SURROUNDING_DAMPING -> retune(scene.parameters().withViscous(value));
+            case BREATHING_PERIOD -> throw new IllegalStateException(BREATHING_PERIOD
+                    + " is fixed when the scene is built: make a new scene with it");
+            default -> throw new IllegalArgumentException("diaphragm scene has no parameter '" + key + "'; known: "
+                    + PARAMETERS.stream().map(TunableParameter::key).toList());
+        }
+    }
+
+    /**
+     * Rebuilds the scene with new constants and hands them to the running simulation; nothing when they
+     * are the scene's already (a new scene is given every setting, mostly unchanged).
+     */
+    private void retune(DiaphragmParameters p) {
+        if (p.equals(scene.parameters())) {
+            return;
+        }
+        DiaphragmScene rebuilt = scene.rebuiltWith(p);
+        DiaphragmScene.copyConstantsTo(sim.state(),
+                tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology()));
+        scene = rebuilt;
+    }
+}

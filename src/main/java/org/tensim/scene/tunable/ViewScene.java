@@ -1,0 +1,67 @@
+package org.tensim.scene.tunable;
+
+import java.util.List;
+import org.tensim.model.Vec3;
+
+/**
+ * A scene as the GUI sees it: the bodies to simulate and draw, and the
+ * parameters a user may tune while it runs. A scene adds no physics: it wraps
+ * the scenes of {@code org.tensim.scene} (cube, diaphragm) that the headless
+ * commands use too.
+ *
+ * <p>Threading: a scene is created, stepped and tuned on the simulation thread
+ * only; {@link #apply(String, double)} is called there between two steps, never
+ * during one.
+ */
+public interface ViewScene {
+    /** Short name used on the command line and in preset files, e.g. {@code cube}. */
+    String name();
+
+    /** One line shown in the window title. */
+    String title();
+
+    /** The bodies, stepped together in this order with the same time step. */
+    List<Body> bodies();
+
+    /** The tunable parameters of this scene (the time step is the GUI's, not listed here). */
+    List<TunableParameter> parameters();
+
+    /**
+     * Applies a validated value of one of {@link #parameters()} to the running
+     * simulations. Called on the simulation thread between steps.
+     *
+     * @throws IllegalArgumentException for an unknown key
+     */
+    void apply(String key, double value);
+
+    /** The time step the scene is meant to run at, s. */
+    double defaultTimeStep();
+
+    /** Which component of the probe displacement is charted by default: 0 = x, 1 = y, 2 = z, 3 = magnitude. */
+    default int defaultProbeAxis() {
+        return 1;
+    }
+
+    /** Scale of the displacement vectors drawn (the paper's Fig. 5 uses 100). */
+    default double displacementScale() {
+        return 1;
+    }
+
+    /**
+     * Whether springs and nodes are drawn at first. Default: only when no body has a
+     * surface (a dense wireframe over a shaded surface hides it and slows drawing).
+     */
+    default boolean wireframeAtStart() {
+        return bodies().stream().allMatch(b -> b.triangles().length == 0);
+    }
+
+    /** The scene's up direction, shown upwards in the home view. Default: +y. */
+    default Vec3 up() {
+        return new Vec3(0, 1, 0);
+    }
+
+    /** Direction from the scene's centre towards the eye in the home view. Default: front (+z), a little right and above. */
+    default Vec3 viewFrom() {
+        return new Vec3(0.2, 0.3, 0.933);
+    }
+}
