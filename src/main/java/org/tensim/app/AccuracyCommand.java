@@ -132,7 +132,8 @@ public final class AccuracyCommand implements Callable<Integer> {
             json.put(i, e);
         }
         if (shellModel != null) {
-            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println), run));
+            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println),
+                    run));
         }
         run.finish(RunStatus.OK, json);
         System.out.println(Json.line(json));

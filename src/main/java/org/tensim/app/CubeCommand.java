@@ -72,8 +72,8 @@ public final class CubeCommand implements Callable<Integer> {
             CubeReport report = CubeReport.run(p, integrator, run);
             System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
             if (report.status() == RunStatus.DIVERGED) {
-                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged") + " (the CSV ends at the last"
-                        + " finite step; the chart is marked DIVERGED)");
+                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged")
+                        + " (the CSV ends at the last finite step; the chart is marked DIVERGED)");
             }
             System.out.println(report.summaryLine());
         });

@@ -139,9 +139,7 @@ public final class DiaphragmReport {
         }
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
         writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
-        String mark = stepping.diverged() == null ? "" : String.format(java.util.Locale.ROOT,
-                "DIVERGED at t = %.6g s (values after it are not physical): ", stepping.divergedAtS());
-        figures(out, scene, snapshots.kept, snapshots.rest, o, mark);
+        figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
         breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
             log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
@@ -238,14 +236,7 @@ public final class DiaphragmReport {
 
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
-        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
     }
 
     /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */
@@ -305,7 +296,9 @@ public final class DiaphragmReport {
     }
 
     private static void figures(RunFolder out, DiaphragmScene scene, double[][] kept, double[] rest, Options o,
-            String mark) throws IOException {
+            double divergedAt) throws IOException {
+        java.util.function.UnaryOperator<String> mark = title -> Double.isNaN(divergedAt) ? title
+                : Charts.divergedTitle(divergedAt, title);
         int nd = scene.diaphragmNodes();
         int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
         int apex = scene.apexNode();
@@ -313,22 +306,22 @@ public final class DiaphragmReport {
         double zPlane = rest[3 * apex + 2] - 0.04;
         double band = 2 * meanEdge(scene);
         if (kept[0] != null && kept[1] != null) {
-            SliceFigures.write(out.file("sagittal.png"), mark + String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 0, xPlane, band,
                     o.vectorScale());
-            SliceFigures.write(out.file("axial.png"), mark + String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 2, zPlane, band,
                     o.vectorScale());
         }
         if (kept[2] != null && kept[3] != null) {
-            SliceFigures.write(out.file("sagittal-cycle.png"), mark + String.format(java.util.Locale.ROOT,
-                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
+            SliceFigures.write(out.file("sagittal-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane)), kept[2],
                     kept[3], upper, 0, xPlane, band, 1);
-            SliceFigures.write(out.file("axial-cycle.png"), mark + String.format(java.util.Locale.ROOT,
-                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
-                    upper, 2, zPlane, band, 1);
+            SliceFigures.write(out.file("axial-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane)), kept[2],
+                    kept[3], upper, 2, zPlane, band, 1);
         }
     }
 

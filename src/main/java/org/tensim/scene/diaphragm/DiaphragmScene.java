@@ -113,7 +113,16 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
+        return build(surfaces, boxes, p, cycle, controls, lines, BoundaryConditions.defaults());
+    }
+
+    /**
+     * As {@link #build(TwoSurfaces, Map, DiaphragmParameters, BreathingCycle, DiaphragmControls, List)}
+     * with the attachment and muscle-load models ({@link BoundaryConditions#paper()} for the paper's).
+     */
+    public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines, BoundaryConditions bc) {
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, bc);
         b.nodes();
         b.tendon();
         b.meshSprings();
@@ -237,14 +246,15 @@ public final class DiaphragmScene {
     }
 
     /**
-     * Nodes {@code 0 .. simulatedNodes()-1} are the diaphragm and the cage; the fixed anchors of the
-     * abdominal support follow (they never move and are left out of outputs).
+     * Nodes {@code 0 .. simulatedNodes()-1} are the diaphragm and the cage; the anchors of the
+     * attachment band (fixed, or driven with a rib) and of the abdominal support (fixed) follow
+     * (they are not free and are left out of outputs).
      */
     public int simulatedNodes() {
         return firstAnchor;
     }
 
-    /** Fixed anchor nodes of the abdominal support. */
+    /** Anchor nodes of the attachment band and the abdominal support. */
     public int anchorNodes() {
         return topology.nodeCount() - firstAnchor;
     }
@@ -265,7 +275,7 @@ public final class DiaphragmScene {
         return cage;
     }
 
-    /** The dome apex probe: the highest upper-surface node at rest that is not attached. */
+    /** The dome apex probe: the highest upper-surface node at rest that is not attached (driven, fixed, in the band). */
     public int apexNode() {
         return apex;
     }
@@ -282,7 +292,7 @@ public final class DiaphragmScene {
         return actionLines;
     }
 
-    /** Diaphragm nodes attached to ribs (driven rigidly with their rib). */
+    /** Diaphragm nodes attached to ribs (driven rigidly with their rib, or tied to it by the band). */
     public int attachedToRibs() {
         return attachedToRibs;
     }
@@ -292,7 +302,7 @@ public final class DiaphragmScene {
         return attachedToCartilage;
     }
 
-    /** Diaphragm nodes fixed to the spine (crura). */
+    /** Diaphragm nodes fixed or tied to the spine (crura). */
     public int attachedToSpine() {
         return attachedToSpine;
     }

@@ -81,9 +81,24 @@ public final class Parallelism implements AutoCloseable {
         return new Parallelism(sim, threads, order, minParallelWork);
     }
 
+    /**
+     * Springs from which {@link #automaticThreads(int)} uses every core: the real-time study
+     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
+     * up, and a third slower at 12,144 (14 rings) and below.
+     */
+    public static final int AUTO_PARALLEL_SPRINGS = 20_000;
+
     /** Number of cores the JVM sees: the default thread count. */
     public static int availableCores() {
         return Runtime.getRuntime().availableProcessors();
+    }
+
+    /**
+     * The automatic thread count of a scene with {@code springs} springs: every core from
+     * {@link #AUTO_PARALLEL_SPRINGS}, else 1 (below it a dispatch costs more than it saves).
+     */
+    public static int automaticThreads(int springs) {
+        return springs >= AUTO_PARALLEL_SPRINGS ? availableCores() : 1;
     }
 
     public int threads() {
