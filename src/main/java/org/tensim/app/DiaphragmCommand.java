@@ -21,6 +21,7 @@ import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -125,21 +126,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
     List<ActionLines.Line> actionLines;
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
-
-    /**
-     * Springs from which the automatic thread count uses every core: the real-time study
-     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
-     * up, and a third slower at 12,144 (14 rings) and below.
-     */
-    static final int AUTO_PARALLEL_SPRINGS = 20_000;
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "
-                    + AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
     int threads = 0;
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
@@ -147,7 +140,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: 1e-12)")
     Double cgTolerance;
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
+                    + " this scene; summary.json's dt_rule says how it was chosen)")
     double dt = 0;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
@@ -292,14 +287,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
-                        ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
+                : org.tensim.solver.parallel.Parallelism.automaticThreads(built.scene().topology().springs().size());
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {
-            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
-                    + out + ", figures marked DIVERGED)");
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
+                    + " (outputs up to that step are in " + out + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));
     }

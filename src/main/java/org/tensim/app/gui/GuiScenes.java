@@ -35,6 +35,17 @@ public final class GuiScenes {
         }
     }
 
+    /**
+     * Whether the scene opens with the large-step solver ({@link IntegratorCatalog#REAL_TIME} at
+     * {@link IntegratorCatalog#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
+     * runs at a few hundredths of real time at the paper's resolution (43 rings: 11,354 diaphragm nodes,
+     * the mesh of {@code ./tensim diaphragm}). Last-used parameters and presets
+     * still apply over it.
+     */
+    public static boolean opensInRealTime(String name) {
+        return "diaphragm".equals(name);
+    }
+
     /** Names accepted by {@code --scene}, the default first. */
     public static List<String> names() {
         return List.of("diaphragm", "cube");
@@ -55,8 +66,10 @@ public final class GuiScenes {
                 return CubeViewScene.factory();
             case "diaphragm":
                 if (src.mesh() != null && !Files.isRegularFile(src.mesh())) {
-                    throw new IllegalArgumentException("--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
-                            + " or .off mesh of the diaphragm)");
+                    // A missing input file is a refused file (exit 1), not a usage error (docs/outputs.md).
+                    String msg = "--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
+                            + " or .off mesh of the diaphragm)";
+                    throw new java.io.UncheckedIOException(msg, new java.io.FileNotFoundException(msg));
                 }
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());

@@ -5,7 +5,13 @@ import java.util.List;
 import java.util.Map;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
+import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.stability.ButcherTableau;
+import org.tensim.solver.stability.ModalBounds;
+import org.tensim.solver.stability.TimeStep;
+import org.tensim.solver.stability.TimeStepPolicy;
 
 /**
  * The paper's diaphragm (section 3.2), built from two boundary surfaces: muscle as a
@@ -68,7 +74,7 @@ public final class DiaphragmScene {
     private final int attachedToCartilage;
     private final int attachedToSpine;
     private final boolean[] attached;
-    private final double omegaMax;
+    private final ModalBounds modes;
     private final double timeStep;
     private final double tendonAreaFraction;
     private final int firstAnchor;
@@ -91,8 +97,8 @@ public final class DiaphragmScene {
         this.attachedToCartilage = b.attachedCartilage;
         this.attachedToSpine = b.attachedSpine;
         this.attached = b.attached;
-        this.omegaMax = b.omegaMax;
-        this.timeStep = b.dt;
+        this.modes = b.modes;
+        this.timeStep = TimeStepPolicy.recommend(Integrators.DEFAULT, ButcherTableau.MIDPOINT, true, modes).seconds();
         this.tendonAreaFraction = b.tendonFraction;
         this.firstAnchor = b.firstAnchor;
         this.addedMass = b.addedMass;
@@ -205,7 +211,7 @@ public final class DiaphragmScene {
     public Simulation newSimulation() {
         Simulation sim = Simulation.of(topology);
         // Disjoint links: one sweep is exact; a tolerance still guards the general case.
-        sim.projection().setTolerance(1e-9).setMaxIterations(50);
+        sim.apply(sim.settings().withProjection(1e-9, 50));
         return sim;
     }
 
@@ -322,11 +328,26 @@ public final class DiaphragmScene {
 
     /** Gershgorin bound on the highest angular frequency of the network, rad/s. */
     public double omegaMaxBound() {
-        return omegaMax;
+        return modes.omegaMax();
     }
 
-    /** The recommended time step for RK2, s (see {@link Rk2Step}). */
+    /** The network's highest frequency (Gershgorin) and its Rayleigh damping, for the time-step policy. */
+    public ModalBounds modalBounds() {
+        return modes;
+    }
+
+    /** The recommended time step of the paper's RK2 on this scene, s ({@link TimeStepPolicy}). */
     public double recommendedTimeStep() {
         return timeStep;
+    }
+
+    /**
+     * The step to run {@code integrator} with: {@code requestedS} when > 0 (given with
+     * {@code --dt}), else the recommendation of {@link TimeStepPolicy} for it on this
+     * scene; says which.
+     */
+    public TimeStep timeStep(Integrator integrator, double requestedS) {
+        return TimeStepPolicy.choose(requestedS, "--dt", integrator.name(), integrator.stability(),
+                integrator.explicit(), modes);
     }
 }

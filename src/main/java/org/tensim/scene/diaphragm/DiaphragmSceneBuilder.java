@@ -10,6 +10,7 @@ import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.solver.stability.ModalBounds;
 
 /**
  * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
@@ -46,7 +47,7 @@ final class DiaphragmSceneBuilder {
     int attachedSpine;
     boolean[] attached;
     double omegaMax;
-    double dt;
+    ModalBounds modes;
     double tendonFraction;
     /** Offset of the tendon plane: points x with {@code normal . x >= tendonCut} are tendon, m. */
     double tendonCut;
@@ -267,7 +268,7 @@ final class DiaphragmSceneBuilder {
         meanMass /= nv;
         double alpha = p.viscousPerS();
         t.setViscousDamping(alpha * meanMass);
-        dt = Rk2Step.stable(omegaMax, beta, alpha) * Rk2Step.SAFETY;
+        modes = new ModalBounds(omegaMax, beta, alpha, "Gershgorin bound");
     }
 
     private static long key(int i, int j) {
