@@ -52,11 +52,6 @@ public final class DiaphragmViewScene implements ViewScene {
 
     /** Inspiration:expiration of quiet breathing, 1:2 (PHYSICS.md). */
     static final double EXPIRATION_RATIO = 2;
-    /**
-     * Rings per face of a generated double dome when a sweep spec names none: about 2,500 nodes. (The
-     * GUI's default is the resolution study's pick instead, {@code ResolutionPick}.)
-     */
-    public static final int DEFAULT_RINGS = 20;
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
