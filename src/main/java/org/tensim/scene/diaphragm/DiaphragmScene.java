@@ -74,24 +74,24 @@ public final class DiaphragmScene {
     private final int firstAnchor;
     private final double addedMass;
 
-    private DiaphragmScene(DiaphragmSceneBuilder b) {
-        this.topology = b.t;
-        this.surfaces = b.surfaces;
-        this.labels = b.labels;
-        this.cage = b.cage;
-        this.apex = b.apex;
-        this.controls = b.controls;
-        this.cycle = b.cycle;
-        this.actionLines = b.lines;
-        this.attachedToRibs = b.attachedRibs;
-        this.attachedToCartilage = b.attachedCartilage;
-        this.attachedToSpine = b.attachedSpine;
-        this.attached = b.attached;
-        this.omegaMax = b.omegaMax;
-        this.timeStep = b.dt;
-        this.tendonAreaFraction = b.tendonFraction;
-        this.firstAnchor = b.firstAnchor;
-        this.addedMass = b.addedMass;
+    private DiaphragmScene(DiaphragmSceneBuilder.Parts b) {
+        this.topology = b.topology();
+        this.surfaces = b.surfaces();
+        this.labels = b.labels();
+        this.cage = b.cage();
+        this.apex = b.apex();
+        this.controls = b.controls();
+        this.cycle = b.cycle();
+        this.actionLines = b.actionLines();
+        this.attachedToRibs = b.attachedToRibs();
+        this.attachedToCartilage = b.attachedToCartilage();
+        this.attachedToSpine = b.attachedToSpine();
+        this.attached = b.attached();
+        this.omegaMax = b.omegaMax();
+        this.timeStep = b.timeStep();
+        this.tendonAreaFraction = b.tendonAreaFraction();
+        this.firstAnchor = b.firstAnchor();
+        this.addedMass = b.addedMassKg();
     }
 
     /**
@@ -103,19 +103,8 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
-        b.nodes();
-        b.tendon();
-        b.meshSprings();
-        b.rigidLinks();
-        b.thicknessSprings();
-        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
-        b.attach();
-        b.columnLinks();
-        b.muscle(lines == null ? defaultActionLines(surfaces) : lines);
-        b.support();
-        b.damping();
-        return new DiaphragmScene(b);
+        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, p, cycle, controls,
+                lines == null ? defaultActionLines(surfaces) : lines));
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
@@ -12,45 +13,81 @@ import org.tensim.model.Vec3;
 import org.tensim.scene.shell.ShellMaterial;
 
 /**
- * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
- * bending springs, rigid links, thickness springs, cage, attachment, muscle, abdominal
- * support, damping (package-private; the formulas are documented on DiaphragmScene).
+ * Builds a {@link DiaphragmScene}: {@link #build} runs the named steps in their order (nodes,
+ * tendon, membrane springs, rigid links, thickness springs, cage, attachment, muscle columns,
+ * muscle, abdominal support, damping) on private state and returns everything the scene holds
+ * as one {@link Parts} record (package-private; the formulas are documented on DiaphragmScene).
  */
 final class DiaphragmSceneBuilder {
+    /**
+     * What the steps produce: everything a {@link DiaphragmScene} holds.
+     *
+     * @param labels      tissue label per simulated node
+     * @param attached    per diaphragm node: attached to ribs, cartilage, sternum or spine
+     * @param omegaMax    Gershgorin bound on the highest angular frequency, rad/s
+     * @param timeStep    recommended RK2 step, s
+     * @param firstAnchor id of the first anchor node of the abdominal support
+     * @param addedMassKg mass added by the mass floor, kg
+     */
+    record Parts(Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage, int apex,
+            DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
+            int attachedToCartilage, int attachedToSpine, boolean[] attached, double omegaMax, double timeStep,
+            double tendonAreaFraction, int firstAnchor, double addedMassKg) {
+    }
 
-    final TwoSurfaces surfaces;
-    final TriangleMesh mesh;
-    final DiaphragmParameters p;
-    final BreathingCycle cycle;
-    final DiaphragmControls controls;
-    final Topology t = new Topology();
-    final SpringList springs = new SpringList();
-    final int nv;
-    final double thickness;
+    /** Runs every step in order. */
+    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls, List<ActionLines.Line> lines) {
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
+        b.nodes();
+        b.tendon();
+        b.meshSprings();
+        b.rigidLinks();
+        b.thicknessSprings();
+        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+        b.attach();
+        b.columnLinks();
+        b.muscle(lines);
+        b.support();
+        b.damping();
+        return new Parts(b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
+                b.attachedCartilage, b.attachedSpine, b.attached, b.omegaMax, b.dt, b.tendonFraction, b.firstAnchor,
+                b.addedMass);
+    }
+
+    private final TwoSurfaces surfaces;
+    private final TriangleMesh mesh;
+    private final DiaphragmParameters p;
+    private final BreathingCycle cycle;
+    private final DiaphragmControls controls;
+    private final Topology t = new Topology();
+    private final SpringList springs = new SpringList();
+    private final int nv;
+    private final double thickness;
     /** Smallest node mass, as a fraction of the median node's. */
-    static final double MASS_FLOOR = 0.3;
-    double addedMass;
-    double[] area;
-    int[] labels;
-    boolean[] linked;
-    Set<Long> linkPairs = new HashSet<>();
-    ShellNetwork network;
-    final List<int[]> pendingColumns = new ArrayList<>();
-    RibCage cage;
-    int apex = -1;
-    ActionLines lines;
-    int attachedRibs;
-    int attachedCartilage;
-    int attachedSpine;
-    boolean[] attached;
-    double omegaMax;
-    double dt;
-    double tendonFraction;
-    int firstAnchor;
-    final List<int[]> supportSprings = new ArrayList<>();
-    final List<Double> supportK = new ArrayList<>();
+    private static final double MASS_FLOOR = 0.3;
+    private double addedMass;
+    private double[] area;
+    private int[] labels;
+    private boolean[] linked;
+    private Set<Long> linkPairs = new HashSet<>();
+    private ShellNetwork network;
+    private final List<int[]> pendingColumns = new ArrayList<>();
+    private RibCage cage;
+    private int apex = -1;
+    private ActionLines lines;
+    private int attachedRibs;
+    private int attachedCartilage;
+    private int attachedSpine;
+    private boolean[] attached;
+    private double omegaMax;
+    private double dt;
+    private double tendonFraction;
+    private int firstAnchor;
+    private final List<int[]> supportSprings = new ArrayList<>();
+    private final List<Double> supportK = new ArrayList<>();
 
-    DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl) {
+    private DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl) {
         this.surfaces = s;
         this.mesh = s.mesh();
         this.p = p;
@@ -60,7 +97,7 @@ final class DiaphragmSceneBuilder {
         this.thickness = s.thicknessM();
     }
 
-    void nodes() {
+    private void nodes() {
         area = SurfaceGeometry.vertexAreas(mesh);
         // Mass floor: a few vertices of sliver triangles (real meshes) would carry almost no mass and
         // set the highest frequency alone; their mass is raised to MASS_FLOOR times the median's.
@@ -78,7 +115,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void tendon() {
+    private void tendon() {
         Vec3 n = p.tendonNormal();
         double cut;
         if (p.tendonPoint() != null) {
@@ -128,7 +165,7 @@ final class DiaphragmSceneBuilder {
     }
 
     /** The faces' springs, by the tissue model (see {@link ShellNetwork}). */
-    void meshSprings() {
+    private void meshSprings() {
         network = new ShellNetwork(surfaces, area, this::young,
                 new ShellMaterial(p.muscleYoungPa(), p.poissonRatio(), thickness, p.densityKgPerM3()),
                 p.tissueModel(), p.bendingFactor());
@@ -139,7 +176,7 @@ final class DiaphragmSceneBuilder {
      * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
      * material model also the muscle's, made after the attachment ({@link #columnLinks}).
      */
-    void rigidLinks() {
+    private void rigidLinks() {
         linked = new boolean[nv];
         boolean all = p.tissueModel().rigidColumns();
         for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
@@ -159,7 +196,7 @@ final class DiaphragmSceneBuilder {
      * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
      * {@code E A / L} instead.
      */
-    void columnLinks() {
+    private void columnLinks() {
         for (int[] c : pendingColumns) {
             Node a = t.node(c[0]);
             Node b = t.node(c[1]);
@@ -172,7 +209,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void thicknessSprings() {
+    private void thicknessSprings() {
         network.thickness(springs, linkPairs, linked);
     }
 
@@ -196,7 +233,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void attach() {
+    private void attach() {
         attached = new boolean[nv];
         List<RibCage.Segment> segs = cage.segments();
         for (int v = 0; v < nv; v++) {
@@ -249,7 +286,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void muscle(List<ActionLines.Line> l) {
+    private void muscle(List<ActionLines.Line> l) {
         lines = new ActionLines(l, cycle, controls);
         for (int v = 0; v < nv; v++) {
             if (labels[v] != DiaphragmScene.MUSCLE || t.node(v).isDriven() || t.node(v).isFixed()) {
@@ -263,7 +300,7 @@ final class DiaphragmSceneBuilder {
     }
 
     /** Anchors (fixed nodes, added last) and zero-length springs K A_i for the free lower-surface nodes. */
-    void support() {
+    private void support() {
         firstAnchor = t.nodeCount();
         if (p.abdominalSupportPaPerM() == 0) {
             return;
@@ -279,7 +316,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void damping() {
+    private void damping() {
         omegaMax = springs.omegaMaxBound(t, supportSprings, supportK);
         double beta = 2 * p.highDampingRatio() / omegaMax;
         springs.addTo(t, beta);
