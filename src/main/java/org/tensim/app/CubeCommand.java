@@ -3,6 +3,8 @@ package org.tensim.app;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.tensim.experiment.CubeReport;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.scene.CubeParameters;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -15,6 +17,9 @@ import picocli.CommandLine.Option;
             "and prints the summary as the last line (JSON). Defaults: docs/cube.md."})
 public final class CubeCommand implements Callable<Integer> {
     private static final CubeParameters D = CubeParameters.paper();
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
     Path out = Path.of("out", "cube");
@@ -53,11 +58,24 @@ public final class CubeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        CubeParameters p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt,
-                duration);
-        CubeReport report = CubeReport.run(p, integrator, out);
-        System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
-        System.out.println(report.summaryLine());
-        return 0;
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--duration", duration, "s");
+        CommandChecks.stepFits(spec, "--dt", dt, "--duration", duration);
+        CubeParameters p;
+        try {
+            p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt, duration);
+            org.tensim.solver.integrators.Integrators.create(integrator);
+        } catch (IllegalArgumentException e) {
+            throw CommandChecks.usage(spec, e.getMessage());
+        }
+        return RunFolder.run(out, "cube", CubeReport.OUTPUTS, run -> {
+            CubeReport report = CubeReport.run(p, integrator, run);
+            System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
+            if (report.status() == RunStatus.DIVERGED) {
+                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged") + " (the CSV ends at the last"
+                        + " finite step; the chart is marked DIVERGED)");
+            }
+            System.out.println(report.summaryLine());
+        });
     }
 }

@@ -7,9 +7,11 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Vec3;
@@ -45,10 +47,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double thicknessMm = 2.5;
 
     @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
-    Path boxes = DiaphragmSetup.DEFAULT_BOXES;
+            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
+                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
+                    + " rib cage, placed on the generated dome)")
+    Path boxes;
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s; the breathing figures need one"
+            + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
     double seconds = 4;
 
     @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
@@ -167,9 +172,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
             ie.setTolerance(cgTolerance);
         }
-        if (threads < 0) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--threads must be 0 (automatic) or more, got " + threads);
+        CommandChecks.threads(spec, "--threads", threads, true);
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--seconds", seconds, "s");
+        if (dt != 0) {
+            CommandChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
         }
         MeshUnits u = MeshUnits.parse(units);
         DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
@@ -184,16 +191,38 @@ public final class DiaphragmCommand implements Callable<Integer> {
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
         DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
+        final DiaphragmParameters params = p;
         if (realtimeStudy) {
-            Map<String, Object> s = RealTimeStudy.run(boxes, p, cycle, controls, seconds, out, System.out);
-            System.out.println(Json.line(s));
-            return 0;
+            return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
+                registerAll(run, REALTIME_OUTPUTS);
+                Map<String, Object> s = RealTimeStudy.run(boxes, params, cycle, controls, seconds, out, System.out);
+                System.out.println(Json.line(run.finish(RunStatus.OK, s)));
+            });
         }
         if (resolutionStudy) {
-            Map<String, Object> s = ResolutionStudy.run(boxes, p, cycle, controls, o, out, System.out);
-            System.out.println(Json.line(s));
-            return 0;
+            return RunFolder.run(out, "diaphragm --resolution-study", RESOLUTION_OUTPUTS, run -> {
+                registerAll(run, RESOLUTION_OUTPUTS);
+                Map<String, Object> s = ResolutionStudy.run(boxes, params, cycle, controls, o, out, System.out);
+                System.out.println(Json.line(run.finish(RunStatus.OK, s)));
+            });
         }
+        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, cleaning,
+                lines, cycle, controls, o, chosen));
+    }
+
+    /** Outputs of the studies, written by the study classes themselves into --out. */
+    static final List<String> REALTIME_OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
+    static final List<String> RESOLUTION_OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json");
+
+    private static void registerAll(RunFolder run, List<String> names) throws java.io.IOException {
+        for (String n : names) {
+            run.file(n);
+        }
+    }
+
+    private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, MeshCleaner.Options cleaning,
+            List<ActionLines.Line> lines, BreathingCycle cycle, DiaphragmControls controls, DiaphragmReport.Options o,
+            org.tensim.solver.Integrator chosen) throws Exception {
         DiaphragmSetup.Built built;
         if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
             built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls);
@@ -206,9 +235,14 @@ public final class DiaphragmCommand implements Callable<Integer> {
         int n = threads > 0 ? threads
                 : built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
                         ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
-        Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, n, out, System.out);
+        Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
+        Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
+                fields);
+        if (fields.containsKey("diverged")) {
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
+                    + out + ", figures marked DIVERGED)");
+        }
         System.out.println(Json.line(summary));
-        return 0;
     }
 
     private Vec3 vector(String option, double[] v, double scale) {

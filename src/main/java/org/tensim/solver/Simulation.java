@@ -27,7 +27,8 @@ import org.tensim.model.Topology;
  * the state's estimate is reported ({@link #setStepLimitSeverity}, default
  * {@link Severity#WARN}; {@link Severity#ERROR} throws
  * {@link IllegalArgumentException} naming the estimate).</li>
- * <li>Divergence: a non-finite position or velocity, or the kinetic + spring
+ * <li>Divergence: a non-finite position or velocity, a runaway node (checked every
+ * step, {@link #setRunawayLimit}), or the kinetic + spring
  * energy growing more than {@link #energyGrowthLimit()} times between checks made
  * every {@link #energyCheckInterval()} steps, throws
  * {@link SimulationDivergedException} naming the step, the time, the worst node
@@ -178,6 +179,20 @@ public final class Simulation {
         return monitor.energyCheckInterval();
     }
 
+    /**
+     * Speed, in scene sizes per step, beyond which a node has run away and the run is stopped
+     * as diverged at that very step (checked every step, with the finiteness check);
+     * {@link Double#POSITIVE_INFINITY} leaves only the finiteness and distance checks. Default 10.
+     */
+    public Simulation setRunawayLimit(double sizesPerStep) {
+        monitor.setRunawayLimit(sizesPerStep);
+        return this;
+    }
+
+    public double runawayLimit() {
+        return monitor.runawayLimit();
+    }
+
     /** The state's critical time step estimate ({@link SystemState#criticalTimeStep()}). */
     public CriticalTimeStep criticalTimeStep() {
         return state.criticalTimeStep();
@@ -239,7 +254,7 @@ public final class Simulation {
 
         time += dt;
         steps++;
-        monitor.check(state, forces, steps, time, criticalStepOfIntegrator);
+        monitor.check(state, forces, steps, time, dt, criticalStepOfIntegrator);
         long t4 = System.nanoTime();
         profile.record(Stage.CHECK, t4 - t3);
 

@@ -1,5 +1,7 @@
 package org.tensim.view;
 
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.Body;
 import java.util.ArrayList;
 import java.util.List;
 import org.jogamp.java3d.Appearance;

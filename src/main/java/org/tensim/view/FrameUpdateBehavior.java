@@ -1,5 +1,6 @@
 package org.tensim.view;
 
+import org.tensim.scene.tunable.FrameBuffer;
 import java.util.Iterator;
 import java.util.List;
 import org.jogamp.java3d.Behavior;

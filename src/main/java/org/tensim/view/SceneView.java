@@ -1,5 +1,7 @@
 package org.tensim.view;
 
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.Body;
 import java.awt.AWTException;
 import java.awt.GraphicsConfiguration;
 import java.awt.Point;

@@ -13,7 +13,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
 import picocli.CommandLine;
 
@@ -45,13 +45,27 @@ class DiaphragmCommandTest {
         return new String[] {String.valueOf(code), out.toString(), err.toString()};
     }
 
-    /** A generated mesh of the given rings in the test folder; skips without rib boxes or AWT (figures). */
+    /** A generated mesh of the given rings in the test folder; skips without AWT (figures). */
     private Path coarseMesh(int rings) {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
         Path mesh = dir.resolve("coarse-" + rings + ".obj");
         assertEquals("0", run("diaphragm-mesh", "--rings", String.valueOf(rings), "--out", mesh.toString())[0]);
         return mesh;
+    }
+
+    @Test
+    void aRunShorterThanAnInspirationSucceedsAndSaysTheBreathingWasNotMeasured() throws Exception {
+        Path mesh = coarseMesh(6);
+        Path out = dir.resolve("short");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "0.2", "--out", out.toString());
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertFalse(s.containsKey("dome_excursion_mm"), s.toString());
+        assertTrue(String.valueOf(s.get("breathing")).startsWith("not measured: the run of 0.2 s"), s.toString());
+        assertEquals(0.2, ((Number) s.get("simulated_s")).doubleValue(), 1e-3);
+        // the displacement CSV holds the end of the run: a header and one row per diaphragm node
+        int nodes = ((Number) s.get("diaphragm_nodes")).intValue();
+        assertEquals(1 + nodes, Files.readAllLines(out.resolve("displacements.csv")).size());
     }
 
     @Test
@@ -121,7 +135,6 @@ class DiaphragmCommandTest {
 
     @Test
     void aDivergingRunStopsWithOneLineAndKeepsWhatItWrote() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         assumeTrue(awtUsable(), "AWT cannot start (DISPLAY set but no X server answers)");
         Path mesh = dir.resolve("coarse.obj");
         run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());
@@ -132,6 +145,7 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("diverged") && r[2].contains("reduce the time step"), r[2]);
         assertFalse(r[2].contains("\tat "), r[2]);
         Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertEquals("diverged", s.get("status"));
         assertTrue(s.containsKey("diverged"));
         assertTrue(Files.size(out.resolve("probe.csv")) > 0);
         assertTrue(Files.isRegularFile(out.resolve("vtk/diaphragm_0000.vtk")));
@@ -139,13 +153,12 @@ class DiaphragmCommandTest {
 
     @Test
     void aSingleSurfaceMeshIsOffset() throws Exception {
-        assumeTrue(Files.isRegularFile(DiaphragmSetup.DEFAULT_BOXES), "rib boxes absent");
         Path mesh = dir.resolve("upper.obj");
         org.tensim.io.mesh.ObjWriter.write(mesh, org.tensim.scene.diaphragm.DoubleDomeGenerator.upperSurface(
                 org.tensim.scene.diaphragm.DoubleDomeGenerator.Shape.adult().withRings(8)),
                 org.tensim.io.mesh.MeshUnits.MM, List.of(), 4);
         DiaphragmSetup.Built b = DiaphragmSetup.load(mesh, org.tensim.io.mesh.MeshUnits.MM, 0.002,
-                DiaphragmSetup.DEFAULT_BOXES, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
+                null, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
                 org.tensim.scene.diaphragm.BreathingCycle.quiet(),
                 new org.tensim.scene.diaphragm.DiaphragmControls(1, 2600));
         assertEquals(DiaphragmSetup.SurfaceMode.OFFSET, b.mode());
@@ -161,14 +174,14 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("bad.obj, line 4") && r[2].contains("expected 1..3"), r[2]);
         assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
         r = run("diaphragm", "--units", "inch");
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0], "a bad option value is a usage error");
         assertTrue(r[2].contains("mesh units must be 'mm' or 'm', got 'inch'"), r[2]);
         r = run("diaphragm", "--rib-amplitude", "5");
         assertTrue(r[2].contains("rib amplitude must be at most 3"), r[2]);
         r = run("diaphragm", "--cg-tolerance", "1e-3");
         assertTrue(r[2].contains("--cg-tolerance applies to --integrator implicit-euler only, not rk2"), r[2]);
         r = run("diaphragm", "--threads", "-1");
-        assertTrue(r[2].contains("--threads must be 0 (automatic) or more, got -1"), r[2]);
+        assertTrue(r[2].contains("--threads -1: expected 0 (automatic) or 1 to"), r[2]);
         r = run("diaphragm", "--integrator", "implicit-euler", "--cg-tolerance", "-1");
         assertTrue(r[2].contains("-1"), r[2]);
         assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);

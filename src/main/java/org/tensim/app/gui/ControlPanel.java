@@ -17,7 +17,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JRadioButton;
 import javax.swing.JToggleButton;
-import org.tensim.view.TunableParameter;
+import org.tensim.scene.tunable.TunableParameter;
 
 /**
  * The control panel: transport (play, pause, single step, reset), the scene's

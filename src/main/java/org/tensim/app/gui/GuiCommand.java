@@ -6,8 +6,8 @@ import java.nio.file.StandardCopyOption;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.ViewScene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -42,8 +42,10 @@ public final class GuiCommand implements Callable<Integer> {
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame (default: ${DEFAULT-VALUE})")
-    Path boxes = GuiScenes.Source.defaults().boxes();
+            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
+                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
+                    + " rib cage, placed on the generated dome)")
+    Path boxes;
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
     Path preset;
@@ -89,10 +91,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // Bad names and files fail here, before any window.
         SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
-        if (java.awt.GraphicsEnvironment.isHeadless()) {
-            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
-                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
-        }
+        requireDisplay();
         setScripted(screenshot != null);
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
@@ -104,6 +103,24 @@ public final class GuiCommand implements Callable<Integer> {
         }
         w.awaitClosed();
         return 0;
+    }
+
+    /**
+     * Fails with one line when there is no display or it cannot be reached (AWT's
+     * AWTError would otherwise surface as a long stack trace from the first window).
+     */
+    static void requireDisplay() {
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
+                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
+        }
+        try {
+            java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();
+        } catch (java.awt.AWTError | java.awt.HeadlessException | UnsatisfiedLinkError e) {
+            throw new IllegalStateException("cannot reach the display DISPLAY='" + System.getenv("DISPLAY")
+                    + "' (" + e.getMessage() + "); start the X server, fix DISPLAY, or unset it so that ./tensim gui"
+                    + " starts Xvfb");
+        }
     }
 
     /**
@@ -127,7 +144,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // The first scene was made with the defaults: make it again if what was restored needs a new one.
         boolean remake = factory.hasTendonChoice() && !tuning.tensegrityTendon();
-        for (org.tensim.view.TunableParameter p : first.parameters()) {
+        for (org.tensim.scene.tunable.TunableParameter p : first.parameters()) {
             remake |= p.restarts() && tuning.get(p.key()) != p.defaultValue();
         }
         if (remake) {

@@ -3,12 +3,11 @@ package org.tensim.app.gui;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.DiaphragmViewScene;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.SceneFactory;
 
 /** The scenes the GUI can show, by name. */
 public final class GuiScenes {
@@ -22,12 +21,12 @@ public final class GuiScenes {
      * @param units       units of the mesh file, {@code mm} or {@code m}
      * @param thicknessMm thickness given to a single-surface mesh, mm
      * @param rings       resolution of the generated double dome, rings per face
-     * @param boxes       rib and sternum boxes file
+     * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
-        /** The defaults: generated dome at the interactive resolution, the project's boxes. */
+        /** The defaults: generated dome at the interactive resolution, the project's parametric rib cage. */
         public static Source defaults() {
-            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, DiaphragmSetup.DEFAULT_BOXES);
+            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, null);
         }
     }
 

@@ -9,9 +9,7 @@ import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.concurrent.CountDownLatch;
 import javax.imageio.ImageIO;
 import javax.swing.JFileChooser;
@@ -28,11 +26,11 @@ import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.solver.SimulationDivergedException;
-import org.tensim.view.FrameBuffer;
-import org.tensim.view.ProbeRecorder;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.view.SceneView;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * The main window: the Java3D view, the control panel, the live probe chart and
@@ -300,17 +298,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     void saveScreenshot(Path file) throws Exception {
         Point p = frame.getLocationOnScreen();
         BufferedImage img = new Robot().createScreenCapture(new Rectangle(p, frame.getSize()));
-        Path abs = file.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = Files.createTempFile(abs.getParent(), abs.getFileName().toString(), ".tmp");
-        try {
-            if (!ImageIO.write(img, "png", tmp.toFile())) {
+        org.tensim.io.OutputFiles.writeAtomically(file, out -> {
+            if (!ImageIO.write(img, "png", out)) {
                 throw new IOException("no PNG writer available");
             }
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        });
     }
 
     private void saveLastUsed() {

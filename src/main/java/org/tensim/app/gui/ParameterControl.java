@@ -9,7 +9,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JTextField;
-import org.tensim.view.TunableParameter;
+import org.tensim.scene.tunable.TunableParameter;
 
 /**
  * One row of the control panel: the parameter's label and unit, a slider over its

@@ -10,8 +10,8 @@ import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
-import org.tensim.view.Body;
-import org.tensim.view.ProbeRecorder;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.ProbeRecorder;
 
 /**
  * Live XChart of each body's probe displacement (m) against simulated time (s),

@@ -9,11 +9,11 @@ import java.util.function.Supplier;
 import org.tensim.solver.CriticalTimeStep;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
-import org.tensim.view.Body;
-import org.tensim.view.FrameBuffer;
-import org.tensim.view.ProbeRecorder;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * Runs a scene's simulations on their own thread. Everything that changes the

@@ -53,7 +53,7 @@ final class StatusBar extends JPanel {
             double sps = Math.max(0, steps - lastSteps) / wall;
             double rtf = Math.max(0, sim - lastSim) / wall;
             double fps = (framesRendered - lastFrames) / wall;
-            String h = org.tensim.view.TunableParameter.format(r.timeStep());
+            String h = org.tensim.scene.tunable.TunableParameter.format(r.timeStep());
             if (r.isPlaying()) {
                 numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   %,.0f steps/s   |   real-time x%.2f   |   "
                         + "%.0f fps   |   h = %s s", sim, sps, rtf, fps, h));
@@ -89,7 +89,7 @@ final class StatusBar extends JPanel {
         double crit = r.criticalTimeStep();
         if (r.timeStep() > crit) {
             b.append(String.format(Locale.ROOT, "Time step %s s exceeds the critical estimate %s s for this integrator. ",
-                    org.tensim.view.TunableParameter.format(r.timeStep()), org.tensim.view.TunableParameter.format(crit)));
+                    org.tensim.scene.tunable.TunableParameter.format(r.timeStep()), org.tensim.scene.tunable.TunableParameter.format(crit)));
         }
         if (r.unconvergedProjections() > 0) {
             b.append(r.unconvergedProjections()).append(" steps with rigid links above tolerance. ");

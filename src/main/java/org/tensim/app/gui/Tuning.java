@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.tensim.view.TunableParameter;
+import org.tensim.scene.tunable.TunableParameter;
 
 /**
  * The values the user has tuned, and the one way they reach the simulation.

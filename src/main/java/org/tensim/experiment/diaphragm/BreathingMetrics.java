@@ -33,15 +33,13 @@ public final class BreathingMetrics implements StepListener {
     private double apexAtInsp = Double.NaN;
 
     /**
-     * @param runSeconds length of the run, s (at least the inspiration time Ti)
+     * @param runSeconds length of the run, s (> 0); the breathing is measured only when the run reaches
+     *                   end-inspiration, at the inspiration time Ti ({@link #complete()})
      */
     public BreathingMetrics(DiaphragmScene scene, double runSeconds) {
         this.scene = scene;
         double period = scene.cycle().periodS();
-        if (runSeconds < scene.cycle().inspirationS()) {
-            throw new IllegalArgumentException("run of " + runSeconds + " s is shorter than one inspiration ("
-                    + scene.cycle().inspirationS() + " s); expected at least that to measure the breathing");
-        }
+        org.tensim.model.Check.positive("run length", "s", runSeconds);
         this.start = measuredCycleStart(runSeconds, period);
         this.inspirationEnd = start + scene.cycle().inspirationS();
         this.end = start + period;

@@ -1,5 +1,6 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -11,7 +12,10 @@ import java.util.Map;
 import org.knowm.xchart.XYChart;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
-import org.tensim.io.Json;
+import org.tensim.io.Progress;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunSignals;
+import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.VtkSeriesWriter;
 import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.DiaphragmScene;
@@ -37,13 +41,13 @@ public final class DiaphragmReport {
     /**
      * Run settings.
      *
-     * @param seconds         simulated time, s (at least one inspiration)
+     * @param seconds         simulated time, s (the breathing figures need at least one inspiration)
      * @param dtS             time step, s; 0 for the scene's recommended RK2 step
      * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
      * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
      * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
      * @param csvTimes        times of the displacement CSV, s; null for end-inspiration and the end of the
-     *                        measured cycle
+     *                        measured cycle (those within the run; the end of a run shorter than Ti)
      */
     public record Options(double seconds, double dtS, int vtkPerCycle, double vectorScale, double vectorIntervalS,
             double[] csvTimes) {
@@ -63,9 +67,16 @@ public final class DiaphragmReport {
     private DiaphragmReport() {
     }
 
-    /** Runs and writes everything to {@code out}; returns the summary (also in summary.json). */
+    /** The files and folders the diaphragm command writes into its folder (docs/outputs.md). */
+    public static final List<String> OUTPUTS = List.of("sagittal.png", "axial.png", "sagittal-cycle.png",
+            "axial-cycle.png", "breathing.png", "displacements.csv", "probe.csv", "vtk");
+
+    /**
+     * Runs and writes everything to {@code out}, a run folder of its own; returns the summary
+     * (also in summary.json, with its status).
+     */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Path out, PrintStream log)
-            throws IOException {
+            throws Exception {
         return run(built, o, "rk2", out, log);
     }
 
@@ -74,20 +85,27 @@ public final class DiaphragmReport {
      * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended RK2 step is used.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
-            PrintStream log) throws IOException {
-        return run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1, out, log);
+            PrintStream log) throws Exception {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        RunFolder.run(out, "diaphragm", OUTPUTS, folder -> {
+            Map<String, Object> s = run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1,
+                    folder, log);
+            summary.putAll(folder.finish(s.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK, s));
+        });
+        return summary;
     }
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, String, Path, PrintStream)} with an integrator
      * instance (e.g. an implicit Euler with its own CG tolerance) on {@code threads} threads (>= 1; the
      * spring pass, RK2's and symplectic Euler's node loops and the link sweeps are shared among them,
-     * see {@link org.tensim.solver.parallel.Parallelism}).
+     * see {@link org.tensim.solver.parallel.Parallelism}). Writes every output but the summary into
+     * the run folder and returns the summary's fields; a diverged run's have "diverged" (the message)
+     * and its figures are marked DIVERGED. The caller finishes the folder.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o,
-            org.tensim.solver.Integrator chosen, int threads, Path out, PrintStream log) throws IOException {
+            org.tensim.solver.Integrator chosen, int threads, RunFolder out, PrintStream log) throws IOException {
         Check.atLeast("thread count", threads, 1);
-        Files.createDirectories(out);
         Simulation sim = built.scene().newSimulation();
         sim.setIntegrator(chosen);
         try (org.tensim.solver.parallel.Parallelism par = threads > 1
@@ -96,45 +114,58 @@ public final class DiaphragmReport {
         }
     }
 
+    /**
+     * The run in named steps: plan the instants whose positions are kept, step and sample, sum up,
+     * write the files.
+     */
     private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
-            long[] workers, Path out, PrintStream log) throws IOException {
+            long[] workers, RunFolder out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
-        org.tensim.solver.Integrator chosen = sim.integrator();
-        String integrator = chosen.name();
         double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
-        double start = metrics.measuredCycleStart();
-        double ti = scene.cycle().inspirationS();
-        double period = scene.cycle().periodS();
+        Snapshots snapshots = Snapshots.plan(scene, o, metrics.measuredCycleStart());
+        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.file("vtk"), "diaphragm",
+                scene.allTriangles(), java.util.Arrays.copyOf(scene.labels(), scene.simulatedNodes()), "tissue") : null;
+        Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out, workers);
+        Map<String, Object> summary = new LinkedHashMap<>();
+        describeScene(summary, built);
+        if (metrics.complete()) {
+            describeBreathing(summary, metrics);
+        } else {
+            summary.put("breathing", "not measured: the run of " + o.seconds() + " s ends before end-inspiration, "
+                    + metrics.inspirationEnd() + " s");
+        }
+        describeRun(summary, built, o, sim, threads, dt, metrics.measuredCycleStart(), stepping);
+        writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
+        String mark = stepping.diverged() == null ? "" : String.format(java.util.Locale.ROOT,
+                "DIVERGED at t = %.6g s (values after it are not physical): ", stepping.divergedAtS());
+        figures(out, scene, snapshots.kept, snapshots.rest, o, mark);
+        breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
+        if (log != null) {
+            log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
+                    + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
+        }
+        return summary;
+    }
+
+    /** What the stepping loop measured: wall and CPU time of the steps, and the divergence message if any. */
+    private record Stepping(double wallS, double cpuS, String diverged, double divergedAtS) {
+    }
+
+    /**
+     * Steps to the end, sampling as it goes: snapshots, VTK frames, the probe CSV every 5 ms, the
+     * breathing metrics after every step. Stops early, with the message, when the run diverges.
+     */
+    private static Stepping step(DiaphragmScene scene, Simulation sim, Options o, double dt,
+            BreathingMetrics metrics, Snapshots snapshots, VtkSeriesWriter vtk, RunFolder out, long[] workers)
+            throws IOException {
         int simulated = scene.simulatedNodes();
         int nd = scene.diaphragmNodes();
-        int[] labels = scene.labels();
-
-        // Instants whose positions are kept: the vector pair at mid-inspiration, end-exp/insp, CSV times.
-        double vecA = start + 0.5 * ti - 0.5 * o.vectorIntervalS();
-        double vecB = vecA + o.vectorIntervalS();
-        double[] csvTimes = o.csvTimes() != null ? o.csvTimes().clone()
-                : new double[] {start + ti, Math.min(o.seconds(), start + period)};
-        for (double t : csvTimes) {
-            if (!(t >= 0 && t <= o.seconds())) {
-                throw new IllegalArgumentException("CSV time " + t + " s is outside the run [0, " + o.seconds()
-                        + "] s");
-            }
-        }
-        List<Double> wanted = new ArrayList<>(List.of(vecA, vecB, start, start + ti));
-        for (double t : csvTimes) {
-            wanted.add(t);
-        }
-        double[][] kept = new double[wanted.size()][];
-        double[] keptTime = new double[wanted.size()];
-
-        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
-                scene.allTriangles(), java.util.Arrays.copyOf(labels, simulated), "tissue") : null;
-        double vtkEvery = o.vtkPerCycle() > 0 ? period / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
+        int apex = scene.apexNode();
+        double vtkEvery = o.vtkPerCycle() > 0 ? scene.cycle().periodS() / o.vtkPerCycle() : Double.POSITIVE_INFINITY;
         double nextVtk = 0;
         double[] rest = java.util.Arrays.copyOf(sim.state().x0, 3 * simulated);
-
-        Map<String, Object> summary = new LinkedHashMap<>();
+        snapshots.rest = rest;
         long stepNanos = 0;
         // CPU time of this thread as well as wall time: on a shared machine the wall time also
         // counts the time the thread waited for a core.
@@ -142,20 +173,16 @@ public final class DiaphragmReport {
         boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
         long cpuNanos = 0;
         String diverged = null;
-        int apex = scene.apexNode();
-        try (CsvWriter probe = new CsvWriter(out.resolve("probe.csv"), List.of("t_s", "breathing_level",
-                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20)) {
+        double divergedAt = Double.NaN;
+        try (CsvWriter probe = out.csv("probe.csv", List.of("t_s", "breathing_level",
+                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20);
+                Progress progress = Progress.start("diaphragm", o.seconds())) {
             double probeEvery = 0.005;
             double nextProbe = 0;
             metrics.begin(sim);
             while (true) {
                 double t = sim.time();
-                for (int i = 0; i < wanted.size(); i++) {
-                    if (kept[i] == null && t >= wanted.get(i) - 0.5 * dt) {
-                        kept[i] = java.util.Arrays.copyOf(sim.state().x, 3 * simulated);
-                        keptTime[i] = t;
-                    }
-                }
+                snapshots.offer(t, dt, sim.state().x, simulated);
                 if (vtk != null && t >= nextVtk - 0.5 * dt) {
                     vtk.frame(t, java.util.Arrays.copyOf(sim.state().x, 3 * simulated), rest);
                     nextVtk += vtkEvery;
@@ -169,6 +196,8 @@ public final class DiaphragmReport {
                 if (t >= o.seconds() - 0.5 * dt) {
                     break;
                 }
+                RunSignals.checkStop();
+                progress.update(t);
                 long c0 = cpuTimed ? cpu.getCurrentThreadCpuTime() : 0;
                 long t0 = System.nanoTime();
                 sim.step(dt);
@@ -178,17 +207,22 @@ public final class DiaphragmReport {
             }
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();
+            divergedAt = e.timeSeconds();
         }
-        double wall = stepNanos / 1e9;
         for (int w = 0; w < workers.length && cpuTimed; w++) {
             // Worker threads exist for this run only: their whole CPU time is the steps' (spinning included).
             cpuNanos += Math.max(0, cpu.getThreadCpuTime(workers[w]));
         }
-        double cpuS = cpuTimed ? cpuNanos / 1e9 : Double.NaN;
+        return new Stepping(stepNanos / 1e9, cpuTimed ? cpuNanos / 1e9 : Double.NaN, diverged, divergedAt);
+    }
+
+    /** The scene's make-up: source, sizes, attachments, tendon, thickness. */
+    private static void describeScene(Map<String, Object> summary, DiaphragmSetup.Built built) {
+        DiaphragmScene scene = built.scene();
         summary.put("source", built.source());
         summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
         summary.put("nodes", scene.topology().nodeCount());
-        summary.put("diaphragm_nodes", nd);
+        summary.put("diaphragm_nodes", scene.diaphragmNodes());
         summary.put("anchor_nodes", scene.anchorNodes());
         summary.put("springs", scene.topology().springs().size());
         summary.put("rigid_links", scene.topology().rigidLinks().size());
@@ -198,19 +232,30 @@ public final class DiaphragmReport {
         summary.put("attached_to_spine", scene.attachedToSpine());
         summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
-        if (metrics.complete()) {
-            summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-            summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-            summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-            summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-            summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-            summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-            summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-            summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        }
+    }
+
+    /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
+    private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
+        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
+        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
+        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
+        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
+        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
+        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
+        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+    }
+
+    /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */
+    private static void describeRun(Map<String, Object> summary, DiaphragmSetup.Built built, Options o,
+            Simulation sim, int threads, double dt, double measuredCycleStart, Stepping stepping) {
+        DiaphragmScene scene = built.scene();
+        org.tensim.solver.Integrator chosen = sim.integrator();
+        double wall = stepping.wallS();
+        double cpuS = stepping.cpuS();
         summary.put("simulated_s", round(sim.time(), 6));
-        summary.put("measured_cycle_start_s", start);
-        summary.put("integrator", integrator);
+        summary.put("measured_cycle_start_s", measuredCycleStart);
+        summary.put("integrator", chosen.name());
         summary.put("threads", threads);
         if (chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie) {
             summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
@@ -229,49 +274,37 @@ public final class DiaphragmReport {
                 .getSystemLoadAverage(), 2));
         summary.put("rib_amplitude", scene.controls().ribAmplitude());
         summary.put("muscle_force_pa", scene.controls().muscleAmplitudePa());
-        summary.put("breathing_period_s", period);
+        summary.put("breathing_period_s", scene.cycle().periodS());
         summary.put("unconverged_projections", sim.unconvergedProjections());
         if (built.meshReport() != null) {
             summary.put("mesh", built.meshReport().toMap());
         }
-        if (diverged != null) {
-            summary.put("diverged", diverged);
+        if (stepping.diverged() != null) {
+            summary.put("diverged", stepping.diverged());
+            summary.put("diverged_at_s", stepping.divergedAtS());
         }
-
-        writeDisplacements(out.resolve("displacements.csv"), csvTimes, wanted, kept, keptTime, rest, labels, nd);
-        figures(out, scene, kept, rest, o);
-        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
-        Json.write(out.resolve("summary.json"), summary);
-        if (diverged != null) {
-            throw new IllegalStateException(diverged + " (outputs so far are in " + out + ")");
-        }
-        if (log != null) {
-            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
-                    + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
-        }
-        return summary;
     }
 
-    private static void writeDisplacements(Path file, double[] csvTimes, List<Double> wanted, double[][] kept,
-            double[] keptTime, double[] rest, int[] labels, int nd) throws IOException {
+    private static void writeDisplacements(Path file, Snapshots snapshots, int[] labels, int nd) throws IOException {
+        double[] rest = snapshots.rest;
         try (CsvWriter w = new CsvWriter(file, List.of("t_s", "node", "tissue", "x_m", "y_m", "z_m", "ux_m", "uy_m",
                 "uz_m"), 1000)) {
-            for (int c = 0; c < csvTimes.length; c++) {
+            for (int c = 0; c < snapshots.csvTimes.length; c++) {
                 int idx = 4 + c;
-                if (kept[idx] == null) {
+                if (snapshots.kept[idx] == null) {
                     continue; // the run stopped before this time
                 }
-                double[] x = kept[idx];
+                double[] x = snapshots.kept[idx];
                 for (int i = 0; i < nd; i++) {
-                    w.row(keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], x[3 * i] - rest[3 * i],
-                            x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
+                    w.row(snapshots.keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2],
+                            x[3 * i] - rest[3 * i], x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
                 }
             }
         }
     }
 
-    private static void figures(Path out, DiaphragmScene scene, double[][] kept, double[] rest, Options o)
-            throws IOException {
+    private static void figures(RunFolder out, DiaphragmScene scene, double[][] kept, double[] rest, Options o,
+            String mark) throws IOException {
         int nd = scene.diaphragmNodes();
         int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
         int apex = scene.apexNode();
@@ -279,20 +312,20 @@ public final class DiaphragmReport {
         double zPlane = rest[3 * apex + 2] - 0.04;
         double band = 2 * meanEdge(scene);
         if (kept[0] != null && kept[1] != null) {
-            SliceFigures.write(out.resolve("sagittal.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal.png"), mark + String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
                     1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
                     o.vectorScale());
-            SliceFigures.write(out.resolve("axial.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial.png"), mark + String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
                     1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
                     o.vectorScale());
         }
         if (kept[2] != null && kept[3] != null) {
-            SliceFigures.write(out.resolve("sagittal-cycle.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal-cycle.png"), mark + String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
                     kept[3], upper, 0, xPlane, band, 1);
-            SliceFigures.write(out.resolve("axial-cycle.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial-cycle.png"), mark + String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
                     upper, 2, zPlane, band, 1);
         }
@@ -309,7 +342,7 @@ public final class DiaphragmReport {
         return s / Math.max(n, 1);
     }
 
-    private static void breathingChart(Path png, Path probeCsv) throws IOException {
+    private static void breathingChart(Path png, Path probeCsv, double divergedAt) throws IOException {
         List<String> lines = Files.readAllLines(probeCsv);
         int n = lines.size() - 1;
         if (n < 2) {
@@ -332,6 +365,9 @@ public final class DiaphragmReport {
         Charts.addLine(c, "apex z displacement", t, dz);
         Charts.addLine(c, "transverse extent change", t, ex);
         Charts.addLine(c, "antero-posterior extent change", t, ey);
+        if (!Double.isNaN(divergedAt)) {
+            Charts.markDiverged(c, divergedAt);
+        }
         Charts.savePng(c, png);
     }
 

@@ -1,5 +1,6 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.io.PrintStream;

@@ -145,4 +145,17 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
                 structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM,
                 bendingFactor, poissonRatio, model);
     }
+
+    /** The same parameters with the muscle's Young's modulus, Pa, and the tendon's scaled to keep its ratio to it. */
+    public DiaphragmParameters withTissueYoung(double musclePa) {
+        Check.positive("muscle Young's modulus", "Pa", musclePa);
+        return withMuscleYoung(musclePa).withTendonYoung(tendonYoungPa * musclePa / muscleYoungPa);
+    }
+
+    public DiaphragmParameters withTendonYoung(double pa) {
+        return new DiaphragmParameters(densityKgPerM3, muscleYoungPa, pa, highDampingRatio, viscousPerS,
+                tendonAreaFraction, tendonNormal, tendonPoint, attachThresholdM, structureStiffness,
+                structureNodeMassKg, attachStiffness, ribQuietFraction, ribTranslationM, abdominalSupportPaPerM, bendingFactor,
+                poissonRatio, tissueModel);
+    }
 }

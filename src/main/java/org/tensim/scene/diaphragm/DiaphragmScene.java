@@ -73,8 +73,12 @@ public final class DiaphragmScene {
     private final double tendonAreaFraction;
     private final int firstAnchor;
     private final double addedMass;
+    private final Map<String, double[]> boxes;
+    private final DiaphragmParameters parameters;
 
-    private DiaphragmScene(DiaphragmSceneBuilder.Parts b) {
+    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes, DiaphragmParameters p) {
+        this.boxes = boxes;
+        this.parameters = p;
         this.topology = b.topology();
         this.surfaces = b.surfaces();
         this.labels = b.labels();
@@ -104,7 +108,48 @@ public final class DiaphragmScene {
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines) {
         return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, p, cycle, controls,
-                lines == null ? defaultActionLines(surfaces) : lines));
+                lines == null ? defaultActionLines(surfaces) : lines), boxes, p);
+    }
+
+    /**
+     * The same scene built again, by the same rules as {@link #build}, with other parameters: same
+     * surfaces, cage, action lines, breathing cycle and (live) controls. Parameters that set only
+     * constants (moduli, damping) give the same topology, node for node and spring for spring, so a
+     * running simulation can take the new scene's constants ({@link #copyConstantsTo}).
+     */
+    public DiaphragmScene rebuiltWith(DiaphragmParameters p) {
+        return build(surfaces, boxes, p, cycle, controls, actionLines.lines());
+    }
+
+    /** The parameters this scene was built with. */
+    public DiaphragmParameters parameters() {
+        return parameters;
+    }
+
+    /**
+     * Gives the state of a running simulation the spring stiffnesses, spring damping and viscous
+     * damping of topology {@code to}: that of a scene rebuilt from the running one with other
+     * constants ({@link #rebuiltWith}), or a copy of it made the same way as the running topology
+     * (e.g. with the rigid links as springs). Positions, velocities and time are kept.
+     *
+     * @throws IllegalArgumentException when the two topologies do not have the same springs
+     */
+    public static void copyConstantsTo(org.tensim.solver.SystemState state, Topology to) {
+        List<org.tensim.model.Spring> springs = to.springs();
+        if (springs.size() != state.springCount()) {
+            throw new IllegalArgumentException("the rebuilt scene has " + springs.size() + " springs, the running"
+                    + " simulation " + state.springCount() + ": only constants may change, not the topology");
+        }
+        for (int i = 0; i < springs.size(); i++) {
+            org.tensim.model.Spring sp = springs.get(i);
+            if (sp.a() != state.springA[i] || sp.b() != state.springB[i]) {
+                throw new IllegalArgumentException("spring " + i + " joins " + sp.a() + "-" + sp.b()
+                        + " in the rebuilt scene, " + state.springA[i] + "-" + state.springB[i] + " in the running one");
+            }
+            state.setSpringStiffness(i, sp.stiffness());
+            state.setSpringDamping(i, sp.damping());
+        }
+        state.setViscousDamping(to.viscousDamping());
     }
 
     /**

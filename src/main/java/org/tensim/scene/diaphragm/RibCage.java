@@ -10,7 +10,8 @@ import org.tensim.model.Vec3;
 
 /**
  * Simplified ribs, costal cartilage and sternum placed with axis-aligned boxes
- * (BodyParts3D frame: x = patient's left, y = posterior, z = superior; metres).
+ * (BodyParts3D frame: x = patient's left, y = posterior, z = superior; metres): the
+ * project's own ({@link ParametricRibCage}, the default) or BodyParts3D's.
  *
  * <p><b>Ribs</b> are rigid: each is a polyline of {@link #NODES_PER_RIB} driven
  * nodes along an arc inside its box, from the head (medial, posterior, top of the
@@ -49,6 +50,10 @@ public final class RibCage {
     public static final int NODES_PER_RIB = 10;
     /** Nodes along the sternum. */
     public static final int STERNUM_NODES = 8;
+    /** The sternum's top node lies this fraction of its box's depth in front of the box's back face. */
+    public static final double STERNUM_TOP_DEPTH_FRACTION = 0.25;
+    /** The sternum's bottom node (xiphoid) lies this fraction of its box's depth behind the box's front face. */
+    public static final double STERNUM_BOTTOM_DEPTH_FRACTION = 0.1;
 
     /** What a segment of the cage is. */
     public enum Kind { RIB, CARTILAGE, STERNUM, SPINE }
@@ -126,7 +131,8 @@ public final class RibCage {
         double sx = 0.5 * (sb[0] + sb[3]);
         for (int i = 0; i < STERNUM_NODES; i++) {
             double f = (double) i / (STERNUM_NODES - 1);
-            double y = (sb[4] - 0.25 * (sb[4] - sb[1])) * (1 - f) + (sb[1] + 0.1 * (sb[4] - sb[1])) * f;
+            double y = (sb[4] - STERNUM_TOP_DEPTH_FRACTION * (sb[4] - sb[1])) * (1 - f)
+                    + (sb[1] + STERNUM_BOTTOM_DEPTH_FRACTION * (sb[4] - sb[1])) * f;
             double z = sb[5] * (1 - f) + sb[2] * f;
             sternum[i] = t.addNode(sx, y, z, p.structureNodeMassKg()).id();
         }

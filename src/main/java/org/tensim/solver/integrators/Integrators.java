@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
  * The integrators by name, for command lines, reports and scene files. Each call
@@ -24,6 +25,7 @@ public final class Integrators {
         BY_NAME.put("verlet", VelocityVerlet::new);
         BY_NAME.put("rk4", RK4::new);
         BY_NAME.put("implicit-euler", ImplicitEuler::new);
+        BY_NAME.put(PrefactoredBdf2.NAME, PrefactoredBdf2::new);
     }
 
     private Integrators() {

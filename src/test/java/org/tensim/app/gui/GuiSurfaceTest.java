@@ -16,7 +16,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.view.CubeViewScene;
+import org.tensim.scene.tunable.CubeViewScene;
 
 /**
  * Shaded two-colour surfaces, the tendon model switch (a rebuild), displacement

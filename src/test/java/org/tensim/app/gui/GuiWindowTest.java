@@ -18,9 +18,9 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.view.Body;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.SceneFactory;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.SceneFactory;
 
 /**
  * The window as a user sees it: it draws the scene, the picture moves while the

@@ -8,9 +8,9 @@ import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.integrators.Integrators;
-import org.tensim.view.Body;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.ViewScene;
 
 class IntegratorCatalogTest {
     @Test

@@ -6,10 +6,10 @@ import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.solver.Simulation;
-import org.tensim.view.Body;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.TunableParameter;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * A small test scene with what the diaphragm has and the cube lacks: a shaded

@@ -13,11 +13,11 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.api.Test;
-import org.tensim.view.Body;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.SceneFactory;
-import org.tensim.view.TunableParameter;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.scene.tunable.ViewScene;
 
 /**
  * Each control reaches the simulation: a value set through {@link Tuning} changes
@@ -63,13 +63,7 @@ class ParameterBindingTest {
     }
 
     static List<SceneFactory> factories() {
-        // The diaphragm places its ribs with BodyParts3D's boxes from ../shared: without them it is left out.
-        return boxesPresent() ? List.of(CubeViewScene.factory(), MembraneTestScene.factory(), coarseDiaphragm())
-                : List.of(CubeViewScene.factory(), MembraneTestScene.factory());
-    }
-
-    static boolean boxesPresent() {
-        return java.nio.file.Files.isRegularFile(GuiScenes.Source.defaults().boxes());
+        return List.of(CubeViewScene.factory(), MembraneTestScene.factory(), coarseDiaphragm());
     }
 
     /** The diaphragm at a coarse resolution (6 rings per face), quick to build and step. */
@@ -222,30 +216,43 @@ class ParameterBindingTest {
     }
 
     @Test
-    void diaphragmControlsReachItsSceneAndTissueSpringsScale() {
-        org.junit.jupiter.api.Assumptions.assumeTrue(boxesPresent(), "BodyParts3D rib and sternum boxes absent");
+    void diaphragmControlsReachItsSceneAndTissueConstantsFollowTheScenesRules() {
         SceneFactory f = coarseDiaphragm();
-        org.tensim.view.DiaphragmViewScene s = (org.tensim.view.DiaphragmViewScene) f.create(true);
+        org.tensim.scene.tunable.DiaphragmViewScene s = (org.tensim.scene.tunable.DiaphragmViewScene) f.create(true);
         Tuning t = tuning(s, f);
         t.bind(new DirectTarget(s));
-        t.set(org.tensim.view.DiaphragmViewScene.RIB_AMPLITUDE, 2.5);
-        t.set(org.tensim.view.DiaphragmViewScene.MUSCLE_ACTION, 12000);
+        t.set(org.tensim.scene.tunable.DiaphragmViewScene.RIB_AMPLITUDE, 2.5);
+        t.set(org.tensim.scene.tunable.DiaphragmViewScene.MUSCLE_ACTION, 12000);
         assertEquals(2.5, s.scene().controls().ribAmplitude());
         assertEquals(12000, s.scene().controls().muscleAmplitudePa());
         var state = s.bodies().get(0).simulation().state();
         double[] k0 = state.springK.clone();
-        double[] c0 = state.springC.clone();
-        double e0 = t.get(org.tensim.view.DiaphragmViewScene.TISSUE_STIFFNESS);
-        t.set(org.tensim.view.DiaphragmViewScene.TISSUE_STIFFNESS, 4 * e0);
+        double e0 = t.get(org.tensim.scene.tunable.DiaphragmViewScene.TISSUE_STIFFNESS);
+        t.set(org.tensim.scene.tunable.DiaphragmViewScene.TISSUE_STIFFNESS, 4 * e0);
         int n = s.scene().diaphragmNodes();
+        // The scene that tensim diaphragm would build with that modulus, the tendon's in its ratio.
+        org.tensim.scene.diaphragm.DiaphragmParameters p4 = org.tensim.scene.diaphragm.DiaphragmParameters.defaults()
+                .withTissueYoung(4 * e0);
+        org.tensim.scene.diaphragm.DiaphragmScene direct;
+        try {
+            direct = org.tensim.scene.diaphragm.DiaphragmSetup.generated(6, null, p4,
+                    new org.tensim.scene.diaphragm.BreathingCycle(4, 2),
+                    new org.tensim.scene.diaphragm.DiaphragmControls(1, 0)).scene();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        double beta = 2 * p4.highDampingRatio() / direct.omegaMaxBound();
         int tissue = 0;
         for (int i = 0; i < k0.length; i++) {
             boolean isTissue = state.springA[i] < n && state.springB[i] < n;
             tissue += isTissue ? 1 : 0;
-            // E x4: tissue springs x4, their damping x2 (w_max grows as sqrt(E)); the others as built.
+            // E x4: tissue springs x4, the others as built; every spring's damping beta k with the new w_max.
             assertEquals(isTissue ? 4 * k0[i] : k0[i], state.springK[i], 1e-9 * k0[i]);
-            assertEquals(isTissue ? 2 * c0[i] : c0[i], state.springC[i], 1e-9 * Math.max(c0[i], 1e-30));
+            assertEquals(direct.topology().springs().get(i).stiffness(), state.springK[i], 0.0, "as built directly");
+            assertEquals(beta * state.springK[i], state.springC[i], 1e-9 * state.springC[i]);
         }
+        assertEquals(direct.topology().viscousDamping(), state.viscousDamping(), 0.0);
+        assertEquals(direct.recommendedTimeStep(), s.defaultTimeStep(), 0.0, "the rebuilt scene's step");
         assertTrue(tissue > 0 && tissue < k0.length, "tissue and non-tissue springs both exist");
         assertTrue(s.bodies().get(0).simulation().state().linkCount() > 0, "tensegrity tendon");
         assertEquals(0, f.create(false).bodies().get(0).simulation().state().linkCount(), "mass-spring tendon");

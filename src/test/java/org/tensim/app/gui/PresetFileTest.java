@@ -13,8 +13,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.view.CubeViewScene;
-import org.tensim.view.ViewScene;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.ViewScene;
 
 /** Presets: round trip, atomic writes, and every kind of malformed file refused with the field named. */
 class PresetFileTest {

@@ -8,8 +8,8 @@ import java.time.Duration;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tensim.solver.Simulation;
-import org.tensim.view.Body;
-import org.tensim.view.ProbeRecorder;
+import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.ProbeRecorder;
 
 /** The live chart keeps drawing whatever the probe does (headless: XChart draws into an image). */
 class ProbeChartTest {

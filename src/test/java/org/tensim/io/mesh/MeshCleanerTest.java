@@ -63,7 +63,7 @@ class MeshCleanerTest {
     @Test
     void bodyParts3dDiaphragmIsReadWithItsDefects() throws Exception {
         Path p = Path.of("..", "shared", "meshes", "bodyparts3d", "diaphragm-FJ3131-dec28k-mm.obj");
-        assumeTrue(Files.isRegularFile(p), "BodyParts3D mesh not present at " + p.toAbsolutePath());
+        assumeTrue(Files.isRegularFile(p), "needs the BodyParts3D diaphragm mesh at " + p.toAbsolutePath());
         MeshCleaner.Result r = MeshLoader.load(p, MeshUnits.MM);
         MeshReport rep = r.report();
         assertEquals(14357, rep.rawVertices());

@@ -21,7 +21,7 @@ class BodyPartsDiaphragmTest {
     static final Path MESH = Path.of("..", "shared", "meshes", "bodyparts3d", "diaphragm-FJ3131-dec28k-mm.obj");
 
     private TwoSurfaces load() throws Exception {
-        assumeTrue(Files.isRegularFile(MESH), "BodyParts3D mesh absent at " + MESH.toAbsolutePath());
+        assumeTrue(Files.isRegularFile(MESH), "needs the BodyParts3D diaphragm mesh at " + MESH.toAbsolutePath());
         if (loaded == null) {
             loaded = TwoSurfaces.split(MeshLoader.load(MESH, MeshUnits.MM).mesh());
         }
@@ -33,7 +33,7 @@ class BodyPartsDiaphragmTest {
         TwoSurfaces s = load();
         assertEquals(0.0030, s.thicknessM(), 0.0004, "about 3 mm apart");
         assertTrue(s.upperCount() > 0.4 * s.mesh().vertexCount() && s.lowerCount() > 0.4 * s.mesh().vertexCount());
-        DiaphragmScene scene = DiaphragmScene.build(s, SceneFixture.boxes(), DiaphragmParameters.defaults(),
+        DiaphragmScene scene = DiaphragmScene.build(s, SceneFixture.bodyPartsBoxes(), DiaphragmParameters.defaults(),
                 BreathingCycle.quiet(), new DiaphragmControls(1, 2300), null);
         assertTrue(scene.attachedNodes() > 100, "attached " + scene.attachedNodes());
         // No node is near the spine segment placed from the rib boxes, so the crura are taken from the
@@ -72,7 +72,7 @@ class BodyPartsDiaphragmTest {
         for (int v = 0; v < up.length; v++) {
             up[v] = r.groups()[v] == 1;
         }
-        DiaphragmScene scene = DiaphragmScene.build(TwoSurfaces.of(m, up), SceneFixture.boxes(),
+        DiaphragmScene scene = DiaphragmScene.build(TwoSurfaces.of(m, up), SceneFixture.bodyPartsBoxes(),
                 DiaphragmParameters.defaults(), BreathingCycle.quiet(), new DiaphragmControls(1, 2600), null);
         Simulation sim = scene.newSimulation();
         sim.runUntil(scene.cycle().inspirationS(), scene.recommendedTimeStep());

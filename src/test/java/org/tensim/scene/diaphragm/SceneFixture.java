@@ -8,16 +8,27 @@ import java.nio.file.Path;
 import java.util.Map;
 import org.tensim.io.BoxesJson;
 
-/** Shared by the diaphragm tests: the BodyParts3D rib boxes (tests skip when they are absent). */
+/**
+ * Shared by the diaphragm tests: the project's parametric rib cage (always there) and, for the tests of the
+ * BodyParts3D mesh only, BodyParts3D's rib boxes beside it.
+ */
 final class SceneFixture {
-    static final Path BOXES = Path.of("..", "shared", "meshes", "bodyparts3d", "rib-sternum-bounds-mm.json");
+    static final Path BODYPARTS3D_BOXES = Path.of("..", "shared", "meshes", "bodyparts3d",
+            "rib-sternum-bounds-mm.json");
 
     private SceneFixture() {
     }
 
-    static Map<String, double[]> boxes() throws IOException {
-        assumeTrue(Files.isRegularFile(BOXES), "rib boxes not present at " + BOXES.toAbsolutePath());
-        return BoxesJson.read(BOXES, 1e-3);
+    /** The default cage: the parametric one, placed on the generated dome. */
+    static Map<String, double[]> boxes() {
+        return ParametricRibCage.adult();
+    }
+
+    /** BodyParts3D's boxes, for the tests of the BodyParts3D mesh (they skip, naming the file, without it). */
+    static Map<String, double[]> bodyPartsBoxes() throws IOException {
+        assumeTrue(Files.isRegularFile(BODYPARTS3D_BOXES), "needs BodyParts3D's rib and sternum boxes at "
+                + BODYPARTS3D_BOXES.toAbsolutePath());
+        return BoxesJson.read(BODYPARTS3D_BOXES, 1e-3);
     }
 
     /** A coarse double dome (rings per face) with the default parameters. */

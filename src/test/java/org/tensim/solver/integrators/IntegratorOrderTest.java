@@ -30,14 +30,14 @@ class IntegratorOrderTest {
     }
 
     @ParameterizedTest(name = "{0}: order {1}")
-    @CsvSource({"euler, 1", "symplectic-euler, 1", "rk2, 2", "heun, 2", "verlet, 2", "rk4, 4", "implicit-euler, 1"})
+    @CsvSource({"euler, 1", "symplectic-euler, 1", "rk2, 2", "heun, 2", "verlet, 2", "rk4, 4", "implicit-euler, 1", "bdf2, 2"})
     void undampedSpringOrder(String name, int expected) {
         assertEquals(expected, Integrators.create(name).order(), "declared order of " + name);
         assertEquals(expected, undamped.get(name), 0.15, "measured order of " + name + " on the undamped spring");
     }
 
     @ParameterizedTest(name = "{0}: order {1}")
-    @CsvSource({"euler, 1", "symplectic-euler, 1", "rk2, 2", "heun, 2", "verlet, 2", "rk4, 4", "implicit-euler, 1"})
+    @CsvSource({"euler, 1", "symplectic-euler, 1", "rk2, 2", "heun, 2", "verlet, 2", "rk4, 4", "implicit-euler, 1", "bdf2, 2"})
     void dampedSpringOrder(String name, int expected) {
         assertEquals(expected, damped.get(name), 0.15, "measured order of " + name + " on the damped spring");
     }

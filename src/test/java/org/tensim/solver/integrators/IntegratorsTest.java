@@ -24,7 +24,7 @@ class IntegratorsTest {
 
     @Test
     void registryHasTheSevenMethodsAndTheirNames() {
-        assertEquals(List.of("euler", "symplectic-euler", "rk2", "heun", "verlet", "rk4", "implicit-euler"),
+        assertEquals(List.of("euler", "symplectic-euler", "rk2", "heun", "verlet", "rk4", "implicit-euler", "bdf2"),
                 Integrators.names());
         for (String n : Integrators.names()) {
             Integrator i = Integrators.create(n);

@@ -1,4 +1,4 @@
-package org.tensim.experiment.diaphragm;
+package org.tensim.scene.diaphragm;
 
 import org.tensim.io.ProjectFolder;
 import java.io.IOException;
@@ -13,25 +13,23 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.scene.diaphragm.ActionLines;
-import org.tensim.scene.diaphragm.BreathingCycle;
-import org.tensim.scene.diaphragm.DiaphragmControls;
-import org.tensim.scene.diaphragm.DiaphragmParameters;
-import org.tensim.scene.diaphragm.DiaphragmScene;
-import org.tensim.scene.diaphragm.DoubleDomeGenerator;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 
 /**
  * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two
  * boundary surfaces (a thin closed shell is split; a single surface is offset by
- * the thickness), reads the rib boxes, builds the scene. Shared by the command,
- * the tests and the resolution study.
+ * the thickness), takes the rib cage (the project's parametric one, or boxes read
+ * from a file), builds the scene. Shared by the command, the GUI, the tests and the
+ * studies. A boxes file of null everywhere below means the parametric cage,
+ * {@link ParametricRibCage#adult()}.
  */
 public final class DiaphragmSetup {
     /** The project's default mesh, relative to the project folder. */
     public static final Path DEFAULT_MESH = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
-    /** The BodyParts3D rib and sternum boxes, relative to the project folder. */
-    public static final Path DEFAULT_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+    /**
+     * BodyParts3D's rib and sternum boxes beside the project (optional: {@code --boxes} this file;
+     * the default cage is {@link ParametricRibCage}).
+     */
+    public static final Path BODYPARTS3D_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
     /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
     public static final double DEFAULT_MUSCLE_PA = 2600;
@@ -72,6 +70,8 @@ public final class DiaphragmSetup {
             DiaphragmControls controls) throws IOException, MeshFormatException {
         MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
         TriangleMesh m = r.mesh();
+        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(m, meshFile, units, "diaphragm", PLAUSIBLE_SIZE_M[0],
+                PLAUSIBLE_SIZE_M[1]);
         TwoSurfaces s;
         SurfaceMode mode;
         TwoSurfaces split = TwoSurfaces.split(m);
@@ -87,7 +87,7 @@ public final class DiaphragmSetup {
             mode = SurfaceMode.OFFSET;
         }
         return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, lines), r.report(), mode,
-                meshFile.toString());
+                meshFile + ", " + cage(boxesFile));
     }
 
     /** The generated double dome at a resolution (rings per face), split into its two faces. */
@@ -101,16 +101,36 @@ public final class DiaphragmSetup {
             BreathingCycle cycle, DiaphragmControls controls) throws IOException {
         TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
         return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines), null,
-                SurfaceMode.SHELL, "generated double dome, " + rings + " rings");
+                SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
     }
 
-    /** Reads the rib and sternum boxes (millimetres), with a message that says where to find them. */
+    /**
+     * Plausible largest side of a diaphragm's bounding box, m: an adult's is about 0.3 m
+     * transversely (BodyParts3D: 0.27 m; the project's double dome: 0.28 m); 0.08 m admits
+     * a newborn's, 1 m any adult's with room to spare. A mesh outside this range is read in the
+     * wrong --units (a metre file read as mm measures 0.3 mm) or is not a diaphragm.
+     */
+    public static final double[] PLAUSIBLE_SIZE_M = {0.08, 1.0};
+
+    /**
+     * The rib and sternum boxes, metres: the project's parametric cage when {@code file} is null, else
+     * the file's boxes (millimetres), with a message that says where to find them.
+     */
     public static Map<String, double[]> boxes(Path file) throws IOException {
+        if (file == null) {
+            return ParametricRibCage.adult();
+        }
         if (!Files.isRegularFile(file)) {
             throw new IOException(file + ": rib and sternum boxes not found; expected BodyParts3D's"
-                    + " rib-sternum-bounds-mm.json (give its path with --boxes)");
+                    + " rib-sternum-bounds-mm.json or boxes of that form (or leave out --boxes for the project's"
+                    + " parametric rib cage)");
         }
         return BoxesJson.read(file, 1e-3);
+    }
+
+    /** Which rib cage a boxes file (null: the parametric one) stands for, for summaries. */
+    public static String cage(Path boxesFile) {
+        return boxesFile == null ? "parametric rib cage" : "rib boxes " + boxesFile;
     }
 
     private static double sq(double x) {

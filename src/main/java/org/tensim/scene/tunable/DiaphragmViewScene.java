@@ -1,11 +1,11 @@
-package org.tensim.view;
+package org.tensim.scene.tunable;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import org.tensim.experiment.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Vec3;
@@ -22,20 +22,20 @@ import org.tensim.solver.SystemState;
  * {@link DiaphragmScene}: the diaphragm's two surfaces shaded, muscle red and
  * tendon pale, with the ribs, sternum and cartilage as lines; the dome apex is
  * the probe. The two control parameters of the paper (rib motion, muscle action)
- * act through the scene's {@link DiaphragmControls}; tissue stiffness and damping
- * rescale the tissue springs of the running simulation; the breathing period is
+ * act through the scene's {@link DiaphragmControls}; the breathing period is
  * fixed when a scene is built, so changing it restarts.
  *
- * <p><b>Tissue stiffness</b> is given as the muscle's Young's modulus E. Every
- * tissue spring (both ends on the diaphragm) was built with a stiffness
- * proportional to E (the tendon's and the bending springs in fixed ratios to it),
- * so a new E scales them all by {@code E / E0}: the same as rebuilding with that
- * modulus. <b>Tissue damping</b> is the damping ratio zeta of the highest mode
- * that the axial damping {@code c = 2 zeta k / w_max} gives; since w_max grows
- * as {@code sqrt(E)}, c scales by {@code (zeta / zeta0) sqrt(E / E0)}.
- * <b>Surrounding damping</b> is the global viscous damping per unit mass,
- * scaled from the built value. Attachment, cartilage, sternum and abdominal
- * support springs are left as built.
+ * <p><b>Tissue constants</b> go through the scene's own rules, those of
+ * {@code tensim diaphragm}: a new tissue stiffness (the muscle's Young's modulus,
+ * the tendon's kept in its ratio to it, {@link DiaphragmParameters#withTissueYoung}),
+ * tissue damping (the damping ratio of the highest mode) or surrounding damping
+ * (viscous, per second) makes new {@link DiaphragmParameters}; the scene is rebuilt
+ * with them ({@link DiaphragmScene#rebuiltWith}) and the running simulation takes the
+ * rebuilt scene's spring and damping constants
+ * ({@link DiaphragmScene#copyConstantsTo}), keeping its positions, velocities and time.
+ * The recommended time step becomes the rebuilt scene's. A rebuild takes about 0.4 s at
+ * the GUI's default resolution (20 rings, measured at a load average of 25), during which
+ * the simulation waits.
  *
  * <p>Tendon model: with rigid links (tensegrity, the paper's), or with every link
  * replaced by a spring ({@link RigidLinksAsSprings}) to compare.
@@ -73,32 +73,21 @@ public final class DiaphragmViewScene implements ViewScene {
                     "Duration of one breath (inspiration:expiration 1:2). 4 s is 15 breaths per minute.")
                     .restarting());
 
-    private final DiaphragmScene scene;
+    private final boolean tensegrity;
     private final Simulation sim;
     private final List<Body> bodies;
-    private final boolean[] tissue;
-    private final double[] k0;
-    private final double[] c0;
-    private final double viscous0;
-    private double stiffnessFactor = 1;
-    private double dampingFactor = 1;
+    /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
+    private DiaphragmScene scene;
 
     private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity) {
         this.scene = scene;
+        this.tensegrity = tensegrity;
         if (tensegrity) {
             sim = scene.newSimulation();
         } else {
             sim = Simulation.of(RigidLinksAsSprings.of(scene.topology()));
         }
         SystemState s = sim.state();
-        int n = scene.diaphragmNodes();
-        tissue = new boolean[s.springCount()];
-        for (int i = 0; i < tissue.length; i++) {
-            tissue[i] = s.springA[i] < n && s.springB[i] < n;
-        }
-        k0 = s.springK.clone();
-        c0 = s.springC.clone();
-        viscous0 = s.viscousDamping();
         List<RibCage.Segment> segments = scene.cage().segments();
         int[] structure = new int[2 * segments.size()];
         for (int i = 0; i < segments.size(); i++) {
@@ -134,7 +123,8 @@ public final class DiaphragmViewScene implements ViewScene {
      * @param units      units of the mesh file
      * @param thicknessM thickness given to a single-surface mesh, m
      * @param rings      rings per face of the generated dome (>= 2)
-     * @param boxes      rib and sternum boxes (millimetres, BodyParts3D frame)
+     * @param boxes      rib and sternum boxes file (millimetres, BodyParts3D frame), or null for the project's
+     *                   parametric rib cage
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
         return new SceneFactory() {
@@ -174,7 +164,7 @@ public final class DiaphragmViewScene implements ViewScene {
         };
     }
 
-    /** The underlying scene (for tests and reports). */
+    /** The underlying scene (for tests and reports): the built one, or its rebuild with the latest constants. */
     public DiaphragmScene scene() {
         return scene;
     }
@@ -235,15 +225,9 @@ public final class DiaphragmViewScene implements ViewScene {
         switch (key) {
             case RIB_AMPLITUDE -> c.setRibAmplitude(value);
             case MUSCLE_ACTION -> c.setMuscleAmplitudePa(value);
-            case TISSUE_STIFFNESS -> {
-                stiffnessFactor = value / P.muscleYoungPa();
-                rescaleTissue();
-            }
-            case TISSUE_DAMPING -> {
-                dampingFactor = value / P.highDampingRatio();
-                rescaleTissue();
-            }
-            case SURROUNDING_DAMPING -> sim.state().setViscousDamping(viscous0 * value / P.viscousPerS());
+            case TISSUE_STIFFNESS -> retune(scene.parameters().withTissueYoung(value));
+            case TISSUE_DAMPING -> retune(scene.parameters().withDamping(value, scene.parameters().viscousPerS()));
+            case SURROUNDING_DAMPING -> retune(scene.parameters().withViscous(value));
             case BREATHING_PERIOD -> throw new IllegalStateException(BREATHING_PERIOD
                     + " is fixed when the scene is built: make a new scene with it");
             default -> throw new IllegalArgumentException("diaphragm scene has no parameter '" + key + "'; known: "
@@ -251,14 +235,17 @@ public final class DiaphragmViewScene implements ViewScene {
         }
     }
 
-    private void rescaleTissue() {
-        SystemState s = sim.state();
-        double cScale = dampingFactor * Math.sqrt(stiffnessFactor);
-        for (int i = 0; i < tissue.length; i++) {
-            if (tissue[i]) {
-                s.setSpringStiffness(i, k0[i] * stiffnessFactor);
-                s.setSpringDamping(i, c0[i] * cScale);
-            }
+    /**
+     * Rebuilds the scene with new constants and hands them to the running simulation; nothing when they
+     * are the scene's already (a new scene is given every setting, mostly unchanged).
+     */
+    private void retune(DiaphragmParameters p) {
+        if (p.equals(scene.parameters())) {
+            return;
         }
+        DiaphragmScene rebuilt = scene.rebuiltWith(p);
+        DiaphragmScene.copyConstantsTo(sim.state(),
+                tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology()));
+        scene = rebuilt;
     }
 }

@@ -1,4 +1,4 @@
-package org.tensim.view;
+package org.tensim.scene.tunable;
 
 import org.tensim.model.Node;
 import org.tensim.model.Spring;

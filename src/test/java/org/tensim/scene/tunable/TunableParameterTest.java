@@ -1,4 +1,4 @@
-package org.tensim.view;
+package org.tensim.scene.tunable;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

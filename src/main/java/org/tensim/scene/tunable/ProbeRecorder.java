@@ -1,4 +1,4 @@
-package org.tensim.view;
+package org.tensim.scene.tunable;
 
 import java.util.List;
 import org.tensim.solver.Simulation;

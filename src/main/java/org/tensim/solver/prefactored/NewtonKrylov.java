@@ -1,0 +1,182 @@
+package org.tensim.solver.prefactored;
+
+import org.tensim.solver.ForceModel;
+import org.tensim.solver.SystemState;
+
+/**
+ * Newton's method on the implicit step's residual
+ * {@code g(v) = M (v - v^) - beta f(t, x^ + beta v, v)} (free nodes only), each Newton system
+ * {@code J dv = -g} solved by conjugate gradient preconditioned with a sparse Cholesky factor.
+ * J is applied matrix-free by {@link SpringJacobian}, linearised once per Newton iteration.
+ * Scratch arrays are allocated once, here.
+ */
+final class NewtonKrylov {
+    private final SystemState s;
+    private final int[] nodes;
+    /** Inputs, compact over free nodes (3 per node): x^, v^ and the first guess of v. */
+    final double[] xHat;
+    final double[] vHat;
+    final double[] guess;
+    /** Full-size iterate (positions, velocities) at the end of {@link #solve}; fixed and driven nodes set. */
+    final double[] xIt;
+    final double[] vIt;
+    private final double[] f;
+    private final SpringJacobian jacobian;
+    private final double[] g;
+    private final double[] r;
+    private final double[] z;
+    private final double[] p;
+    private final double[] q;
+    private final double[] dv;
+    private final double[] work;
+    private final double[] scratch = new double[6];
+    int lastKrylovIterations;
+    double lastRelativeResidual;
+    long products;
+
+    NewtonKrylov(SystemState s, int[] freeIndex, int[] freeNodes) {
+        this.s = s;
+        this.nodes = freeNodes;
+        int n3 = 3 * s.nodeCount;
+        int nf3 = 3 * freeNodes.length;
+        xHat = new double[nf3];
+        vHat = new double[nf3];
+        guess = new double[nf3];
+        xIt = new double[n3];
+        vIt = new double[n3];
+        f = new double[n3];
+        jacobian = new SpringJacobian(s, freeIndex, freeNodes);
+        g = new double[nf3];
+        r = new double[nf3];
+        z = new double[nf3];
+        p = new double[nf3];
+        q = new double[nf3];
+        dv = new double[nf3];
+        work = new double[nf3];
+    }
+
+    /**
+     * Solves g(v) = 0 from the guess, leaving the new positions and velocities in
+     * {@link #xIt} and {@link #vIt}.
+     *
+     * @param t1    time of the new state, s
+     * @param beta  weight of the new step, s
+     */
+    void solve(ForceModel model, SparseCholesky precond, double t1, double beta, int newtonIterations,
+            int krylovIterations, double krylovTolerance) {
+        final int n3 = xIt.length;
+        System.arraycopy(s.x, 0, xIt, 0, n3);
+        System.arraycopy(s.v, 0, vIt, 0, n3);
+        s.applyMotions(t1, xIt, vIt, scratch);
+        scatter(guess, vIt);
+        lastKrylovIterations = 0;
+        for (int it = 0; it < newtonIterations; it++) {
+            positions(beta);
+            model.computeForces(t1, xIt, vIt, f);
+            if (residual(beta) == 0) {
+                break;
+            }
+            jacobian.linearise(xIt, beta);
+            conjugateGradient(precond, krylovIterations, krylovTolerance);
+            for (int j = 0; j < nodes.length; j++) {
+                for (int c = 0; c < 3; c++) {
+                    vIt[3 * nodes[j] + c] += dv[3 * j + c];
+                }
+            }
+        }
+        positions(beta);
+    }
+
+    /** x = x^ + beta v on the free nodes. */
+    private void positions(double beta) {
+        for (int j = 0; j < nodes.length; j++) {
+            for (int c = 0; c < 3; c++) {
+                final int k = 3 * nodes[j] + c;
+                xIt[k] = xHat[3 * j + c] + beta * vIt[k];
+            }
+        }
+    }
+
+    /** g = M (v - v^) - beta f; returns |g|. */
+    private double residual(double beta) {
+        final double[] m = s.mass;
+        double sum = 0;
+        for (int j = 0; j < nodes.length; j++) {
+            final int i = nodes[j];
+            for (int c = 0; c < 3; c++) {
+                final int k = 3 * i + c;
+                final double gk = m[i] * (vIt[k] - vHat[3 * j + c]) - beta * f[k];
+                g[3 * j + c] = gk;
+                sum += gk * gk;
+            }
+        }
+        return Math.sqrt(sum);
+    }
+
+    /**
+     * Preconditioned CG on J dv = -g from dv = 0, stopped when the residual's norm in the
+     * preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that
+     * weighs light and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
+     */
+    private void conjugateGradient(SparseCholesky precond, int maxIterations, double tolerance) {
+        final int nf3 = g.length;
+        for (int k = 0; k < nf3; k++) {
+            dv[k] = 0;
+            r[k] = -g[k];
+            z[k] = r[k];
+        }
+        precond.solve3(z, work);
+        double rz = dot(r, z);
+        final double rz0 = rz;
+        System.arraycopy(z, 0, p, 0, nf3);
+        int it = 0;
+        double relative = 1;
+        while (it < maxIterations && rz0 > 0) {
+            products++;
+            jacobian.multiply(p, q);
+            double pq = dot(p, q);
+            if (!(pq > 0)) {
+                break; // only p = 0 gets here: J is positive definite (clamped transverse stiffness)
+            }
+            double alpha = rz / pq;
+            for (int k = 0; k < nf3; k++) {
+                dv[k] += alpha * p[k];
+                r[k] -= alpha * q[k];
+            }
+            it++;
+            if (it == maxIterations) {
+                break; // no solve for a residual that nothing would use
+            }
+            System.arraycopy(r, 0, z, 0, nf3);
+            precond.solve3(z, work);
+            double rzNew = dot(r, z);
+            relative = Math.sqrt(Math.max(0, rzNew) / rz0);
+            if (relative <= tolerance) {
+                break;
+            }
+            double b = rzNew / rz;
+            rz = rzNew;
+            for (int k = 0; k < nf3; k++) {
+                p[k] = z[k] + b * p[k];
+            }
+        }
+        lastKrylovIterations += it;
+        lastRelativeResidual = relative;
+    }
+
+    private void scatter(double[] compact, double[] full) {
+        for (int j = 0; j < nodes.length; j++) {
+            for (int c = 0; c < 3; c++) {
+                full[3 * nodes[j] + c] = compact[3 * j + c];
+            }
+        }
+    }
+
+    private static double dot(double[] a, double[] b) {
+        double sum = 0;
+        for (int k = 0; k < a.length; k++) {
+            sum += a[k] * b[k];
+        }
+        return sum;
+    }
+}

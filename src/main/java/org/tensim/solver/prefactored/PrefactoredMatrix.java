@@ -1,0 +1,205 @@
+package org.tensim.solver.prefactored;
+
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
+import org.tensim.solver.SystemState;
+
+/**
+ * The constant matrix of the large-step solvers, factored once and reused at every step
+ * (Liu, O'Brien, Kavan and Ladislav 2013): on the free nodes only (fixed and driven nodes are
+ * eliminated: their springs add to the free end's diagonal), the scalar node matrix
+ *
+ * <pre>
+ *   A(beta) = diag(m_i + beta c_v) + sum over springs (beta^2 k_s + beta c_s) (e_a - e_b)(e_a - e_b)^T
+ * </pre>
+ *
+ * shared by the three coordinates, with m_i the node mass (kg), c_v the viscous damping (N s/m),
+ * k_s and c_s a spring's stiffness (N/m) and axial damping (N s/m), and beta the implicit
+ * scheme's weight of the new step (s; h for implicit Euler, 2h/3 for BDF2). Each spring is
+ * taken isotropically (k I instead of k u u^T), so A does not depend on the positions: it is
+ * the exact Hessian of Liu et al.'s local/global energy, and a preconditioner of the true
+ * Jacobian M + beta C + beta^2 K of the springs.
+ *
+ * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
+ * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
+ * new matrix is factored on a background thread while the steps keep the old factor; the new
+ * one is taken at the first step after it is ready. No step after the first waits.
+ */
+final class PrefactoredMatrix {
+    /** The default background thread, shared by all instances (a refactorisation is rare). */
+    private static final ExecutorService BACKGROUND = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "tensim-refactor");
+        t.setDaemon(true);
+        return t;
+    });
+
+    /** A factor and the parameters it was made for. */
+    static final class Factor {
+        final SparseCholesky cholesky;
+        final long parameterVersion;
+        final double beta;
+
+        Factor(SparseCholesky cholesky, long parameterVersion, double beta) {
+            this.cholesky = cholesky;
+            this.parameterVersion = parameterVersion;
+            this.beta = beta;
+        }
+    }
+
+    private final SystemState s;
+    /** Free-node index of each node, -1 for fixed and driven nodes. */
+    final int[] freeIndex;
+    /** Node id of each free node. */
+    final int[] freeNodes;
+    private final SparseCholesky.Pattern pattern;
+    private final AtomicReference<Factor> ready = new AtomicReference<>();
+    private final AtomicBoolean inFlight = new AtomicBoolean();
+    private volatile RuntimeException backgroundFailure;
+    private Executor executor = BACKGROUND;
+    private Factor current;
+    private long synchronousFactorisations;
+    private long backgroundFactorisations;
+
+    PrefactoredMatrix(SystemState s) {
+        this.s = s;
+        freeIndex = new int[s.nodeCount];
+        int nf = 0;
+        for (int i = 0; i < s.nodeCount; i++) {
+            freeIndex[i] = s.invMass[i] != 0 ? nf++ : -1;
+        }
+        freeNodes = new int[nf];
+        for (int i = 0; i < s.nodeCount; i++) {
+            if (freeIndex[i] >= 0) {
+                freeNodes[freeIndex[i]] = i;
+            }
+        }
+        Triplets t = assemble(1, s.springK.clone(), s.springC.clone(), s.viscousDamping());
+        pattern = SparseCholesky.analyse(nf, t.rows, t.cols, t.vals, t.count);
+    }
+
+    /** Where background refactorisations run (default: one shared daemon thread). */
+    void setExecutor(Executor e) {
+        executor = java.util.Objects.requireNonNull(e, "refactorisation executor");
+    }
+
+    /** Free nodes (the order of the factored system). */
+    int freeCount() {
+        return freeNodes.length;
+    }
+
+    /** Nonzeros of the factor. */
+    int factorNonZeros() {
+        return pattern.factorNonZeros();
+    }
+
+    /** Factorisations a step waited for (1 after the first step). */
+    long synchronousFactorisations() {
+        return synchronousFactorisations;
+    }
+
+    /** Factorisations made on the background thread and taken into use. */
+    long backgroundFactorisations() {
+        return backgroundFactorisations;
+    }
+
+    /** Whether a background refactorisation is under way. */
+    boolean refactorInFlight() {
+        return inFlight.get();
+    }
+
+    /**
+     * The factor to use for a step with weight {@code beta} (s): the newest one ready. Starts a
+     * background refactorisation when it was made for other parameters or another beta.
+     *
+     * @throws NotPositiveDefiniteException when the (background) factorisation failed
+     */
+    Factor factorFor(double beta) {
+        RuntimeException failure = backgroundFailure;
+        if (failure != null) {
+            backgroundFailure = null;
+            throw failure;
+        }
+        Factor done = ready.getAndSet(null);
+        if (done != null) {
+            current = done;
+            backgroundFactorisations++;
+        }
+        long version = s.parameterVersion();
+        if (current == null) {
+            current = build(version, beta, s.springK.clone(), s.springC.clone(), s.viscousDamping());
+            synchronousFactorisations++;
+        } else if ((current.parameterVersion != version || current.beta != beta) && inFlight.compareAndSet(false,
+                true)) {
+            // The parameters are copied here, on the stepping thread, so the factor sees one consistent set.
+            double[] k = s.springK.clone();
+            double[] c = s.springC.clone();
+            double cv = s.viscousDamping();
+            executor.execute(() -> {
+                try {
+                    ready.set(build(version, beta, k, c, cv));
+                } catch (RuntimeException e) {
+                    backgroundFailure = e;
+                } finally {
+                    inFlight.set(false);
+                }
+            });
+        }
+        return current;
+    }
+
+    private Factor build(long version, double beta, double[] k, double[] c, double cv) {
+        Triplets t = assemble(beta, k, c, cv);
+        SparseCholesky ch = SparseCholesky.factor(pattern, t.rows, t.cols, t.vals, t.count,
+                "M + beta C + beta^2 K (beta = " + beta + " s) on the free nodes");
+        return new Factor(ch, version, beta);
+    }
+
+    /** The entries of A(beta), both triangles, duplicates to be summed. */
+    private Triplets assemble(double beta, double[] k, double[] c, double cv) {
+        int nf = freeNodes.length;
+        int ns = s.springCount();
+        Triplets t = new Triplets(nf + 4 * ns);
+        for (int j = 0; j < nf; j++) {
+            t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
+        }
+        for (int i = 0; i < ns; i++) {
+            double w = beta * beta * k[i] + beta * c[i];
+            int a = freeIndex[s.springA[i]];
+            int b = freeIndex[s.springB[i]];
+            if (a >= 0) {
+                t.add(a, a, w);
+            }
+            if (b >= 0) {
+                t.add(b, b, w);
+            }
+            if (a >= 0 && b >= 0) {
+                t.add(a, b, -w);
+                t.add(b, a, -w);
+            }
+        }
+        return t;
+    }
+
+    /** Matrix entries in triplet form. */
+    private static final class Triplets {
+        final int[] rows;
+        final int[] cols;
+        final double[] vals;
+        int count;
+
+        Triplets(int capacity) {
+            rows = new int[capacity];
+            cols = new int[capacity];
+            vals = new double[capacity];
+        }
+
+        void add(int r, int c, double v) {
+            rows[count] = r;
+            cols[count] = c;
+            vals[count++] = v;
+        }
+    }
+}

@@ -1,0 +1,113 @@
+package org.tensim.solver.prefactored;
+
+import org.tensim.solver.SystemState;
+
+/**
+ * The Jacobian of an implicit step, {@code J = M + beta C + beta^2 K}, on the free nodes
+ * (compact numbering, 3 per node), applied matrix-free. Per spring of stiffness k (N/m), axial
+ * damping c (N s/m), rest length L, length l and direction u, its block is
+ *
+ * <pre>
+ *   beta^2 k ((1 - g) u u^T + g I) + beta c u u^T,   g = max(0, 1 - L / l)
+ * </pre>
+ *
+ * (Baraff and Witkin 1998): the transverse term of a compressed spring (l &lt; L) is negative and
+ * is clamped to zero, which keeps J symmetric positive definite so that conjugate gradient
+ * applies, and keeps Newton's iteration from following a buckling branch; the global viscous
+ * damping c_v adds {@code beta c_v I}. Springs to fixed and driven nodes act on the free end
+ * only (those nodes are eliminated).
+ */
+final class SpringJacobian {
+    private final SystemState s;
+    private final int[] nodes;
+    private final int[] endA; // per spring: 3 x compact index of end a, -1 when not free
+    private final int[] endB;
+    private final double[] dir; // per spring: u_x, u_y, u_z
+    private final double[] coef; // per spring: alpha, beta of alpha u u^T + beta I
+    private double diagonalTerm; // beta c_v
+
+    SpringJacobian(SystemState s, int[] freeIndex, int[] freeNodes) {
+        this.s = s;
+        this.nodes = freeNodes;
+        int ns = s.springCount();
+        endA = new int[ns];
+        endB = new int[ns];
+        for (int i = 0; i < ns; i++) {
+            int a = freeIndex[s.springA[i]];
+            int b = freeIndex[s.springB[i]];
+            endA[i] = a < 0 ? -1 : 3 * a;
+            endB[i] = b < 0 ? -1 : 3 * b;
+        }
+        dir = new double[3 * ns];
+        coef = new double[2 * ns];
+    }
+
+    /** Linearises at the positions px (full layout) for the step weight beta (s). */
+    void linearise(double[] px, double beta) {
+        final int[] sa = s.springA;
+        final int[] sb = s.springB;
+        final double[] kk = s.springK;
+        final double[] cc = s.springC;
+        final double[] rl = s.springL;
+        final double b2 = beta * beta;
+        diagonalTerm = beta * s.viscousDamping();
+        for (int i = 0; i < sa.length; i++) {
+            final int a = 3 * sa[i];
+            final int b = 3 * sb[i];
+            final double dx = px[b] - px[a];
+            final double dy = px[b + 1] - px[a + 1];
+            final double dz = px[b + 2] - px[a + 2];
+            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            final double inv = len > 0 ? 1 / len : 0;
+            final double g = len > 0 ? Math.max(0, 1 - rl[i] / len) : 0;
+            dir[3 * i] = dx * inv;
+            dir[3 * i + 1] = dy * inv;
+            dir[3 * i + 2] = dz * inv;
+            coef[2 * i] = b2 * kk[i] * (1 - g) + beta * cc[i];
+            coef[2 * i + 1] = b2 * kk[i] * g;
+        }
+    }
+
+    /** out = J p (compact vectors). */
+    void multiply(double[] p, double[] out) {
+        final double[] m = s.mass;
+        final double dt = diagonalTerm;
+        for (int j = 0; j < nodes.length; j++) {
+            final double mj = m[nodes[j]] + dt;
+            out[3 * j] = mj * p[3 * j];
+            out[3 * j + 1] = mj * p[3 * j + 1];
+            out[3 * j + 2] = mj * p[3 * j + 2];
+        }
+        final int[] ea = endA;
+        final int[] eb = endB;
+        final double[] u = dir;
+        for (int i = 0; i < ea.length; i++) {
+            final int a = ea[i];
+            final int b = eb[i];
+            if (a < 0 && b < 0) {
+                continue;
+            }
+            final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
+            final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
+            final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
+            final double ux = u[3 * i];
+            final double uy = u[3 * i + 1];
+            final double uz = u[3 * i + 2];
+            final double beta = coef[2 * i + 1];
+            final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
+            final double ax = ur * ux + beta * rx;
+            final double ay = ur * uy + beta * ry;
+            final double az = ur * uz + beta * rz;
+            if (a >= 0) {
+                out[a] -= ax;
+                out[a + 1] -= ay;
+                out[a + 2] -= az;
+            }
+            if (b >= 0) {
+                out[b] += ax;
+                out[b + 1] += ay;
+                out[b + 2] += az;
+            }
+        }
+    }
+}
