@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.Topology;
 import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
 
 /** The stable RK2 step against the amplification factor and against a real damped spring. */
 class Rk2StepTest {
@@ -44,7 +45,11 @@ class Rk2StepTest {
         t.addSpring(anchor.id(), mass.id(), k, 0.9, c);
         Simulation s = Simulation.of(t);
         for (int i = 0; i < 400; i++) {
-            s.step(h);
+            try {
+                s.step(h);
+            } catch (SimulationDivergedException e) {
+                return Double.POSITIVE_INFINITY; // the runaway check stopped a growing oscillation
+            }
             if (Math.abs(s.state().x[3] - 0.9) > 1e6) {
                 break;
             }
