@@ -44,7 +44,8 @@ public final class AccuracyCommand implements Callable<Integer> {
     List<String> scenes = AccuracyScenes.names();
 
     @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all)")
+            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+            completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
     @Option(names = "--dt", paramLabel = "S", description = "largest time step of the ladder, s (default: the scene's)")
@@ -131,7 +132,8 @@ public final class AccuracyCommand implements Callable<Integer> {
             json.put(i, e);
         }
         if (shellModel != null) {
-            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println), run));
+            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println),
+                    run));
         }
         run.finish(RunStatus.OK, json);
         System.out.println(Json.line(json));

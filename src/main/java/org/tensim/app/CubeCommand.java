@@ -6,6 +6,7 @@ import org.tensim.experiment.CubeReport;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
 import org.tensim.scene.CubeParameters;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -51,10 +52,9 @@ public final class CubeCommand implements Callable<Integer> {
     @Option(names = "--mass", paramLabel = "KG", description = "mass of every node, kg (default: ${DEFAULT-VALUE})")
     double mass = D.nodeMassKg();
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Override
     public Integer call() throws Exception {
@@ -72,8 +72,8 @@ public final class CubeCommand implements Callable<Integer> {
             CubeReport report = CubeReport.run(p, integrator, run);
             System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
             if (report.status() == RunStatus.DIVERGED) {
-                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged") + " (the CSV ends at the last"
-                        + " finite step; the chart is marked DIVERGED)");
+                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged")
+                        + " (the CSV ends at the last finite step; the chart is marked DIVERGED)");
             }
             System.out.println(report.summaryLine());
         });

@@ -8,6 +8,7 @@ import java.util.concurrent.Callable;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
@@ -18,8 +19,10 @@ import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -77,6 +80,25 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE})")
     double attachMm = DiaphragmParameters.defaults().attachThresholdM() * 1e3;
 
+    @Option(names = "--attachment", paramLabel = "MODEL",
+            description = "band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
+                    + " within the threshold driven with the ribs) (default: ${DEFAULT-VALUE})")
+    String attachment = "band";
+
+    @Option(names = "--band-stiffness", paramLabel = "PA_PER_M",
+            description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: ${DEFAULT-VALUE})")
+    double bandPaPerM = BoundaryConditions.DEFAULT_BAND_PA_PER_M;
+
+    @Option(names = "--band-all-segments",
+            description = "attachment band: attach to every cage segment within the threshold, not only to the"
+                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
+    boolean allSegments;
+
+    @Option(names = "--muscle-load", paramLabel = "MODEL",
+            description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
+                    + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
+    String muscleLoad = "pressure";
+
     @Option(names = "--weld-tolerance", paramLabel = "MM",
             description = "mesh cleaning: vertices closer than this are merged, mm (default: ${DEFAULT-VALUE})")
     double weldMm = 1e3 * MeshCleaner.Options.defaults().weldToleranceM();
@@ -111,21 +133,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
     List<ActionLines.Line> actionLines;
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
-
-    /**
-     * Springs from which the automatic thread count uses every core: the real-time study
-     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
-     * up, and a third slower at 12,144 (14 rings) and below.
-     */
-    static final int AUTO_PARALLEL_SPRINGS = 20_000;
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "
-                    + AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
     int threads = 0;
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
@@ -133,7 +147,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: 1e-12)")
     Double cgTolerance;
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
+                    + " this scene; summary.json's dt_rule says how it was chosen)")
     double dt = 0;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
@@ -154,6 +170,25 @@ public final class DiaphragmCommand implements Callable<Integer> {
     @Option(names = "--resolution-study",
             description = "run the resolution study instead (docs/diaphragm.md); uses --seconds per resolution")
     boolean resolutionStudy;
+
+    @Option(names = "--tolerance", paramLabel = "E",
+            description = "resolution study: relative RMS error under which a coarser model is accepted"
+                    + " (default: ${DEFAULT-VALUE})")
+    double tolerance = ResolutionStudy.TOLERANCE;
+
+    @Option(names = "--cells", paramLabel = "MM", split = ",",
+            description = "resolution study with --mesh: vertex-clustering cell sizes, mm (default: 4, 2.8 and 2"
+                    + " times the mesh's mean edge length)")
+    double[] cellsMm;
+
+    @Option(names = "--refine", paramLabel = "N",
+            description = "resolution study with --mesh: also the mesh refined 1..N times by midpoint subdivision"
+                    + " (default: ${DEFAULT-VALUE})")
+    int refine;
+
+    @Option(names = "--no-pick", description = "resolution study: do not write the pick to meshes/"
+            + "resolution-pick.json (it still goes to --out)")
+    boolean noPick;
 
     @Option(names = "--realtime-study",
             description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads) and implicit Euler"
@@ -186,6 +221,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
             Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
             p = p.withTendonPlane(normal, point);
         }
+        BoundaryConditions bc;
+        try {
+            bc = new BoundaryConditions(BoundaryConditions.parse(BoundaryConditions.Attachment.class, attachment),
+                    bandPaPerM, BoundaryConditions.DEFAULT_TAPER_M,
+                    BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad), !allSegments);
+        } catch (IllegalArgumentException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--attachment, --band-stiffness,"
+                    + " --muscle-load: " + e.getMessage());
+        }
         MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
         List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
@@ -200,19 +244,35 @@ public final class DiaphragmCommand implements Callable<Integer> {
             });
         }
         if (resolutionStudy) {
+            if (refine < 0 || cellsMm != null && java.util.Arrays.stream(cellsMm).anyMatch(c -> !(c > 0))) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--refine must be 0 or more and --cells positive sizes in mm, got " + refine + " and "
+                                + java.util.Arrays.toString(cellsMm));
+            }
+            ResolutionStudy.Setup rs;
+            try {
+                rs = new ResolutionStudy.Setup(DiaphragmSetup.boxes(boxes), p, bc, cycle, controls,
+                        Math.min(seconds, cycle.inspirationS()), tolerance, System.out);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--tolerance: " + e.getMessage());
+            }
+            boolean ownMesh = !mesh.equals(DiaphragmSetup.DEFAULT_MESH);
             return RunFolder.run(out, "diaphragm --resolution-study", RESOLUTION_OUTPUTS, run -> {
                 registerAll(run, RESOLUTION_OUTPUTS);
-                Map<String, Object> s = ResolutionStudy.run(boxes, params, cycle, controls, o, out, System.out);
+                Map<String, Object> s = ownMesh
+                        ? ResolutionStudy.runMesh(mesh, u, cleaning, thicknessMm * 1e-3, cellsMm, refine, rs, out)
+                        : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
-        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, cleaning,
+        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, bc, cleaning,
                 lines, cycle, controls, o, chosen));
     }
 
     /** Outputs of the studies, written by the study classes themselves into --out. */
     static final List<String> REALTIME_OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
-    static final List<String> RESOLUTION_OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json");
+    static final List<String> RESOLUTION_OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
+            "resolution-pick.json");
 
     private static void registerAll(RunFolder run, List<String> names) throws java.io.IOException {
         for (String n : names) {
@@ -220,27 +280,27 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
     }
 
-    private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, MeshCleaner.Options cleaning,
+    private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, BoundaryConditions bc,
+            MeshCleaner.Options cleaning,
             List<ActionLines.Line> lines, BreathingCycle cycle, DiaphragmControls controls, DiaphragmReport.Options o,
             org.tensim.solver.Integrator chosen) throws Exception {
         DiaphragmSetup.Built built;
         if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
-            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls);
+            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls, bc);
         } else {
-            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls);
+            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls, bc);
         }
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
-                        ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
+                : org.tensim.solver.parallel.Parallelism.automaticThreads(built.scene().topology().springs().size());
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {
-            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged") + " (outputs up to that step are in "
-                    + out + ", figures marked DIVERGED)");
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
+                    + " (outputs up to that step are in " + out + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));
     }

@@ -35,7 +35,8 @@ public final class DiaphragmMeshCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (rings < 2 || rings > DoubleDomeGenerator.MAX_RINGS) {
-            throw CommandChecks.usage(spec, "--rings " + rings + ": expected 2 to " + DoubleDomeGenerator.MAX_RINGS);
+            throw CommandChecks.usage(spec, "--rings " + rings + ": expected 2 to "
+                    + DoubleDomeGenerator.MAX_RINGS);
         }
         CommandChecks.positive(spec, "--thickness", thicknessMm, "mm");
         if (out.toString().isBlank() || java.nio.file.Files.isDirectory(out)) {

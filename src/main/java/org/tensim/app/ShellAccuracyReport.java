@@ -25,7 +25,8 @@ final class ShellAccuracyReport {
     static Map<String, Object> run(ShellStudy.Result r, org.tensim.io.RunFolder out) throws IOException {
         String model = r.model().name().toLowerCase();
         Path csv = out.dir().resolve("shell-" + model + ".csv");
-        try (CsvWriter w = out.csv("shell-" + model + ".csv", List.of("scene", "mesh", "element_size_m", "nodes", "measured",
+        try (CsvWriter w = out.csv("shell-" + model + ".csv", List.of(
+                "scene", "mesh", "element_size_m", "nodes", "measured",
                 "exact", "relative_error", "largest_element_deviation"), 1)) {
             r.patch().forEach((p, cases) -> cases.forEach(c -> row(w, "patch", p.name().toLowerCase(), c)));
             r.plate().forEach(c -> row(w, "plate", "rings", c));

@@ -9,13 +9,14 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.knowm.xchart.XYChart;
 import org.tensim.analysis.StabilityStudy;
-import org.tensim.analysis.StabilityTheory;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
 import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.stability.LinearStability;
+import org.tensim.solver.stability.StabilityTheory;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -35,7 +36,8 @@ public final class StabilityCommand implements Callable<Integer> {
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all)")
+            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+            completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
     @Option(names = "--omega", split = ",", paramLabel = "W[,W...]",
@@ -92,10 +94,12 @@ public final class StabilityCommand implements Callable<Integer> {
         try (CsvWriter w = run.csv("stability.csv", List.of("integrator", "omega_rad_s", "zeta", "measured_omega_h",
                 "theory_omega_h", "measured_h_s", "theory_h_s"), 1)) {
             for (String name : integrators) {
+                // Theory from the method's own description; NaN (null in JSON) for a method without one.
+                LinearStability st = Integrators.create(name).stability();
                 List<double[]> om = new ArrayList<>();
                 for (double omega : omegas) {
                     double m = StabilityStudy.criticalOmegaH(name, omega, 0, periods, TOL);
-                    double th = StabilityTheory.criticalOmegaH(name, 0);
+                    double th = st == null ? Double.NaN : StabilityTheory.criticalOmegaH(st, 0);
                     w.rowText(name, Double.toString(omega), "0", Double.toString(m), Double.toString(th),
                             Double.toString(m / omega), Double.toString(th / omega));
                     om.add(new double[] {omega, m, th});
@@ -105,7 +109,7 @@ public final class StabilityCommand implements Callable<Integer> {
                 List<double[]> zs = new ArrayList<>();
                 for (double zeta : zetas) {
                     double m = StabilityStudy.criticalOmegaH(name, REF_OMEGA, zeta, periods, TOL);
-                    double th = StabilityTheory.criticalOmegaH(name, zeta);
+                    double th = st == null ? Double.NaN : StabilityTheory.criticalOmegaH(st, zeta);
                     w.rowText(name, Double.toString(REF_OMEGA), Double.toString(zeta), Double.toString(m),
                             Double.toString(th), Double.toString(m / REF_OMEGA), Double.toString(th / REF_OMEGA));
                     zs.add(new double[] {zeta, m, th});
@@ -116,7 +120,7 @@ public final class StabilityCommand implements Callable<Integer> {
                 plot(byOmega, name, om, true, color);
                 plot(byZeta, name, zs, false, color);
                 double measured = StabilityStudy.criticalOmegaH(name, REF_OMEGA, 0, periods, TOL);
-                double theory = StabilityTheory.undampedLimit(name);
+                double theory = st == null ? Double.NaN : st.undampedLimit();
                 Map<String, Object> e = new LinkedHashMap<>();
                 e.put("critical_omega_h", finite(measured));
                 e.put("theory_omega_h", finite(theory));

@@ -9,6 +9,7 @@ import org.tensim.io.Json;
 import org.tensim.io.OutputFiles;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
+import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.parallel.ParallelSpringPass;
 import org.tensim.solver.parallel.Parallelism;
 import picocli.CommandLine.Command;
@@ -36,10 +37,9 @@ public final class BenchCommand implements Callable<Integer> {
             description = "thread counts (default: all cores, here ${DEFAULT-VALUE})")
     List<Integer> threads = List.of(Parallelism.availableCores());
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
     boolean links;
@@ -58,7 +58,7 @@ public final class BenchCommand implements Callable<Integer> {
     boolean shuffle;
 
     @Option(names = "--dt", paramLabel = "S",
-            description = "time step, s (default: 0.001 for the lattice, the scene's stable RK2 step for the diaphragm)")
+            description = "time step, s (default: 0.001 for the lattice, the step recommended for the integrator on the diaphragm)")
     Double dt;
 
     @Option(names = "--steps", paramLabel = "K",
@@ -131,9 +131,9 @@ public final class BenchCommand implements Callable<Integer> {
                 if (diaphragm) {
                     // A new scene per case: a simulation is consumed by its run.
                     org.tensim.scene.diaphragm.DiaphragmScene d = DiaphragmBenchScene.build();
-                    c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false,
-                            IntegratorChoice.create(integrator), t, ord, builtin,
-                            dt != null ? dt : d.recommendedTimeStep(), steps, repeats);
+                    org.tensim.solver.Integrator in = IntegratorChoice.create(integrator);
+                    c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false, in, t, ord,
+                            builtin, d.timeStep(in, dt != null ? dt : 0).seconds(), steps, repeats);
                 } else {
                     c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links), null, shuffle,
                             IntegratorChoice.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,

@@ -185,7 +185,7 @@ public final class RealTimeStudy {
         Simulation sim = scene.newSimulation();
         Integrator in = c.integrator().get();
         sim.setIntegrator(in);
-        double dt = c.dt() > 0 ? c.dt() : scene.recommendedTimeStep();
+        double dt = scene.timeStep(in, c.dt()).seconds();
         int nd = scene.diaphragmNodes();
         SceneGraphSync sync = new SceneGraphSync(sim.state().nodeCount);
         sim.addListener(sync);

@@ -72,8 +72,19 @@ public final class Charts {
      * and the plot background turns pink, so that no reader takes its curves for a result.
      */
     public static void markDiverged(XYChart chart, double atTimeS) {
-        chart.setTitle(String.format(java.util.Locale.ROOT, "DIVERGED at t = %.6g s (values after it are not"
-                + " physical): %s", atTimeS, chart.getTitle()));
+        chart.setTitle(divergedTitle(atTimeS, chart.getTitle()));
         chart.getStyler().setPlotBackgroundColor(new java.awt.Color(255, 225, 225));
+    }
+
+    /**
+     * "DIVERGED at t = ... s: " and the title, shortened to its part before the first colon when
+     * the whole would not fit a chart's width (the mark must stay readable).
+     */
+    public static String divergedTitle(double atTimeS, String title) {
+        String mark = String.format(java.util.Locale.ROOT, "DIVERGED at t = %.4g s: ", atTimeS);
+        if (mark.length() + title.length() > 80 && title.indexOf(':') > 0) {
+            title = title.substring(0, title.indexOf(':'));
+        }
+        return mark + title;
     }
 }

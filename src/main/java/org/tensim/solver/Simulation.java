@@ -3,6 +3,10 @@ package org.tensim.solver;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.tensim.model.Topology;
+import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.solver.stability.ModalBounds;
+import org.tensim.solver.stability.TimeStep;
+import org.tensim.solver.stability.TimeStepPolicy;
 
 /**
  * Runs the paper's three-stage loop on a compiled {@link SystemState}:
@@ -23,7 +27,7 @@ import org.tensim.model.Topology;
  * <p>Checks, on every run:
  * <ul>
  * <li>Critical time step: on the first step with a given integrator and dt, an
- * explicit integrator stepping beyond {@link CriticalTimeStep#forIntegrator} of
+ * explicit integrator stepping beyond {@link CriticalTimeStep#forMethod} of
  * the state's estimate is reported ({@link #setStepLimitSeverity}, default
  * {@link Severity#WARN}; {@link Severity#ERROR} throws
  * {@link IllegalArgumentException} naming the estimate).</li>
@@ -55,8 +59,7 @@ public final class Simulation {
     private long unconvergedProjections;
     private final DivergenceMonitor monitor = new DivergenceMonitor();
     private final java.util.function.DoubleSupplier criticalStepOfIntegrator = this::criticalStepOfIntegrator;
-    private Severity stepLimitSeverity = Severity.WARN;
-    private Severity projectionSeverity = Severity.WARN;
+    private SolverSettings settings = SolverSettings.DEFAULTS;
     private java.util.function.Consumer<String> warningSink = m -> System.err.println("tensim: warning: " + m);
     private Integrator checkedIntegrator;
     private double checkedDt = Double.NaN;
@@ -67,11 +70,19 @@ public final class Simulation {
         this(state, new MidpointRK2());
     }
 
+    /** A simulation with the given settings ({@link #apply(SolverSettings)}). */
+    public Simulation(SystemState state, Integrator integrator, SolverSettings settings) {
+        this(state, integrator);
+        apply(settings);
+    }
+
     public Simulation(SystemState state, Integrator integrator) {
         this.state = state;
         this.forces = new ForceModel(state);
         this.unconstrained = new double[state.linkCount() > 0 ? 3 * state.nodeCount : 0];
         setIntegrator(integrator);
+        monitor.setEnergyGrowthLimit(settings.energyGrowthLimit());
+        monitor.setEnergyCheckInterval(settings.energyCheckInterval());
         state.applyMotions(0, state.x, state.v, new double[6]);
     }
 
@@ -109,6 +120,30 @@ public final class Simulation {
         return profile;
     }
 
+    /**
+     * Applies every setting: the severities, the energy check, the projection's
+     * tolerance and sweep cap, and the integrator's own ({@link Integrator#configure}:
+     * an implicit method's CG); the thread count is read by
+     * {@code parallel.Parallelism.install(Simulation)}. Takes effect at the next step.
+     */
+    public Simulation apply(SolverSettings s) {
+        settings = java.util.Objects.requireNonNull(s, "solver settings");
+        monitor.setEnergyGrowthLimit(s.energyGrowthLimit());
+        monitor.setEnergyCheckInterval(s.energyCheckInterval());
+        projection.setTolerance(s.projectionTolerance()).setMaxIterations(s.projectionMaxIterations());
+        integrator.configure(s);
+        return this;
+    }
+
+    /**
+     * The settings in force: those last applied or set through this class, with the
+     * projection's tolerance and cap as the projection holds them (its own setters
+     * may have been called). An integrator set later keeps its own CG settings.
+     */
+    public SolverSettings settings() {
+        return settings.withProjection(projection.tolerance(), projection.maxIterations());
+    }
+
     /** Simulated time, s. */
     public double time() {
         return time;
@@ -131,22 +166,22 @@ public final class Simulation {
 
     /** What a step beyond the critical step estimate does (default WARN). */
     public Simulation setStepLimitSeverity(Severity s) {
-        stepLimitSeverity = java.util.Objects.requireNonNull(s, "step limit severity");
+        settings = settings.withStepLimitSeverity(s);
         return this;
     }
 
     public Severity stepLimitSeverity() {
-        return stepLimitSeverity;
+        return settings.stepLimitSeverity();
     }
 
     /** What a projection that misses its tolerance does (default WARN). */
     public Simulation setProjectionFailureSeverity(Severity s) {
-        projectionSeverity = java.util.Objects.requireNonNull(s, "projection failure severity");
+        settings = settings.withProjectionFailureSeverity(s);
         return this;
     }
 
     public Severity projectionFailureSeverity() {
-        return projectionSeverity;
+        return settings.projectionFailureSeverity();
     }
 
     /** Where warnings go (default: standard error, prefixed "tensim: warning: "). */
@@ -161,6 +196,7 @@ public final class Simulation {
      * off (the finiteness check stays). Default 100.
      */
     public Simulation setEnergyGrowthLimit(double factor) {
+        settings = settings.withEnergyCheck(factor, settings.energyCheckInterval());
         monitor.setEnergyGrowthLimit(factor);
         return this;
     }
@@ -171,6 +207,7 @@ public final class Simulation {
 
     /** Steps between energy checks (>= 1, default 100). */
     public Simulation setEnergyCheckInterval(int steps) {
+        settings = settings.withEnergyCheck(settings.energyGrowthLimit(), steps);
         monitor.setEnergyCheckInterval(steps);
         return this;
     }
@@ -200,7 +237,17 @@ public final class Simulation {
 
     /** The step beyond which the current integrator is expected to go unstable on this state, s. */
     public double criticalStepOfIntegrator() {
-        return state.criticalTimeStep().forIntegrator(integrator);
+        return state.criticalTimeStep().forMethod(integrator.explicit(), integrator.undampedStabilityLimit());
+    }
+
+    /**
+     * The step {@link TimeStepPolicy} recommends for the current integrator on this
+     * state, from its w_max estimate (damping not counted), with how it was chosen.
+     * Scenes that know their damping (the diaphragm) ask the policy with it.
+     */
+    public TimeStep recommendedTimeStep() {
+        return TimeStepPolicy.recommend(integrator.name(), integrator.stability(), integrator.explicit(),
+                ModalBounds.undamped(state.criticalTimeStep()));
     }
 
     public void addListener(StepListener l) {
@@ -289,6 +336,7 @@ public final class Simulation {
     private void checkStepLimit(double dt) {
         checkedDt = dt;
         checkedIntegrator = integrator;
+        Severity stepLimitSeverity = settings.stepLimitSeverity();
         if (stepLimitSeverity == Severity.IGNORE || !integrator.explicit()) {
             return;
         }
@@ -307,6 +355,7 @@ public final class Simulation {
     }
 
     private void projectionFailed(double dt) {
+        Severity projectionSeverity = settings.projectionFailureSeverity();
         if (projectionSeverity == Severity.IGNORE) {
             return;
         }

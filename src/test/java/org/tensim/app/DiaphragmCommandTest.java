@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
+import org.tensim.solver.parallel.Parallelism;
 import picocli.CommandLine;
 
 /** The diaphragm command end to end on a coarse mesh, and its error messages. */
@@ -90,8 +91,8 @@ class DiaphragmCommandTest {
         // displacements.csv: a header and one row per diaphragm node per time (two times by default)
         long rows = Files.lines(out.resolve("displacements.csv")).count() - 1;
         assertEquals(2L * ((Number) s.get("diaphragm_nodes")).longValue(), rows);
-        assertEquals(((Number) s.get("springs")).intValue() >= DiaphragmCommand.AUTO_PARALLEL_SPRINGS
-                ? org.tensim.solver.parallel.Parallelism.availableCores() : 1, ((Number) s.get("threads")).intValue(),
+        assertEquals(((Number) s.get("springs")).intValue() >= Parallelism.AUTO_PARALLEL_SPRINGS
+                ? Parallelism.availableCores() : 1, ((Number) s.get("threads")).intValue(),
                 "automatic: one thread for a small scene, all cores from the threshold");
 
         // Another integrator with its CG tolerance, on one thread: the same physiology within a few mm.

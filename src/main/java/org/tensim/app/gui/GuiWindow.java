@@ -63,9 +63,10 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
      * @param configDir where last-used parameters are saved, or null not to save them
      * @param play      whether to start playing at once
      * @param startMessage a note for the status bar (e.g. why last-used parameters were not restored), or null
+     * @param threads   threads per step of a body, 0 for the automatic rule ({@link SimulationRunner})
      */
     GuiWindow(SceneFactory factory, ViewScene first, Tuning tuning, Path configDir, boolean play,
-            String startMessage) {
+            String startMessage, int threads) {
         this.factory = factory;
         this.tuning = tuning;
         this.configDir = configDir;
@@ -86,7 +87,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         view.canvas().setMinimumSize(new Dimension(200, 150));
         chart = new ProbeChart(first.defaultProbeAxis());
         controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
-        runner = new SimulationRunner(factory, tuning::snapshot, this);
+        runner = new SimulationRunner(factory, tuning::snapshot, this, threads);
         tuning.bind(runner);
 
         JPanel centre = new JPanel(new BorderLayout());

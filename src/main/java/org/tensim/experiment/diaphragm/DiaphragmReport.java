@@ -21,6 +21,7 @@ import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.stability.TimeStep;
 
 /**
  * Runs breathing cycles of a built diaphragm headless and writes, into one folder:
@@ -42,7 +43,7 @@ public final class DiaphragmReport {
      * Run settings.
      *
      * @param seconds         simulated time, s (the breathing figures need at least one inspiration)
-     * @param dtS             time step, s; 0 for the scene's recommended RK2 step
+     * @param dtS             time step, s; 0 for the step the time-step policy recommends for the integrator on the scene
      * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
      * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
      * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
@@ -82,7 +83,7 @@ public final class DiaphragmReport {
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, Path, PrintStream)} with the named integrator
-     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended RK2 step is used.
+     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended step for that integrator is used.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
             PrintStream log) throws Exception {
@@ -121,7 +122,8 @@ public final class DiaphragmReport {
     private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
             long[] workers, RunFolder out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
-        double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
+        TimeStep step = scene.timeStep(sim.integrator(), o.dtS());
+        double dt = step.seconds();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
         Snapshots snapshots = Snapshots.plan(scene, o, metrics.measuredCycleStart());
         VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.file("vtk"), "diaphragm",
@@ -135,11 +137,9 @@ public final class DiaphragmReport {
             summary.put("breathing", "not measured: the run of " + o.seconds() + " s ends before end-inspiration, "
                     + metrics.inspirationEnd() + " s");
         }
-        describeRun(summary, built, o, sim, threads, dt, metrics.measuredCycleStart(), stepping);
+        describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
         writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
-        String mark = stepping.diverged() == null ? "" : String.format(java.util.Locale.ROOT,
-                "DIVERGED at t = %.6g s (values after it are not physical): ", stepping.divergedAtS());
-        figures(out, scene, snapshots.kept, snapshots.rest, o, mark);
+        figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
         breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
             log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
@@ -236,19 +236,12 @@ public final class DiaphragmReport {
 
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
-        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
     }
 
     /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */
     private static void describeRun(Map<String, Object> summary, DiaphragmSetup.Built built, Options o,
-            Simulation sim, int threads, double dt, double measuredCycleStart, Stepping stepping) {
+            Simulation sim, int threads, TimeStep step, double measuredCycleStart, Stepping stepping) {
         DiaphragmScene scene = built.scene();
         org.tensim.solver.Integrator chosen = sim.integrator();
         double wall = stepping.wallS();
@@ -261,9 +254,8 @@ public final class DiaphragmReport {
             summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
             summary.put("cg_unconverged_solves", ie.unconvergedSolves());
         }
-        summary.put("dt_s", dt);
-        summary.put("dt_rule", o.dtS() > 0 ? "given (--dt)" : "RK2 stable step for w_max (Gershgorin) and the Rayleigh damping, x"
-                + org.tensim.scene.diaphragm.Rk2Step.SAFETY);
+        summary.put("dt_s", step.seconds());
+        summary.put("dt_rule", step.reason());
         summary.put("omega_max_bound_rad_s", round(scene.omegaMaxBound(), 1));
         summary.put("steps", sim.steps());
         summary.put("steps_per_s", round(sim.steps() / Math.max(wall, 1e-9), 1));
@@ -304,7 +296,9 @@ public final class DiaphragmReport {
     }
 
     private static void figures(RunFolder out, DiaphragmScene scene, double[][] kept, double[] rest, Options o,
-            String mark) throws IOException {
+            double divergedAt) throws IOException {
+        java.util.function.UnaryOperator<String> mark = title -> Double.isNaN(divergedAt) ? title
+                : Charts.divergedTitle(divergedAt, title);
         int nd = scene.diaphragmNodes();
         int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
         int apex = scene.apexNode();
@@ -312,22 +306,22 @@ public final class DiaphragmReport {
         double zPlane = rest[3 * apex + 2] - 0.04;
         double band = 2 * meanEdge(scene);
         if (kept[0] != null && kept[1] != null) {
-            SliceFigures.write(out.file("sagittal.png"), mark + String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 0, xPlane, band,
                     o.vectorScale());
-            SliceFigures.write(out.file("axial.png"), mark + String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 2, zPlane, band,
                     o.vectorScale());
         }
         if (kept[2] != null && kept[3] != null) {
-            SliceFigures.write(out.file("sagittal-cycle.png"), mark + String.format(java.util.Locale.ROOT,
-                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
+            SliceFigures.write(out.file("sagittal-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane)), kept[2],
                     kept[3], upper, 0, xPlane, band, 1);
-            SliceFigures.write(out.file("axial-cycle.png"), mark + String.format(java.util.Locale.ROOT,
-                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
-                    upper, 2, zPlane, band, 1);
+            SliceFigures.write(out.file("axial-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane)), kept[2],
+                    kept[3], upper, 2, zPlane, band, 1);
         }
     }
 

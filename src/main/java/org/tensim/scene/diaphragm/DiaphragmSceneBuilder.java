@@ -4,90 +4,61 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.solver.stability.ModalBounds;
 
 /**
- * Builds a {@link DiaphragmScene}: {@link #build} runs the named steps in their order (nodes,
- * tendon, membrane springs, rigid links, thickness springs, cage, attachment, muscle columns,
- * muscle, abdominal support, damping) on private state and returns everything the scene holds
- * as one {@link Parts} record (package-private; the formulas are documented on DiaphragmScene).
+ * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
+ * bending springs, rigid links, thickness springs, cage, attachment, muscle, abdominal
+ * support, damping (package-private; the formulas are documented on DiaphragmScene, the
+ * attachment band on {@link AttachmentBand}, the muscle's load on {@link MusclePressure}).
  */
 final class DiaphragmSceneBuilder {
-    /**
-     * What the steps produce: everything a {@link DiaphragmScene} holds.
-     *
-     * @param labels      tissue label per simulated node
-     * @param attached    per diaphragm node: attached to ribs, cartilage, sternum or spine
-     * @param omegaMax    Gershgorin bound on the highest angular frequency, rad/s
-     * @param timeStep    recommended RK2 step, s
-     * @param firstAnchor id of the first anchor node of the abdominal support
-     * @param addedMassKg mass added by the mass floor, kg
-     */
-    record Parts(Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage, int apex,
-            DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
-            int attachedToCartilage, int attachedToSpine, boolean[] attached, double omegaMax, double timeStep,
-            double tendonAreaFraction, int firstAnchor, double addedMassKg) {
-    }
 
-    /** Runs every step in order. */
-    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p, BreathingCycle cycle,
-            DiaphragmControls controls, List<ActionLines.Line> lines) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
-        b.nodes();
-        b.tendon();
-        b.meshSprings();
-        b.rigidLinks();
-        b.thicknessSprings();
-        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
-        b.attach();
-        b.columnLinks();
-        b.muscle(lines);
-        b.support();
-        b.damping();
-        return new Parts(b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
-                b.attachedCartilage, b.attachedSpine, b.attached, b.omegaMax, b.dt, b.tendonFraction, b.firstAnchor,
-                b.addedMass);
-    }
-
-    private final TwoSurfaces surfaces;
-    private final TriangleMesh mesh;
-    private final DiaphragmParameters p;
-    private final BreathingCycle cycle;
-    private final DiaphragmControls controls;
-    private final Topology t = new Topology();
-    private final SpringList springs = new SpringList();
-    private final int nv;
-    private final double thickness;
+    final TwoSurfaces surfaces;
+    final TriangleMesh mesh;
+    final DiaphragmParameters p;
+    final BreathingCycle cycle;
+    final DiaphragmControls controls;
+    final BoundaryConditions bc;
+    final Topology t = new Topology();
+    final SpringList springs = new SpringList();
+    final int nv;
+    final double thickness;
     /** Smallest node mass, as a fraction of the median node's. */
-    private static final double MASS_FLOOR = 0.3;
-    private double addedMass;
-    private double[] area;
-    private int[] labels;
-    private boolean[] linked;
-    private Set<Long> linkPairs = new HashSet<>();
-    private ShellNetwork network;
-    private final List<int[]> pendingColumns = new ArrayList<>();
-    private RibCage cage;
-    private int apex = -1;
-    private ActionLines lines;
-    private int attachedRibs;
-    private int attachedCartilage;
-    private int attachedSpine;
-    private boolean[] attached;
-    private double omegaMax;
-    private double dt;
-    private double tendonFraction;
-    private int firstAnchor;
-    private final List<int[]> supportSprings = new ArrayList<>();
-    private final List<Double> supportK = new ArrayList<>();
+    static final double MASS_FLOOR = 0.3;
+    double addedMass;
+    double[] area;
+    int[] labels;
+    boolean[] linked;
+    Set<Long> linkPairs = new HashSet<>();
+    ShellNetwork network;
+    final List<int[]> pendingColumns = new ArrayList<>();
+    RibCage cage;
+    int apex = -1;
+    ActionLines lines;
+    int attachedRibs;
+    int attachedCartilage;
+    int attachedSpine;
+    boolean[] attached;
+    double omegaMax;
+    ModalBounds modes;
+    double tendonFraction;
+    /** Offset of the tendon plane: points x with {@code normal . x >= tendonCut} are tendon, m. */
+    double tendonCut;
+    int firstAnchor = -1;
+    /** Zero-length springs to anchor nodes (abdominal support, attachment band) and their stiffness, N/m. */
+    final List<int[]> supportSprings = new ArrayList<>();
+    final List<Double> supportK = new ArrayList<>();
 
-    private DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl) {
+    DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl,
+            BoundaryConditions bc) {
+        this.bc = bc;
         this.surfaces = s;
         this.mesh = s.mesh();
         this.p = p;
@@ -97,7 +68,7 @@ final class DiaphragmSceneBuilder {
         this.thickness = s.thicknessM();
     }
 
-    private void nodes() {
+    void nodes() {
         area = SurfaceGeometry.vertexAreas(mesh);
         // Mass floor: a few vertices of sliver triangles (real meshes) would carry almost no mass and
         // set the highest frequency alone; their mass is raised to MASS_FLOOR times the median's.
@@ -115,7 +86,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    private void tendon() {
+    void tendon() {
         Vec3 n = p.tendonNormal();
         double cut;
         if (p.tendonPoint() != null) {
@@ -143,6 +114,7 @@ final class DiaphragmSceneBuilder {
                 }
             }
         }
+        tendonCut = cut;
         labels = new int[nv];
         double tendonArea = 0;
         double upperArea = 0;
@@ -165,7 +137,7 @@ final class DiaphragmSceneBuilder {
     }
 
     /** The faces' springs, by the tissue model (see {@link ShellNetwork}). */
-    private void meshSprings() {
+    void meshSprings() {
         network = new ShellNetwork(surfaces, area, this::young,
                 new ShellMaterial(p.muscleYoungPa(), p.poissonRatio(), thickness, p.densityKgPerM3()),
                 p.tissueModel(), p.bendingFactor());
@@ -176,7 +148,7 @@ final class DiaphragmSceneBuilder {
      * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
      * material model also the muscle's, made after the attachment ({@link #columnLinks}).
      */
-    private void rigidLinks() {
+    void rigidLinks() {
         linked = new boolean[nv];
         boolean all = p.tissueModel().rigidColumns();
         for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
@@ -196,7 +168,7 @@ final class DiaphragmSceneBuilder {
      * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
      * {@code E A / L} instead.
      */
-    private void columnLinks() {
+    void columnLinks() {
         for (int[] c : pendingColumns) {
             Node a = t.node(c[0]);
             Node b = t.node(c[1]);
@@ -209,62 +181,16 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    private void thicknessSprings() {
+    void thicknessSprings() {
         network.thickness(springs, linkPairs, linked);
     }
 
-    /**
-     * When no node is near the spine segment (a real mesh whose crura reach lower and further
-     * forward than the segment placed from the rib boxes), the crura are taken from the mesh:
-     * they are the diaphragm's lowest insertion (on the lumbar vertebrae L1-L3), so the free
-     * nodes within the attachment threshold above the mesh's lowest point are fixed.
-     */
-    private void attachCrura() {
-        double low = Double.POSITIVE_INFINITY;
-        for (int v = 0; v < nv; v++) {
-            low = Math.min(low, mesh.coord(v, 2));
-        }
-        for (int v = 0; v < nv; v++) {
-            if (!attached[v] && mesh.coord(v, 2) <= low + p.attachThresholdM()) {
-                attached[v] = true;
-                t.node(v).fix();
-                attachedSpine++;
-            }
-        }
-    }
-
-    private void attach() {
+    void attach() {
         attached = new boolean[nv];
-        List<RibCage.Segment> segs = cage.segments();
-        for (int v = 0; v < nv; v++) {
-            Vec3 q = t.node(v).position();
-            RibCage.Segment best = null;
-            double bestD = Double.POSITIVE_INFINITY;
-            for (RibCage.Segment s : segs) {
-                double d = RibCage.distance(t, s, q);
-                if (d < bestD) {
-                    bestD = d;
-                    best = s;
-                }
-            }
-            if (best == null || bestD > p.attachThresholdM()) {
-                continue;
-            }
-            attached[v] = true;
-            if (best.kind() == RibCage.Kind.RIB) {
-                t.node(v).drive(best.motion());
-                attachedRibs++;
-            } else if (best.kind() == RibCage.Kind.SPINE) {
-                t.node(v).fix();
-                attachedSpine++;
-            } else {
-                springs.add(v, best.a(), p.attachStiffness());
-                springs.add(v, best.b(), p.attachStiffness());
-                attachedCartilage++;
-            }
-        }
-        if (attachedSpine == 0) {
-            attachCrura();
+        if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
+            AttachmentBand.attach(this, bc);
+        } else {
+            ThresholdAttachment.attach(this);
         }
         int[] all = new int[t.nodeCount()];
         System.arraycopy(labels, 0, all, 0, nv);
@@ -280,28 +206,40 @@ final class DiaphragmSceneBuilder {
         labels = all;
         for (int v = 0; v < nv; v++) {
             Node n = t.node(v);
-            if (surfaces.isUpper(v) && !n.isDriven() && !n.isFixed() && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
+            boolean held = n.isDriven() || n.isFixed() || (bc.attachment() == BoundaryConditions.Attachment.BAND
+                    && attached[v]);
+            if (surfaces.isUpper(v) && !held && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
                 apex = v;
             }
         }
     }
 
-    private void muscle(List<ActionLines.Line> l) {
+    /** Nodes added from now on are anchors (fixed or driven; left out of outputs). */
+    void markFirstAnchor() {
+        if (firstAnchor < 0) {
+            firstAnchor = t.nodeCount();
+        }
+    }
+
+    /** A zero-length spring of stiffness k (N/m) from diaphragm node v to anchor node a. */
+    void tie(int v, int a, double k) {
+        supportSprings.add(new int[] {v, a});
+        supportK.add(k);
+    }
+
+    void muscle(List<ActionLines.Line> l) {
         lines = new ActionLines(l, cycle, controls);
+        double[] w = MusclePressure.weights(mesh, lines, bc.muscleLoad(), p.tendonNormal(), tendonCut, labels, area);
         for (int v = 0; v < nv; v++) {
-            if (labels[v] != DiaphragmScene.MUSCLE || t.node(v).isDriven() || t.node(v).isFixed()) {
-                continue;
-            }
-            double w = lines.weight(mesh.coord(v, 0), mesh.coord(v, 1));
-            if (w > 0) {
-                t.applyForce(t.node(v), lines.lawFor(w * area[v] / 2));
+            if (w[v] > 0 && !t.node(v).isDriven() && !t.node(v).isFixed()) {
+                t.applyForce(t.node(v), lines.lawFor(w[v]));
             }
         }
     }
 
     /** Anchors (fixed nodes, added last) and zero-length springs K A_i for the free lower-surface nodes. */
-    private void support() {
-        firstAnchor = t.nodeCount();
+    void support() {
+        markFirstAnchor();
         if (p.abdominalSupportPaPerM() == 0) {
             return;
         }
@@ -310,13 +248,11 @@ final class DiaphragmSceneBuilder {
             if (surfaces.isUpper(v) || n.isDriven() || n.isFixed()) {
                 continue;
             }
-            Node anchor = t.addNode(n.position(), n.mass()).fix();
-            supportSprings.add(new int[] {v, anchor.id()});
-            supportK.add(p.abdominalSupportPaPerM() * area[v] / 2);
+            tie(v, t.addNode(n.position(), n.mass()).fix().id(), p.abdominalSupportPaPerM() * area[v] / 2);
         }
     }
 
-    private void damping() {
+    void damping() {
         omegaMax = springs.omegaMaxBound(t, supportSprings, supportK);
         double beta = 2 * p.highDampingRatio() / omegaMax;
         springs.addTo(t, beta);
@@ -332,7 +268,7 @@ final class DiaphragmSceneBuilder {
         meanMass /= nv;
         double alpha = p.viscousPerS();
         t.setViscousDamping(alpha * meanMass);
-        dt = Rk2Step.stable(omegaMax, beta, alpha) * Rk2Step.SAFETY;
+        modes = new ModalBounds(omegaMax, beta, alpha, "Gershgorin bound");
     }
 
     private static long key(int i, int j) {

@@ -56,7 +56,8 @@ class DiaphragmSceneTest {
 
     @Test
     void massIsDensityTimesVolumeAndAttachedNodesAreNotIntegrated() throws Exception {
-        DiaphragmScene s = SceneFixture.coarse(16, 1, 2000);
+        // the paper's attachment drives or fixes the attached nodes (the band's ties: BoundaryConditionsTest)
+        DiaphragmScene s = SceneFixture.coarse(16, 1, 2000, BoundaryConditions.paper());
         Topology t = s.topology();
         TriangleMesh m = s.surfaces().mesh();
         double mass = 0;
@@ -85,8 +86,9 @@ class DiaphragmSceneTest {
 
     @Test
     void muscleForceIsTheAmplitudeTimesTheWeightedAreaAtEndInspiration() throws Exception {
+        // the paper's nodal forces (the integrated pressure: BoundaryConditionsTest)
         double pa = 2000;
-        DiaphragmScene s = SceneFixture.coarse(12, 1, pa);
+        DiaphragmScene s = SceneFixture.coarse(12, 1, pa, BoundaryConditions.paper());
         SystemState st = SystemState.compile(s.topology());
         // Only the external laws: no springs stretched at rest, so forces at rest are the muscle's alone.
         ForceModel fm = new ForceModel(st);
