@@ -100,7 +100,7 @@ public final class SpecReader {
         String file = null;
         String units = "mm";
         double thicknessMm = 2.5;
-        int rings = org.tensim.scene.tunable.DiaphragmViewScene.DEFAULT_RINGS;
+        int rings = GuiScenes.Source.defaults().rings();
         if (mesh != null) {
             if (!scene.equals("diaphragm")) {
                 throw fail("mesh", mesh, "no mesh: scene '" + scene + "' is built in");
