@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.bench.RealTimeSetting;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
@@ -123,8 +124,23 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: 1e-12)")
     Double cgTolerance;
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: the stable RK2 step of the scene)")
-    double dt = 0;
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s, > 0 and at most one breathing period (default: the stable RK2 step of the scene)")
+    Double dtOption;
+
+    @Option(names = "--realtime",
+            description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
+                    + " default mesh (the large-step BDF2, all cores); the summary names it and its measured error")
+    boolean realtime;
+
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+            description = "--realtime-study only: ring counts, ascending (default: 10,14,20,28,43)")
+    int[] studyRings;
+
+    @Option(names = "--study-configs", paramLabel = "REGEX",
+            description = "--realtime-study only: run the configurations whose label this finds (RK2 on two threads,"
+                    + " the reference of each resolution, always runs)")
+    String studyConfigs;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
             description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE})")
@@ -146,9 +162,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean resolutionStudy;
 
     @Option(names = "--realtime-study",
-            description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads) and implicit Euler"
-                    + " at 5, 10, 20 ms, one inspiration each, error against the paper's configuration vs speed"
-                    + " (docs/diaphragm.md)")
+            description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler"
+                    + " at 5, 10, 20 ms and BDF2 at 5-25 ms, --seconds each (at most one period), error against RK2"
+                    + " at the same mesh and against the paper's configuration vs speed (docs/diaphragm.md)")
     boolean realtimeStudy;
 
     @Override
@@ -166,6 +182,21 @@ public final class DiaphragmCommand implements Callable<Integer> {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(),
                     "--threads must be 0 (automatic) or more, got " + threads);
         }
+        if (dtOption != null && !(dtOption > 0 && dtOption <= period)) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--dt must be > 0 s and at most one"
+                    + " breathing period (--period " + period + " s), got " + dtOption + " s");
+        }
+        RealTimeSetting setting = null;
+        if (realtime) {
+            if (dtOption != null || cgTolerance != null || !integrator.equals("rk2")) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
+                                + " --cg-tolerance");
+            }
+            setting = RealTimeSetting.DEFAULT_MESH;
+            chosen = setting.newIntegrator();
+        }
+        double dt = setting != null ? setting.dtS() : dtOption != null ? dtOption : 0;
         MeshUnits u = MeshUnits.parse(units);
         DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
                 .withTendonAreaFraction(tendonFraction);
@@ -179,8 +210,25 @@ public final class DiaphragmCommand implements Callable<Integer> {
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
         DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
+        if (studyRings != null) {
+            for (int i = 0; i < studyRings.length; i++) {
+                if (studyRings[i] < 4 || (i > 0 && studyRings[i] <= studyRings[i - 1])) {
+                    throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--study-rings must be"
+                            + " ascending ring counts of 4 or more, got " + java.util.Arrays.toString(studyRings));
+                }
+            }
+        }
         if (realtimeStudy) {
-            Map<String, Object> s = RealTimeStudy.run(boxes, p, cycle, controls, seconds, out, System.out);
+            java.util.regex.Pattern only;
+            try {
+                only = studyConfigs == null ? null : java.util.regex.Pattern.compile(studyConfigs);
+            } catch (java.util.regex.PatternSyntaxException e) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
+                                + "'");
+            }
+            Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
+                    boxes, p, cycle, controls, seconds, out, System.out);
             System.out.println(Json.line(s));
             return 0;
         }
@@ -199,9 +247,16 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
+                : setting != null || built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
                         ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
+        if (setting != null) {
+            System.out.println("realtime: " + setting.describe()
+                    + (mesh.equals(DiaphragmSetup.DEFAULT_MESH) ? "" : "; this mesh (" + mesh + ") was not measured"));
+        }
         Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, n, out, System.out);
+        if (setting != null) {
+            summary.put("realtime_setting", setting.toMap());
+        }
         System.out.println(Json.line(summary));
         return 0;
     }
