@@ -256,6 +256,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, n, out, System.out);
         if (setting != null) {
             summary.put("realtime_setting", setting.toMap());
+            Json.write(out.resolve("summary.json"), summary);
         }
         System.out.println(Json.line(summary));
         return 0;

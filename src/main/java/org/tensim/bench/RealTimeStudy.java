@@ -102,7 +102,7 @@ public final class RealTimeStudy {
                     () -> Integrators.create(PrefactoredBdf2.NAME), h, 2, false));
         }
         for (double h : BDF2_STEPS) {
-            c.add(new Config(String.format(Locale.ROOT, "bdf2 at %.0f ms, %d CG / 2 threads", 1e3 * h,
+            c.add(new Config(String.format(Locale.ROOT, "bdf2 at %.0f ms with %d CG / 2 threads", 1e3 * h,
                     BDF2_MORE_CG), () -> new PrefactoredBdf2().setKrylovIterations(BDF2_MORE_CG), h, 2, false));
         }
         return c;
