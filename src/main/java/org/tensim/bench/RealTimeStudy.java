@@ -62,6 +62,10 @@ public final class RealTimeStudy {
     static final double[] BDF2_STEPS = {0.005, 0.01, 0.02, 0.025};
     /** CG iterations per step of the more accurate BDF2 rows (the default is {@link PrefactoredBdf2#DEFAULT_KRYLOV_ITERATIONS}). */
     static final int BDF2_MORE_CG = 8;
+    /** Newton iterations of the most accurate BDF2 rows (the default is one: a linearly implicit step). */
+    static final int[] BDF2_NEWTON = {3, 6};
+    /** Steps of those rows, s. */
+    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01};
     /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime} (issue 10). */
     public static final double TOLERANCE = 0.05;
     /** Difference of the apex's descent from RK2's accepted by {@code --realtime}, mm. */
@@ -104,6 +108,13 @@ public final class RealTimeStudy {
         for (double h : BDF2_STEPS) {
             c.add(new Config(String.format(Locale.ROOT, "bdf2 at %.0f ms with %d CG / 2 threads", 1e3 * h,
                     BDF2_MORE_CG), () -> new PrefactoredBdf2().setKrylovIterations(BDF2_MORE_CG), h, 2, false));
+        }
+        for (int newton : BDF2_NEWTON) {
+            for (double h : BDF2_NEWTON_STEPS) {
+                c.add(new Config(String.format(Locale.ROOT, "bdf2 at %.0f ms with %d Newton x %d CG / 2 threads",
+                        1e3 * h, newton, BDF2_MORE_CG), () -> new PrefactoredBdf2().setNewtonIterations(newton)
+                                .setKrylovIterations(BDF2_MORE_CG), h, 2, false));
+            }
         }
         return c;
     }
