@@ -15,6 +15,9 @@ import org.tensim.model.Topology;
  * with Hipparchus' conjugate gradients (Jacobi preconditioner), K applied spring by spring,
  * {@code K_ij = -k n n^T} for a spring of stiffness k along the unit vector n between its nodes
  * (no prestress: every spring at its rest length). Fixed degrees of freedom have u = 0.
+ * Rigid links (disjoint) are kept to first order, {@code n . (u_b - u_a) = 0}, by tying the
+ * component of u_b along the link's direction n to u_a's: CG runs on {@code T^T K T} with
+ * {@code u = T z}.
  */
 public final class LinearStatics {
     /**
@@ -36,6 +39,7 @@ public final class LinearStatics {
      */
     public static Solution solve(Topology t, boolean[] fixed, double[] forceN, double tolerance) {
         int n = 3 * t.nodeCount();
+        Ties ties = new Ties(t, fixed);
         List<Spring> springs = t.springs();
         int m = springs.size();
         int[] a = new int[m];
@@ -78,7 +82,8 @@ public final class LinearStatics {
 
             @Override
             public RealVector operate(RealVector v) {
-                double[] x = v.toArray();
+                double[] z = v.toArray();
+                double[] x = ties.expand(z);
                 double[] y = new double[n];
                 for (int s = 0; s < m; s++) {
                     double dx = dof(x, fixed, 3 * b[s]) - dof(x, fixed, 3 * a[s]);
@@ -95,9 +100,10 @@ public final class LinearStatics {
                     y[3 * b[s] + 1] += fy;
                     y[3 * b[s] + 2] += fz;
                 }
+                ties.reduce(y, z);
                 for (int i = 0; i < n; i++) {
                     if (fixed[i]) {
-                        y[i] = x[i];
+                        y[i] = z[i];
                     }
                 }
                 return new ArrayRealVector(y, false);
@@ -107,11 +113,78 @@ public final class LinearStatics {
         for (int i = 0; i < n; i++) {
             rhs[i] = fixed[i] ? 0 : rhs[i];
         }
+        ties.reduce(rhs, new double[n]);
         int cap = 20 * n + 1000;
         IterationManager im = new IterationManager(cap);
         ConjugateGradient cg = new ConjugateGradient(im, tolerance, false);
         RealVector u = cg.solve(k, new JacobiPreconditioner(diag, false), new ArrayRealVector(rhs, false));
-        return new Solution(u.toArray(), im.getIterations());
+        return new Solution(ties.expand(u.toArray()), im.getIterations());
+    }
+
+    /** The rigid links as ties: u = T z and T^T y, in place of the links' lower ends' components along n. */
+    private static final class Ties {
+        private final int[] a;
+        private final int[] b;
+        private final double[] dir;
+
+        Ties(Topology t, boolean[] fixed) {
+            int m = t.rigidLinks().size();
+            a = new int[m];
+            b = new int[m];
+            dir = new double[3 * m];
+            boolean[] used = new boolean[t.nodeCount()];
+            for (int i = 0; i < m; i++) {
+                a[i] = t.rigidLinks().get(i).a();
+                b[i] = t.rigidLinks().get(i).b();
+                if (used[a[i]] || used[b[i]]) {
+                    throw new IllegalArgumentException("rigid link " + i + " shares a node with another link; the "
+                            + "statics solver needs disjoint links");
+                }
+                used[a[i]] = true;
+                used[b[i]] = true;
+                org.tensim.model.Vec3 d = t.node(b[i]).position().minus(t.node(a[i]).position()).normalized();
+                dir[3 * i] = d.x();
+                dir[3 * i + 1] = d.y();
+                dir[3 * i + 2] = d.z();
+                for (int k = 0; k < 3; k++) {
+                    if (fixed[3 * b[i] + k] && !fixed[3 * a[i] + k]) {
+                        throw new IllegalArgumentException("node " + b[i] + " is fixed but its link's other end " + a[i]
+                                + " is not: fix the link's first node");
+                    }
+                }
+            }
+        }
+
+        /** x = T z: the lower ends take the upper ends' components along the links. */
+        double[] expand(double[] z) {
+            double[] x = z.clone();
+            for (int i = 0; i < a.length; i++) {
+                double s = 0;
+                for (int k = 0; k < 3; k++) {
+                    s += dir[3 * i + k] * (z[3 * a[i] + k] - z[3 * b[i] + k]);
+                }
+                for (int k = 0; k < 3; k++) {
+                    x[3 * b[i] + k] += dir[3 * i + k] * s;
+                }
+            }
+            return x;
+        }
+
+        /** y = T^T y, plus the identity on each tied-away direction (z's) so that the operator stays definite. */
+        void reduce(double[] y, double[] z) {
+            for (int i = 0; i < a.length; i++) {
+                double s = 0;
+                double dead = 0;
+                for (int k = 0; k < 3; k++) {
+                    s += dir[3 * i + k] * y[3 * b[i] + k];
+                    dead += dir[3 * i + k] * z[3 * b[i] + k];
+                }
+                for (int k = 0; k < 3; k++) {
+                    y[3 * a[i] + k] += dir[3 * i + k] * s;
+                    y[3 * b[i] + k] += dir[3 * i + k] * (dead - s);
+                }
+            }
+        }
     }
 
     private static double dof(double[] x, boolean[] fixed, int i) {

@@ -89,7 +89,7 @@ public final class ShellStatics {
         }
         fixed[3 * mid + 1] = true;
         fixed[3 * (mid + nv / 2) + 1] = true;
-        fixed[3 * (mid + nv / 2) + 2] = true;
+        fixed[3 * mid + 2] = true; // the upper node: a rigid column ties the lower one to it
         LinearStatics.Solution sol = LinearStatics.solve(t, fixed, f, TOLERANCE);
         double[] u = sol.displacementM();
         double exact = sigmaPa / m.youngPa();

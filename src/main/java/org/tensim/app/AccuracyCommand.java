@@ -14,6 +14,8 @@ import org.tensim.analysis.ShellStudy;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
@@ -34,12 +36,16 @@ import picocli.CommandLine.Option;
             "The last line is one JSON object with, per integrator, `order` (first",
             "scene), `expected_order` and `order_by_scene`, and `shell` (the static section)."})
 public final class AccuracyCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
             description = "scenes (default: all of ${COMPLETION-CANDIDATES})", completionCandidates = SceneNames.class)
     List<String> scenes = AccuracyScenes.names();
 
     @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all)")
+            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+            completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
     @Option(names = "--dt", paramLabel = "S", description = "largest time step of the ladder, s (default: the scene's)")
@@ -68,7 +74,7 @@ public final class AccuracyCommand implements Callable<Integer> {
     }
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws Exception {
         for (String s : scenes) {
             AccuracyScenes.get(s); // fail on a bad name before any work
         }
@@ -87,6 +93,17 @@ public final class AccuracyCommand implements Callable<Integer> {
         if (rungs != null && rungs < 2) {
             throw new IllegalArgumentException("--rungs must be at least 2, got " + rungs);
         }
+        if (largestDt != null) {
+            for (String name : scenes) {
+                CommandChecks.stepFits(spec, "--dt", largestDt, "the end time of scene " + name,
+                        AccuracyScenes.get(name).endTimeS());
+            }
+        }
+        CommandChecks.outFolder(spec, out);
+        return RunFolder.run(out, "accuracy", List.of(), run -> study(run, shellModel));
+    }
+
+    private void study(RunFolder run, TissueModel shellModel) throws IOException {
         Map<String, Map<String, Double>> byScene = new LinkedHashMap<>();
         for (String name : scenes) {
             var scene = AccuracyScenes.get(name);
@@ -95,7 +112,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                         rungs != null ? rungs : scene.rungs());
             }
             AccuracyStudy.Result r = AccuracyStudy.run(scene, integrators, System.out::println);
-            write(r);
+            write(r, run);
             byScene.put(name, r.measuredOrder());
             System.out.println(name + ": measured order (slope of log error against log dt, asymptotic range "
                     + String.format("%.1e", r.floorM()) + " to " + String.format("%.1e", r.ceilingM()) + " m):");
@@ -115,22 +132,23 @@ public final class AccuracyCommand implements Callable<Integer> {
             json.put(i, e);
         }
         if (shellModel != null) {
-            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println), out));
+            json.put("shell", ShellAccuracyReport.run(ShellStudy.run(shellModel, shellRings, System.out::println),
+                    run));
         }
+        run.finish(RunStatus.OK, json);
         System.out.println(Json.line(json));
-        return 0;
     }
 
     private static Double round(double v) {
         return Double.isFinite(v) ? Math.round(v * 1000) / 1000.0 : null;
     }
 
-    private void write(AccuracyStudy.Result r) throws IOException {
+    private void write(AccuracyStudy.Result r, RunFolder folder) throws IOException {
         String name = r.scene().name();
-        Path csv = out.resolve("accuracy-" + name + ".csv");
+        Path csv = folder.dir().resolve("accuracy-" + name + ".csv");
         List<String> header = List.of("integrator", "dt_s", "error_m", "wall_s", "force_evaluations",
                 "cg_products", "steps", "beyond_critical_step", "diverged");
-        try (CsvWriter w = new CsvWriter(csv, header, 1)) {
+        try (CsvWriter w = folder.csv("accuracy-" + name + ".csv", header, 1)) {
             for (AccuracyStudy.Run run : r.runs()) {
                 w.rowText(run.integrator(), Double.toString(run.dtS()), Double.toString(run.errorM()),
                         Double.toString(run.wallS()), Long.toString(run.forceEvaluations()),
@@ -174,10 +192,10 @@ public final class AccuracyCommand implements Callable<Integer> {
                 series.setMarkerColor(color);
             }
         }
-        Charts.savePng(work, out.resolve(name + "-work-precision.png"));
-        Charts.savePng(conv, out.resolve(name + "-convergence.png"));
-        Charts.savePng(evals, out.resolve(name + "-evaluations.png"));
-        System.out.println("wrote " + csv + ", " + out.resolve(name + "-work-precision.png") + ", "
-                + out.resolve(name + "-convergence.png"));
+        Charts.savePng(work, folder.file(name + "-work-precision.png"));
+        Charts.savePng(conv, folder.file(name + "-convergence.png"));
+        Charts.savePng(evals, folder.file(name + "-evaluations.png"));
+        System.out.println("wrote " + csv + ", " + folder.dir().resolve(name + "-work-precision.png") + ", "
+                + folder.dir().resolve(name + "-convergence.png"));
     }
 }

@@ -3,7 +3,10 @@ package org.tensim.app;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.tensim.experiment.CubeReport;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.scene.CubeParameters;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -15,6 +18,9 @@ import picocli.CommandLine.Option;
             "and prints the summary as the last line (JSON). Defaults: docs/cube.md."})
 public final class CubeCommand implements Callable<Integer> {
     private static final CubeParameters D = CubeParameters.paper();
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
     Path out = Path.of("out", "cube");
@@ -46,18 +52,30 @@ public final class CubeCommand implements Callable<Integer> {
     @Option(names = "--mass", paramLabel = "KG", description = "mass of every node, kg (default: ${DEFAULT-VALUE})")
     double mass = D.nodeMassKg();
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Override
     public Integer call() throws Exception {
-        CubeParameters p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt,
-                duration);
-        CubeReport report = CubeReport.run(p, integrator, out);
-        System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
-        System.out.println(report.summaryLine());
-        return 0;
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--duration", duration, "s");
+        CommandChecks.stepFits(spec, "--dt", dt, "--duration", duration);
+        CubeParameters p;
+        try {
+            p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt, duration);
+            org.tensim.solver.integrators.Integrators.create(integrator);
+        } catch (IllegalArgumentException e) {
+            throw CommandChecks.usage(spec, e.getMessage());
+        }
+        return RunFolder.run(out, "cube", CubeReport.OUTPUTS, run -> {
+            CubeReport report = CubeReport.run(p, integrator, run);
+            System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
+            if (report.status() == RunStatus.DIVERGED) {
+                spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged")
+                        + " (the CSV ends at the last finite step; the chart is marked DIVERGED)");
+            }
+            System.out.println(report.summaryLine());
+        });
     }
 }

@@ -9,15 +9,20 @@ import org.tensim.bench.RealTimeSetting;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -50,7 +55,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " rib cage, placed on the generated dome)")
     Path boxes;
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s; the breathing figures need one"
+            + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
     double seconds = 4;
 
     @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
@@ -73,6 +79,25 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm"
                     + " (default: ${DEFAULT-VALUE})")
     double attachMm = DiaphragmParameters.defaults().attachThresholdM() * 1e3;
+
+    @Option(names = "--attachment", paramLabel = "MODEL",
+            description = "band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
+                    + " within the threshold driven with the ribs) (default: ${DEFAULT-VALUE})")
+    String attachment = "band";
+
+    @Option(names = "--band-stiffness", paramLabel = "PA_PER_M",
+            description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: ${DEFAULT-VALUE})")
+    double bandPaPerM = BoundaryConditions.DEFAULT_BAND_PA_PER_M;
+
+    @Option(names = "--band-all-segments",
+            description = "attachment band: attach to every cage segment within the threshold, not only to the"
+                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
+    boolean allSegments;
+
+    @Option(names = "--muscle-load", paramLabel = "MODEL",
+            description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
+                    + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
+    String muscleLoad = "pressure";
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
             description = "mesh cleaning: vertices closer than this are merged, mm (default: ${DEFAULT-VALUE})")
@@ -102,21 +127,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
     List<ActionLines.Line> actionLines;
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
-
-    /**
-     * Springs from which the automatic thread count uses every core: the real-time study
-     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
-     * up, and a third slower at 12,144 (14 rings) and below.
-     */
-    static final int AUTO_PARALLEL_SPRINGS = 20_000;
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "
-                    + AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
     int threads = 0;
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
@@ -125,12 +142,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
     Double cgTolerance;
 
     @Option(names = "--dt", paramLabel = "S",
-            description = "time step, s, > 0 and at most one breathing period (default: the stable RK2 step of the scene)")
-    Double dtOption;
+            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
+                    + " this scene; summary.json's dt_rule says how it was chosen)")
+    double dt = 0;
 
     @Option(names = "--realtime",
             description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
-                    + " default mesh (the large-step BDF2, all cores); the summary names it and its measured error")
+                    + " default mesh, on all cores; the summary names it and its measured error")
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
@@ -161,10 +179,29 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "run the resolution study instead (docs/diaphragm.md); uses --seconds per resolution")
     boolean resolutionStudy;
 
+    @Option(names = "--tolerance", paramLabel = "E",
+            description = "resolution study: relative RMS error under which a coarser model is accepted"
+                    + " (default: ${DEFAULT-VALUE})")
+    double tolerance = ResolutionStudy.TOLERANCE;
+
+    @Option(names = "--cells", paramLabel = "MM", split = ",",
+            description = "resolution study with --mesh: vertex-clustering cell sizes, mm (default: 4, 2.8 and 2"
+                    + " times the mesh's mean edge length)")
+    double[] cellsMm;
+
+    @Option(names = "--refine", paramLabel = "N",
+            description = "resolution study with --mesh: also the mesh refined 1..N times by midpoint subdivision"
+                    + " (default: ${DEFAULT-VALUE})")
+    int refine;
+
+    @Option(names = "--no-pick", description = "resolution study: do not write the pick to meshes/"
+            + "resolution-pick.json (it still goes to --out)")
+    boolean noPick;
+
     @Option(names = "--realtime-study",
-            description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler"
-                    + " at 5, 10, 20 ms and BDF2 at 5-25 ms, --seconds each (at most one period), error against RK2"
-                    + " at the same mesh and against the paper's configuration vs speed (docs/diaphragm.md)")
+            description = "run the real-time study instead: 10 to 43 rings, RK2 (1 and 2 threads) and implicit Euler"
+                    + " at 5, 10, 20 ms, one inspiration each, error against the paper's configuration vs speed"
+                    + " (docs/diaphragm.md)")
     boolean realtimeStudy;
 
     @Override
@@ -178,38 +215,28 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
             ie.setTolerance(cgTolerance);
         }
-        if (threads < 0) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--threads must be 0 (automatic) or more, got " + threads);
+        CommandChecks.threads(spec, "--threads", threads, true);
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--seconds", seconds, "s");
+        if (dt < 0 || dt > period) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--dt must be > 0 s (or 0 for the"
+                    + " recommended step) and at most one breathing period (--period " + period + " s), got " + dt
+                    + " s");
         }
-        if (dtOption != null && !(dtOption > 0 && dtOption <= period)) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--dt must be > 0 s and at most one"
-                    + " breathing period (--period " + period + " s), got " + dtOption + " s");
+        if (dt != 0) {
+            CommandChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
         }
         RealTimeSetting setting = null;
         if (realtime) {
-            if (dtOption != null || cgTolerance != null || !integrator.equals("rk2")) {
+            if (dt != 0 || cgTolerance != null || !integrator.equals("rk2")) {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(),
                         "--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
                                 + " --cg-tolerance");
             }
             setting = RealTimeSetting.DEFAULT_MESH;
             chosen = setting.newIntegrator();
+            dt = setting.dtS();
         }
-        double dt = setting != null ? setting.dtS() : dtOption != null ? dtOption : 0;
-        MeshUnits u = MeshUnits.parse(units);
-        DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
-                .withTendonAreaFraction(tendonFraction);
-        if (tendonNormal != null || tendonPointMm != null) {
-            Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
-            Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
-            p = p.withTendonPlane(normal, point);
-        }
-        MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
-        List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
-        BreathingCycle cycle = new BreathingCycle(period, ieRatio);
-        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
-        DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         if (studyRings != null) {
             for (int i = 0; i < studyRings.length; i++) {
                 if (studyRings[i] < 4 || (i > 0 && studyRings[i] <= studyRings[i - 1])) {
@@ -218,48 +245,116 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 }
             }
         }
+        java.util.regex.Pattern only;
+        try {
+            only = studyConfigs == null ? null : java.util.regex.Pattern.compile(studyConfigs);
+        } catch (java.util.regex.PatternSyntaxException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
+                            + "'");
+        }
+        MeshUnits u = MeshUnits.parse(units);
+        DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
+                .withTendonAreaFraction(tendonFraction);
+        if (tendonNormal != null || tendonPointMm != null) {
+            Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
+            Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
+            p = p.withTendonPlane(normal, point);
+        }
+        BoundaryConditions bc;
+        try {
+            bc = new BoundaryConditions(BoundaryConditions.parse(BoundaryConditions.Attachment.class, attachment),
+                    bandPaPerM, BoundaryConditions.DEFAULT_TAPER_M,
+                    BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad), !allSegments);
+        } catch (IllegalArgumentException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--attachment, --band-stiffness,"
+                    + " --muscle-load: " + e.getMessage());
+        }
+        MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
+        List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
+        BreathingCycle cycle = new BreathingCycle(period, ieRatio);
+        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
+        DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
+        final DiaphragmParameters params = p;
         if (realtimeStudy) {
-            java.util.regex.Pattern only;
-            try {
-                only = studyConfigs == null ? null : java.util.regex.Pattern.compile(studyConfigs);
-            } catch (java.util.regex.PatternSyntaxException e) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                        "--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
-                                + "'");
-            }
-            Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
-                    boxes, p, cycle, controls, seconds, out, System.out);
-            System.out.println(Json.line(s));
-            return 0;
+            return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
+                registerAll(run, REALTIME_OUTPUTS);
+                Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
+                        boxes, params, cycle, controls, seconds, out, System.out);
+                System.out.println(Json.line(run.finish(RunStatus.OK, s)));
+            });
         }
         if (resolutionStudy) {
-            Map<String, Object> s = ResolutionStudy.run(boxes, p, cycle, controls, o, out, System.out);
-            System.out.println(Json.line(s));
-            return 0;
+            if (refine < 0 || cellsMm != null && java.util.Arrays.stream(cellsMm).anyMatch(c -> !(c > 0))) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--refine must be 0 or more and --cells positive sizes in mm, got " + refine + " and "
+                                + java.util.Arrays.toString(cellsMm));
+            }
+            ResolutionStudy.Setup rs;
+            try {
+                rs = new ResolutionStudy.Setup(DiaphragmSetup.boxes(boxes), p, bc, cycle, controls,
+                        Math.min(seconds, cycle.inspirationS()), tolerance, System.out);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--tolerance: " + e.getMessage());
+            }
+            boolean ownMesh = !mesh.equals(DiaphragmSetup.DEFAULT_MESH);
+            return RunFolder.run(out, "diaphragm --resolution-study", RESOLUTION_OUTPUTS, run -> {
+                registerAll(run, RESOLUTION_OUTPUTS);
+                Map<String, Object> s = ownMesh
+                        ? ResolutionStudy.runMesh(mesh, u, cleaning, thicknessMm * 1e-3, cellsMm, refine, rs, out)
+                        : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
+                System.out.println(Json.line(run.finish(RunStatus.OK, s)));
+            });
         }
+        final org.tensim.solver.Integrator integratorUsed = chosen;
+        final RealTimeSetting named = setting;
+        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, bc, cleaning,
+                lines, cycle, controls, o, integratorUsed, named));
+    }
+
+    /** Outputs of the studies, written by the study classes themselves into --out. */
+    static final List<String> REALTIME_OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
+    static final List<String> RESOLUTION_OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
+            "resolution-pick.json");
+
+    private static void registerAll(RunFolder run, List<String> names) throws java.io.IOException {
+        for (String n : names) {
+            run.file(n);
+        }
+    }
+
+    private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, BoundaryConditions bc,
+            MeshCleaner.Options cleaning,
+            List<ActionLines.Line> lines, BreathingCycle cycle, DiaphragmControls controls, DiaphragmReport.Options o,
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting) throws Exception {
         DiaphragmSetup.Built built;
         if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
-            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls);
+            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls, bc);
         } else {
-            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls);
+            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls, bc);
         }
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : setting != null || built.scene().topology().springs().size() >= AUTO_PARALLEL_SPRINGS
-                        ? org.tensim.solver.parallel.Parallelism.availableCores() : 1;
+                : setting != null ? org.tensim.solver.parallel.Parallelism.availableCores()
+                        : org.tensim.solver.parallel.Parallelism.automaticThreads(
+                                built.scene().topology().springs().size());
         if (setting != null) {
             System.out.println("realtime: " + setting.describe()
                     + (mesh.equals(DiaphragmSetup.DEFAULT_MESH) ? "" : "; this mesh (" + mesh + ") was not measured"));
         }
-        Map<String, Object> summary = DiaphragmReport.run(built, o, chosen, n, out, System.out);
+        Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         if (setting != null) {
-            summary.put("realtime_setting", setting.toMap());
-            Json.write(out.resolve("summary.json"), summary);
+            fields.put("realtime_setting", setting.toMap());
+        }
+        Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
+                fields);
+        if (fields.containsKey("diverged")) {
+            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
+                    + " (outputs up to that step are in " + out + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));
-        return 0;
     }
 
     private Vec3 vector(String option, double[] v, double scale) {

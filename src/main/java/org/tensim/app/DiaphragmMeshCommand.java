@@ -1,6 +1,5 @@
 package org.tensim.app;
 
-import org.tensim.io.ProjectFolder;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -14,21 +13,36 @@ import picocli.CommandLine.Option;
 /** {@code tensim diaphragm-mesh}: writes the project's parametric double-dome diaphragm as OBJ (mm). */
 @Command(name = "diaphragm-mesh", mixinStandardHelpOptions = true,
         description = {"Generates the parametric double-dome diaphragm (a thin closed shell,",
-            "BodyParts3D frame, millimetres) and writes it as OBJ. The defaults",
-            "reproduce meshes/diaphragm-default.obj."})
+            "BodyParts3D frame, millimetres) and writes it as OBJ (mode 0644, written",
+            "whole then renamed). The defaults reproduce the committed",
+            "meshes/diaphragm-default.obj; the command writes under out/ unless --out says",
+            "otherwise."})
 public final class DiaphragmMeshCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--rings", paramLabel = "N",
-            description = "rings per face (resolution; 43 gives about the paper's 11,359 nodes) (default: ${DEFAULT-VALUE})")
+            description = "rings per face (resolution; 43 gives about the paper's 11,359 nodes), 2 to "
+                    + DoubleDomeGenerator.MAX_RINGS + " (default: ${DEFAULT-VALUE})")
     int rings = 43;
 
     @Option(names = "--thickness", paramLabel = "MM", description = "shell thickness, mm (default: ${DEFAULT-VALUE})")
     double thicknessMm = 2.5;
 
     @Option(names = "--out", paramLabel = "FILE", description = "OBJ file to write (default: ${DEFAULT-VALUE})")
-    Path out = ProjectFolder.resolve("meshes", "diaphragm-default.obj");
+    Path out = Path.of("out", "diaphragm-mesh", "diaphragm-default.obj");
 
     @Override
     public Integer call() throws Exception {
+        if (rings < 2 || rings > DoubleDomeGenerator.MAX_RINGS) {
+            throw CommandChecks.usage(spec, "--rings " + rings + ": expected 2 to "
+                    + DoubleDomeGenerator.MAX_RINGS);
+        }
+        CommandChecks.positive(spec, "--thickness", thicknessMm, "mm");
+        if (out.toString().isBlank() || java.nio.file.Files.isDirectory(out)) {
+            throw CommandChecks.usage(spec, "--out must name an OBJ file to write, got '" + out + "'"
+                    + (out.toString().isBlank() ? " (empty)" : " (a folder)"));
+        }
         DoubleDomeGenerator.Shape s = DoubleDomeGenerator.Shape.adult().withRings(rings).withThickness(thicknessMm * 1e-3);
         TriangleMesh m = DoubleDomeGenerator.shell(s);
         ObjWriter.write(out, m, MeshUnits.MM, List.of("tensim parametric double-dome diaphragm (docs/diaphragm.md)",

@@ -22,10 +22,11 @@ final class ShellAccuracyReport {
     private ShellAccuracyReport() {
     }
 
-    static Map<String, Object> run(ShellStudy.Result r, Path out) throws IOException {
+    static Map<String, Object> run(ShellStudy.Result r, org.tensim.io.RunFolder out) throws IOException {
         String model = r.model().name().toLowerCase();
-        Path csv = out.resolve("shell-" + model + ".csv");
-        try (CsvWriter w = new CsvWriter(csv, List.of("scene", "mesh", "element_size_m", "nodes", "measured",
+        Path csv = out.dir().resolve("shell-" + model + ".csv");
+        try (CsvWriter w = out.csv("shell-" + model + ".csv", List.of(
+                "scene", "mesh", "element_size_m", "nodes", "measured",
                 "exact", "relative_error", "largest_element_deviation"), 1)) {
             r.patch().forEach((p, cases) -> cases.forEach(c -> row(w, "patch", p.name().toLowerCase(), c)));
             r.plate().forEach(c -> row(w, "plate", "rings", c));
@@ -39,7 +40,7 @@ final class ShellAccuracyReport {
             add(chart, "patch test, " + e.getKey().name().toLowerCase() + " (order "
                     + String.format("%.2f", ShellStatics.order(e.getValue())) + ")", e.getValue(), false);
         }
-        Path png = out.resolve("shell-" + model + "-convergence.png");
+        Path png = out.file("shell-" + model + "-convergence.png");
         Charts.savePng(chart, png);
         System.out.println(String.format("shell (%s): plate error against Kirchhoff, measured order %.2f; change "
                 + "between successive meshes, measured order %.2f", model, r.plateOrder(), r.selfOrder()));

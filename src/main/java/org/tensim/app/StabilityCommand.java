@@ -9,11 +9,14 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.knowm.xchart.XYChart;
 import org.tensim.analysis.StabilityStudy;
-import org.tensim.analysis.StabilityTheory;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.stability.LinearStability;
+import org.tensim.solver.stability.StabilityTheory;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -29,8 +32,12 @@ import picocli.CommandLine.Option;
             "the `theory_omega_h` of the undamped spring (null = stable at every step",
             "tried, flagged by `stable_at_every_step`)."})
 public final class StabilityCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all)")
+            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+            completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
     @Option(names = "--omega", split = ",", paramLabel = "W[,W...]",
@@ -51,7 +58,7 @@ public final class StabilityCommand implements Callable<Integer> {
     private static final double TOL = 1e-4;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() throws Exception {
         for (String i : integrators) {
             Integrators.create(i);
         }
@@ -68,7 +75,15 @@ public final class StabilityCommand implements Callable<Integer> {
         if (periods < 1) {
             throw new IllegalArgumentException("--periods must be at least 1, got " + periods);
         }
-        Path csv = out.resolve("stability.csv");
+        CommandChecks.outFolder(spec, out);
+        return RunFolder.run(out, "stability", OUTPUTS, this::study);
+    }
+
+    /** The files this command writes into --out (docs/outputs.md). */
+    static final List<String> OUTPUTS = List.of("stability.csv", "stability-omega.png", "stability-damping.png");
+
+    private void study(RunFolder run) throws IOException {
+        Path csv = run.dir().resolve("stability.csv");
         Map<String, Object> json = new LinkedHashMap<>();
         XYChart byOmega = Charts.lineChart("Largest stable step on an undamped spring (points: measured, "
                 + "lines: theory)", "w = sqrt(k/m) (rad/s)", "critical time step h (s)", 900, 600);
@@ -76,13 +91,15 @@ public final class StabilityCommand implements Callable<Integer> {
                 + "dashed: theory)", "damping ratio zeta", "critical w h", 900, 600);
         Charts.logLog(byOmega);
         byZeta.getStyler().setYAxisLogarithmic(true);
-        try (CsvWriter w = new CsvWriter(csv, List.of("integrator", "omega_rad_s", "zeta", "measured_omega_h",
+        try (CsvWriter w = run.csv("stability.csv", List.of("integrator", "omega_rad_s", "zeta", "measured_omega_h",
                 "theory_omega_h", "measured_h_s", "theory_h_s"), 1)) {
             for (String name : integrators) {
+                // Theory from the method's own description; NaN (null in JSON) for a method without one.
+                LinearStability st = Integrators.create(name).stability();
                 List<double[]> om = new ArrayList<>();
                 for (double omega : omegas) {
                     double m = StabilityStudy.criticalOmegaH(name, omega, 0, periods, TOL);
-                    double th = StabilityTheory.criticalOmegaH(name, 0);
+                    double th = st == null ? Double.NaN : StabilityTheory.criticalOmegaH(st, 0);
                     w.rowText(name, Double.toString(omega), "0", Double.toString(m), Double.toString(th),
                             Double.toString(m / omega), Double.toString(th / omega));
                     om.add(new double[] {omega, m, th});
@@ -92,7 +109,7 @@ public final class StabilityCommand implements Callable<Integer> {
                 List<double[]> zs = new ArrayList<>();
                 for (double zeta : zetas) {
                     double m = StabilityStudy.criticalOmegaH(name, REF_OMEGA, zeta, periods, TOL);
-                    double th = StabilityTheory.criticalOmegaH(name, zeta);
+                    double th = st == null ? Double.NaN : StabilityTheory.criticalOmegaH(st, zeta);
                     w.rowText(name, Double.toString(REF_OMEGA), Double.toString(zeta), Double.toString(m),
                             Double.toString(th), Double.toString(m / REF_OMEGA), Double.toString(th / REF_OMEGA));
                     zs.add(new double[] {zeta, m, th});
@@ -103,7 +120,7 @@ public final class StabilityCommand implements Callable<Integer> {
                 plot(byOmega, name, om, true, color);
                 plot(byZeta, name, zs, false, color);
                 double measured = StabilityStudy.criticalOmegaH(name, REF_OMEGA, 0, periods, TOL);
-                double theory = StabilityTheory.undampedLimit(name);
+                double theory = st == null ? Double.NaN : st.undampedLimit();
                 Map<String, Object> e = new LinkedHashMap<>();
                 e.put("critical_omega_h", finite(measured));
                 e.put("theory_omega_h", finite(theory));
@@ -111,13 +128,13 @@ public final class StabilityCommand implements Callable<Integer> {
                 json.put(name, e);
             }
         }
-        Charts.savePng(byOmega, out.resolve("stability-omega.png"));
-        Charts.savePng(byZeta, out.resolve("stability-damping.png"));
-        System.out.println("wrote " + csv + ", " + out.resolve("stability-omega.png") + ", "
-                + out.resolve("stability-damping.png") + " (implicit Euler, stable at every step tried, is not"
+        Charts.savePng(byOmega, run.file("stability-omega.png"));
+        Charts.savePng(byZeta, run.file("stability-damping.png"));
+        System.out.println("wrote " + csv + ", " + run.dir().resolve("stability-omega.png") + ", "
+                + run.dir().resolve("stability-damping.png") + " (implicit Euler, stable at every step tried, is not"
                 + " drawn)");
+        run.finish(RunStatus.OK, json);
         System.out.println(Json.line(json));
-        return 0;
     }
 
     /** Measured points and the theory line of one integrator; only finite, positive values can be drawn. */

@@ -1,12 +1,15 @@
 package org.tensim.bench;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.io.Json;
+import org.tensim.io.OutputFiles;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
+import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.parallel.ParallelSpringPass;
 import org.tensim.solver.parallel.Parallelism;
 import picocli.CommandLine.Command;
@@ -19,6 +22,9 @@ import picocli.CommandLine.Option;
             "With --out: DIR/bench.jsonl, and DIR/scaling.png for two sizes or more.",
             "Figures only: nothing is asserted. See docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--scene", paramLabel = "NAME",
             description = "scene: lattice or diaphragm (default: ${DEFAULT-VALUE})")
     String scene = "lattice";
@@ -31,10 +37,9 @@ public final class BenchCommand implements Callable<Integer> {
             description = "thread counts (default: all cores, here ${DEFAULT-VALUE})")
     List<Integer> threads = List.of(Parallelism.availableCores());
 
-    @Option(names = "--integrator", paramLabel = "NAME",
-            description = "integrator: euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler"
-                    + " (default: ${DEFAULT-VALUE})")
-    String integrator = "rk2";
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
 
     @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
     boolean links;
@@ -53,7 +58,7 @@ public final class BenchCommand implements Callable<Integer> {
     boolean shuffle;
 
     @Option(names = "--dt", paramLabel = "S",
-            description = "time step, s (default: 0.001 for the lattice, the scene's stable RK2 step for the diaphragm)")
+            description = "time step, s (default: 0.001 for the lattice, the step recommended for the integrator on the diaphragm)")
     Double dt;
 
     @Option(names = "--steps", paramLabel = "K",
@@ -71,10 +76,17 @@ public final class BenchCommand implements Callable<Integer> {
         if (!"lattice".equals(scene) && !"diaphragm".equals(scene)) {
             throw new IllegalArgumentException("--scene " + scene + ": expected lattice or diaphragm");
         }
+        int maxThreads = 4 * Parallelism.availableCores();
         for (int t : threads) {
-            if (t < 1) {
-                throw new IllegalArgumentException("--threads " + t + ": a thread count must be >= 1");
+            if (t < 1 || t > maxThreads) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--threads " + t
+                        + ": expected 1 to " + maxThreads + " (4 x the " + Parallelism.availableCores()
+                        + " cores here; more threads than that only wait for one another)");
             }
+        }
+        if (out != null && out.toString().isBlank()) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--out must name a folder, got an empty path");
         }
         for (int n : sizes) {
             if (n < 2) {
@@ -95,11 +107,23 @@ public final class BenchCommand implements Callable<Integer> {
         boolean builtin = "builtin".equals(solver);
         List<Integer> threadCounts = builtin ? List.of(1) : threads;
         IntegratorChoice.create(integrator); // fails early on an unknown name
-        List<Map<String, Object>> results = new ArrayList<>();
-        if (out != null) {
-            Files.createDirectories(out);
-            Files.deleteIfExists(out.resolve("bench.jsonl"));
+        if (out == null) {
+            measure(builtin, threadCounts, ord, null);
+            return 0;
         }
+        return RunFolder.run(out, "bench", List.of("bench.jsonl", "scaling.png"), run -> {
+            List<Map<String, Object>> results = measure(builtin, threadCounts, ord, run.file("bench.jsonl"));
+            if (sizes.size() >= 2 && !"diaphragm".equals(scene)) {
+                ScalingChart.write(results, run.file("scaling.png"));
+            }
+            run.finish(RunStatus.OK, Map.of("cases", results.size()));
+        });
+    }
+
+    private List<Map<String, Object>> measure(boolean builtin, List<Integer> threadCounts,
+            ParallelSpringPass.Order ord, Path jsonl) throws Exception {
+        List<Map<String, Object>> results = new ArrayList<>();
+        StringBuilder lines = new StringBuilder();
         boolean diaphragm = "diaphragm".equals(scene);
         for (int n : diaphragm ? List.of(0) : sizes) {
             for (int t : threadCounts) {
@@ -107,9 +131,9 @@ public final class BenchCommand implements Callable<Integer> {
                 if (diaphragm) {
                     // A new scene per case: a simulation is consumed by its run.
                     org.tensim.scene.diaphragm.DiaphragmScene d = DiaphragmBenchScene.build();
-                    c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false,
-                            IntegratorChoice.create(integrator), t, ord, builtin,
-                            dt != null ? dt : d.recommendedTimeStep(), steps, repeats);
+                    org.tensim.solver.Integrator in = IntegratorChoice.create(integrator);
+                    c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false, in, t, ord,
+                            builtin, d.timeStep(in, dt != null ? dt : 0).seconds(), steps, repeats);
                 } else {
                     c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links), null, shuffle,
                             IntegratorChoice.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,
@@ -119,16 +143,15 @@ public final class BenchCommand implements Callable<Integer> {
                 results.add(r);
                 String line = Json.line(r);
                 System.out.println(line);
-                if (out != null) {
-                    Files.writeString(out.resolve("bench.jsonl"), line + "\n", java.nio.charset.StandardCharsets.UTF_8,
-                            java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND);
+                if (jsonl != null) {
+                    // Rewritten whole after every case: the file always ends on a complete line.
+                    lines.append(line).append('\n');
+                    byte[] bytes = lines.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8);
+                    OutputFiles.writeAtomically(jsonl, o -> o.write(bytes));
                 }
             }
         }
-        if (out != null && sizes.size() >= 2 && !diaphragm) {
-            ScalingChart.write(results, out.resolve("scaling.png"));
-        }
-        return 0;
+        return results;
     }
 
     static ParallelSpringPass.Order parseOrder(String s) {

@@ -92,7 +92,7 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
         Simulation sim = scene.newSimulation();
         Integrator in = c.integrator().get();
         sim.setIntegrator(in);
-        double dt = c.dt() > 0 ? c.dt() : scene.recommendedTimeStep();
+        double dt = scene.timeStep(in, c.dt()).seconds();
         int nd = scene.diaphragmNodes();
         sim.addListener(new SceneGraphSync(sim.state().nodeCount));
         int apex = scene.apexNode();

@@ -1,7 +1,6 @@
 package org.tensim.io;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
@@ -52,11 +51,40 @@ public final class Charts {
         chart.getStyler().setYAxisLogarithmic(true);
     }
 
-    /** Saves the chart as a PNG file at {@code path} (the name should end in .png). */
+    /**
+     * Saves the chart as a PNG file at {@code path}, written whole then renamed
+     * ({@link OutputFiles#writeAtomically}). An exception of the chart library (e.g.
+     * a logarithmic axis given a value <= 0) becomes an IOException naming the chart.
+     */
     public static void savePng(XYChart chart, Path path) throws IOException {
-        Files.createDirectories(path.toAbsolutePath().getParent());
-        String name = path.toString();
-        String base = name.endsWith(".png") ? name.substring(0, name.length() - 4) : name;
-        BitmapEncoder.saveBitmap(chart, base, BitmapEncoder.BitmapFormat.PNG);
+        byte[] png;
+        try {
+            png = BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
+        } catch (IOException | RuntimeException e) {
+            throw new IOException("cannot draw the chart '" + chart.getTitle() + "' for " + path + ": "
+                    + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()), e);
+        }
+        OutputFiles.writeAtomically(path, out -> out.write(png));
+    }
+
+    /**
+     * Marks a chart of a run that diverged: its title starts with "DIVERGED at t = ... s"
+     * and the plot background turns pink, so that no reader takes its curves for a result.
+     */
+    public static void markDiverged(XYChart chart, double atTimeS) {
+        chart.setTitle(divergedTitle(atTimeS, chart.getTitle()));
+        chart.getStyler().setPlotBackgroundColor(new java.awt.Color(255, 225, 225));
+    }
+
+    /**
+     * "DIVERGED at t = ... s: " and the title, shortened to its part before the first colon when
+     * the whole would not fit a chart's width (the mark must stay readable).
+     */
+    public static String divergedTitle(double atTimeS, String title) {
+        String mark = String.format(java.util.Locale.ROOT, "DIVERGED at t = %.4g s: ", atTimeS);
+        if (mark.length() + title.length() > 80 && title.indexOf(':') > 0) {
+            title = title.substring(0, title.indexOf(':'));
+        }
+        return mark + title;
     }
 }

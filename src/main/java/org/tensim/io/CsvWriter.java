@@ -1,42 +1,43 @@
 package org.tensim.io;
 
-import java.io.BufferedWriter;
 import java.io.Closeable;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
 /**
  * Writes a CSV file row by row (comma-separated, '.' decimal point, header
- * first). Rows are flushed every {@code flushEvery} rows and on close, so that a
- * run that stops early leaves a readable file with every complete row so far.
+ * first). Rows are kept in memory and handed to the file system whole, every
+ * {@code flushEvery} rows and on close: each write ends at the end of a row, so a
+ * run stopped at any moment (even killed) leaves a file that ends on a complete
+ * row. The file is created through {@link OutputFiles#create} (no symbolic link
+ * followed, mode 0644). Thread-safe: a signal handler may {@link #close} it while
+ * the run writes, and then gets the last whole row.
  */
 public final class CsvWriter implements Closeable {
     private final Path path;
-    private final BufferedWriter out;
+    private final FileChannel out;
     private final int columns;
     private final int flushEvery;
-    private final StringBuilder line = new StringBuilder(256);
+    private final StringBuilder pending = new StringBuilder(1 << 16);
     private long rows;
+    private boolean closed;
 
     /**
      * Creates the file (and its parent folders) and writes the header.
      *
-     * @param flushEvery rows between flushes (>= 1)
+     * @param flushEvery rows between writes to the file (>= 1)
      */
     public CsvWriter(Path path, List<String> header, int flushEvery) throws IOException {
         this.path = path;
-        if (path.toAbsolutePath().getParent() != null) {
-            Files.createDirectories(path.toAbsolutePath().getParent());
-        }
-        this.out = Files.newBufferedWriter(path, StandardCharsets.UTF_8);
+        this.out = OutputFiles.create(path);
         this.columns = header.size();
         this.flushEvery = Math.max(1, flushEvery);
-        out.write(String.join(",", header));
-        out.write('\n');
-        out.flush();
+        pending.append(String.join(",", header)).append('\n');
+        flush();
     }
 
     public Path path() {
@@ -44,35 +45,31 @@ public final class CsvWriter implements Closeable {
     }
 
     /** Rows written so far (header excluded). */
-    public long rows() {
+    public synchronized long rows() {
         return rows;
     }
 
     /** Writes one row; its length must match the header's. */
-    public void row(double... values) throws IOException {
+    public synchronized void row(double... values) throws IOException {
         if (values.length != columns) {
             throw new IllegalArgumentException("CSV row for " + path + " has " + values.length
                     + " values, expected " + columns + " (one per header column)");
         }
-        line.setLength(0);
+        ensureOpen();
         for (int i = 0; i < values.length; i++) {
             if (i > 0) {
-                line.append(',');
+                pending.append(',');
             }
-            line.append(values[i]);
+            pending.append(values[i]);
         }
-        line.append('\n');
-        out.write(line.toString());
-        if (++rows % flushEvery == 0) {
-            out.flush();
-        }
+        endRow();
     }
 
     /**
      * Writes one row of already formatted cells (names, numbers); its length must
      * match the header's. Cells must not contain commas or line breaks.
      */
-    public void rowText(String... cells) throws IOException {
+    public synchronized void rowText(String... cells) throws IOException {
         if (cells.length != columns) {
             throw new IllegalArgumentException("CSV row for " + path + " has " + cells.length
                     + " values, expected " + columns + " (one per header column)");
@@ -83,15 +80,51 @@ public final class CsvWriter implements Closeable {
                         + c + "'");
             }
         }
-        out.write(String.join(",", cells));
-        out.write('\n');
+        ensureOpen();
+        pending.append(String.join(",", cells));
+        endRow();
+    }
+
+    private void endRow() throws IOException {
+        pending.append('\n');
         if (++rows % flushEvery == 0) {
-            out.flush();
+            flush();
         }
     }
 
+    private void ensureOpen() throws IOException {
+        if (closed) {
+            throw new IOException("CSV file " + path + " is closed (the run was interrupted)");
+        }
+    }
+
+    /** Hands every complete row kept so far to the file system. */
+    public synchronized void flush() throws IOException {
+        if (pending.length() == 0 || closed) {
+            return;
+        }
+        ByteBuffer b = ByteBuffer.wrap(pending.toString().getBytes(StandardCharsets.UTF_8));
+        pending.setLength(0);
+        try {
+            while (b.hasRemaining()) {
+                out.write(b);
+            }
+        } catch (IOException e) {
+            throw OutputFiles.describe("write", path, e);
+        }
+    }
+
+    /** Writes the rows kept and closes the file; closing twice does nothing. */
     @Override
-    public void close() throws IOException {
-        out.close();
+    public synchronized void close() throws IOException {
+        if (closed) {
+            return;
+        }
+        try {
+            flush();
+        } finally {
+            closed = true;
+            out.close();
+        }
     }
 }

@@ -4,9 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Map;
 
 /** JSON output through Jackson: one-line summaries and files written atomically. */
@@ -30,17 +28,10 @@ public final class Json {
         }
     }
 
-    /** Writes the value, indented, to a temporary file then renames it onto {@code path}. */
+    /** Writes the value, indented, to a temporary file then renames it onto {@code path} (mode 0644). */
     public static void write(Path path, Object value) throws IOException {
-        Path abs = path.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = Files.createTempFile(abs.getParent(), abs.getFileName().toString(), ".tmp");
-        try {
-            PRETTY.writeValue(tmp.toFile(), value);
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        byte[] bytes = PRETTY.writeValueAsBytes(value);
+        OutputFiles.writeAtomically(path, out -> out.write(bytes));
     }
 
     /** Reads a JSON object file into a map. */

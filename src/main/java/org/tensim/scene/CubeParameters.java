@@ -35,6 +35,10 @@ public record CubeParameters(double sideM, double nodeMassKg, double stiffnessNP
         }
         Check.positive("cube time step", "s", dtS);
         Check.positive("cube duration", "s", durationS);
+        if (dtS > durationS) {
+            throw new IllegalArgumentException("cube time step " + dtS + " s is longer than the run (" + durationS
+                    + " s): the run would make no step; give a time step <= the duration");
+        }
     }
 
     /** The defaults used by {@code ./tensim cube}; see docs/cube.md. */

@@ -5,7 +5,15 @@ import org.tensim.model.Check;
 /**
  * The divergence checks of {@link Simulation}, run after every step:
  * <ul>
- * <li>every position and velocity finite;</li>
+ * <li>every step: every position and velocity finite, and no runaway node: none
+ * faster than {@link #runawayLimit()} scene sizes per step ({@code |v_k| dt <= limit * size}),
+ * the size being the larger of the diagonal of the starting bounding box and the
+ * longest spring (1 m if both are 0). A stable run never moves a node across ten
+ * scenes in one step (a free fall may take a node far away, but not that fast); an
+ * unstable one does so within a few steps of leaving the physical range, long
+ * before it overflows. One comparison per coordinate
+ * ({@code |v_k|/V + (x_k - x_k) <= 1}, false for NaN and infinities in either) keeps
+ * the check as cheap as the finiteness test alone;</li>
  * <li>every {@link #energyCheckInterval()} steps, the mechanical energy
  * E = kinetic + spring + change of gravity's potential since the first step (J)
  * at most {@link #energyGrowthLimit()} times
@@ -35,6 +43,22 @@ final class DivergenceMonitor {
     private double gravity0;
     /** Fraction of the energy exchanged below which changes of E are round-off. */
     static final double EXCHANGE_FRACTION = 1e-3;
+    /** Default runaway speed: scene sizes per step. */
+    static final double DEFAULT_RUNAWAY_LIMIT = 10;
+    private double runawayLimit = DEFAULT_RUNAWAY_LIMIT;
+    private double sceneSize = Double.NaN;
+
+    double runawayLimit() {
+        return runawayLimit;
+    }
+
+    void setRunawayLimit(double sizesPerStep) {
+        if (!(sizesPerStep > 0)) {
+            throw new IllegalArgumentException("runaway limit must be > 0 scene sizes per step (or Infinity to turn"
+                    + " the check off), got " + sizesPerStep);
+        }
+        runawayLimit = sizesPerStep;
+    }
 
     double energyGrowthLimit() {
         return growthLimit;
@@ -62,17 +86,19 @@ final class DivergenceMonitor {
      * @param criticalStep the critical time step estimate for the integrator in use, s
      *                     (evaluated only when throwing)
      */
-    void check(SystemState s, ForceModel forces, long step, double t, java.util.function.DoubleSupplier criticalStep) {
+    void check(SystemState s, ForceModel forces, long step, double t, double dt,
+            java.util.function.DoubleSupplier criticalStep) {
         final double[] x = s.x;
         final double[] v = s.v;
+        if (Double.isNaN(sceneSize)) {
+            startingSize(s);
+        }
+        final double speedLimit = runawayLimit * sceneSize / dt;
+        final double invV = 1 / speedLimit;
         for (int k = 0; k < x.length; k++) {
-            // A sum of the two is not finite if either is not: one branch per coordinate.
-            if (!Double.isFinite(x[k] + v[k])) {
-                int node = worstNonFinite(s, k / 3);
-                throw new SimulationDivergedException(step, t, node, "has position (" + x[3 * node] + ", "
-                        + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity (" + v[3 * node] + ", "
-                        + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
-                        criticalStep.getAsDouble());
+            // One comparison per coordinate: x - x is 0, or NaN for a NaN or infinite x; |v|/V > 1 is a runaway.
+            if (!(Math.abs(v[k]) * invV + (x[k] - x[k]) <= 1)) {
+                checkCoordinate(s, k, step, t, speedLimit, criticalStep);
             }
         }
         if (growthLimit == Double.POSITIVE_INFINITY) {
@@ -102,6 +128,44 @@ final class DivergenceMonitor {
                     + advice(criticalStep), criticalStep.getAsDouble());
         }
         lastEnergy = e;
+    }
+
+    /** The exact limits for coordinate k, whose combined test failed. */
+    private void checkCoordinate(SystemState s, int k, long step, double t, double speedLimit,
+            java.util.function.DoubleSupplier criticalStep) {
+        double[] x = s.x;
+        double[] v = s.v;
+        if (!Double.isFinite(x[k] + v[k])) {
+            int node = worstNonFinite(s, k / 3);
+            throw new SimulationDivergedException(step, t, node, "has position (" + x[3 * node] + ", "
+                    + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m and velocity (" + v[3 * node] + ", "
+                    + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s; " + advice(criticalStep),
+                    criticalStep.getAsDouble());
+        }
+        int node = k / 3;
+        throw new SimulationDivergedException(step, t, node, "ran away: position (" + x[3 * node] + ", "
+                + x[3 * node + 1] + ", " + x[3 * node + 2] + ") m, velocity (" + v[3 * node] + ", "
+                + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s, faster than " + speedLimit + " m/s ("
+                + runawayLimit + " scene sizes of " + sceneSize + " m per step); " + advice(criticalStep),
+                criticalStep.getAsDouble());
+    }
+
+    /** The scene size, from the state the run starts with. */
+    private void startingSize(SystemState s) {
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int k = 0; k < s.x0.length; k++) {
+            lo[k % 3] = Math.min(lo[k % 3], s.x0[k]);
+            hi[k % 3] = Math.max(hi[k % 3], s.x0[k]);
+        }
+        double diag = s.nodeCount == 0 ? 0 : Math.sqrt(Math.pow(hi[0] - lo[0], 2) + Math.pow(hi[1] - lo[1], 2)
+                + Math.pow(hi[2] - lo[2], 2));
+        double longest = 0;
+        for (int i = 0; i < s.springCount(); i++) {
+            longest = Math.max(longest, s.springL[i]);
+        }
+        double size = Math.max(diag, longest);
+        sceneSize = size > 0 && Double.isFinite(size) ? size : 1;
     }
 
     private static String advice(java.util.function.DoubleSupplier criticalStep) {

@@ -16,6 +16,7 @@ public final class ForceModel {
     private final int[] springB3;
     private long evaluations;
     private SpringForcePass springPass;
+    private NodeLoops nodeLoops = NodeLoops.SERIAL;
 
     public ForceModel(SystemState state) {
         this.s = state;
@@ -48,6 +49,19 @@ public final class ForceModel {
     /** The spring pass in use, or null for the built-in loops. */
     public SpringForcePass springPass() {
         return springPass;
+    }
+
+    /**
+     * Sets who runs the integrators' node loops (null restores {@link NodeLoops#SERIAL}),
+     * e.g. a multi-threaded runner; takes effect at the next step.
+     */
+    public void setNodeLoops(NodeLoops loops) {
+        nodeLoops = loops == null ? NodeLoops.SERIAL : loops;
+    }
+
+    /** The runner of the integrators' node loops (never null). */
+    public NodeLoops nodeLoops() {
+        return nodeLoops;
     }
 
     /**

@@ -1,5 +1,7 @@
 package org.tensim.solver;
 
+import org.tensim.solver.stability.LinearStability;
+
 /**
  * Stage 1 of the paper's loop: advances positions and velocities of the free
  * nodes by one step of m a = f, as if there were no rigid links. Rigid links are
@@ -7,7 +9,9 @@ package org.tensim.solver;
  * integrator. Fixed nodes (inverse mass 0) do not move; driven nodes follow their
  * motions.
  *
- * <p>An implementation allocates its scratch arrays once, on the first step (or in
+ * <p>An implementation runs its per-node loops through
+ * {@link ForceModel#nodeLoops()}, so that one installed runner puts every
+ * integrator on several threads. It allocates its scratch arrays once, on the first step (or in
  * its constructor), and never per step.
  */
 public interface Integrator {
@@ -36,13 +40,37 @@ public interface Integrator {
     }
 
     /**
+     * Takes the settings that concern the method (an implicit one: the tolerance and
+     * iteration cap of its linear solves); called by {@link Simulation#apply}. Default:
+     * none.
+     */
+    default void configure(SolverSettings settings) {
+    }
+
+    /**
+     * How the method behaves on the linear test oscillator (its stability function
+     * and step formula), for {@link org.tensim.solver.stability.StabilityTheory} and
+     * {@link org.tensim.solver.stability.TimeStepPolicy}; null when the method does not
+     * describe it (then it is taken as unconditionally stable if not
+     * {@link #explicit()}).
+     */
+    default LinearStability stability() {
+        return null;
+    }
+
+    /**
      * Theory: the largest {@code omega h} (dimensionless, omega = sqrt(k/m) in rad/s,
      * h in s) for which an undamped spring stays bounded. 0 when the method grows at
      * every step size (forward Euler, RK2), {@link Double#POSITIVE_INFINITY} when it
-     * is unconditionally stable (implicit Euler). The default, 2, is the leapfrog
-     * family's limit (symplectic Euler, velocity Verlet).
+     * is unconditionally stable (implicit Euler). From {@link #stability()}; without
+     * one, infinite for an implicit method and 2 (the leapfrog family's limit) for an
+     * explicit one.
      */
     default double undampedStabilityLimit() {
-        return 2;
+        LinearStability s = stability();
+        if (s != null) {
+            return s.undampedLimit();
+        }
+        return explicit() ? 2 : Double.POSITIVE_INFINITY;
     }
 }

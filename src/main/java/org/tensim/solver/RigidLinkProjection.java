@@ -20,10 +20,10 @@ import org.tensim.model.Check;
  * was met. Nothing is silently accepted: a caller can see the residual.
  */
 public final class RigidLinkProjection {
-    /** Default largest relative length error, dimensionless: 1e-9. */
-    public static final double DEFAULT_TOLERANCE = 1e-9;
-    /** Default cap on Gauss-Seidel sweeps per step: 200. */
-    public static final int DEFAULT_MAX_ITERATIONS = 200;
+    /** Default largest relative length error, dimensionless: 1e-9 ({@link SolverSettings}). */
+    public static final double DEFAULT_TOLERANCE = SolverSettings.DEFAULTS.projectionTolerance();
+    /** Default cap on Gauss-Seidel sweeps per step: 200 ({@link SolverSettings}). */
+    public static final int DEFAULT_MAX_ITERATIONS = SolverSettings.DEFAULTS.projectionMaxIterations();
 
     private double tolerance = DEFAULT_TOLERANCE;
     private int maxIterations = DEFAULT_MAX_ITERATIONS;

@@ -3,6 +3,10 @@ package org.tensim.solver;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.tensim.model.Topology;
+import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.solver.stability.ModalBounds;
+import org.tensim.solver.stability.TimeStep;
+import org.tensim.solver.stability.TimeStepPolicy;
 
 /**
  * Runs the paper's three-stage loop on a compiled {@link SystemState}:
@@ -23,11 +27,12 @@ import org.tensim.model.Topology;
  * <p>Checks, on every run:
  * <ul>
  * <li>Critical time step: on the first step with a given integrator and dt, an
- * explicit integrator stepping beyond {@link CriticalTimeStep#forIntegrator} of
+ * explicit integrator stepping beyond {@link CriticalTimeStep#forMethod} of
  * the state's estimate is reported ({@link #setStepLimitSeverity}, default
  * {@link Severity#WARN}; {@link Severity#ERROR} throws
  * {@link IllegalArgumentException} naming the estimate).</li>
- * <li>Divergence: a non-finite position or velocity, or the kinetic + spring
+ * <li>Divergence: a non-finite position or velocity, a runaway node (checked every
+ * step, {@link #setRunawayLimit}), or the kinetic + spring
  * energy growing more than {@link #energyGrowthLimit()} times between checks made
  * every {@link #energyCheckInterval()} steps, throws
  * {@link SimulationDivergedException} naming the step, the time, the worst node
@@ -54,8 +59,7 @@ public final class Simulation {
     private long unconvergedProjections;
     private final DivergenceMonitor monitor = new DivergenceMonitor();
     private final java.util.function.DoubleSupplier criticalStepOfIntegrator = this::criticalStepOfIntegrator;
-    private Severity stepLimitSeverity = Severity.WARN;
-    private Severity projectionSeverity = Severity.WARN;
+    private SolverSettings settings = SolverSettings.DEFAULTS;
     private java.util.function.Consumer<String> warningSink = m -> System.err.println("tensim: warning: " + m);
     private Integrator checkedIntegrator;
     private double checkedDt = Double.NaN;
@@ -66,11 +70,19 @@ public final class Simulation {
         this(state, new MidpointRK2());
     }
 
+    /** A simulation with the given settings ({@link #apply(SolverSettings)}). */
+    public Simulation(SystemState state, Integrator integrator, SolverSettings settings) {
+        this(state, integrator);
+        apply(settings);
+    }
+
     public Simulation(SystemState state, Integrator integrator) {
         this.state = state;
         this.forces = new ForceModel(state);
         this.unconstrained = new double[state.linkCount() > 0 ? 3 * state.nodeCount : 0];
         setIntegrator(integrator);
+        monitor.setEnergyGrowthLimit(settings.energyGrowthLimit());
+        monitor.setEnergyCheckInterval(settings.energyCheckInterval());
         state.applyMotions(0, state.x, state.v, new double[6]);
     }
 
@@ -108,6 +120,30 @@ public final class Simulation {
         return profile;
     }
 
+    /**
+     * Applies every setting: the severities, the energy check, the projection's
+     * tolerance and sweep cap, and the integrator's own ({@link Integrator#configure}:
+     * an implicit method's CG); the thread count is read by
+     * {@code parallel.Parallelism.install(Simulation)}. Takes effect at the next step.
+     */
+    public Simulation apply(SolverSettings s) {
+        settings = java.util.Objects.requireNonNull(s, "solver settings");
+        monitor.setEnergyGrowthLimit(s.energyGrowthLimit());
+        monitor.setEnergyCheckInterval(s.energyCheckInterval());
+        projection.setTolerance(s.projectionTolerance()).setMaxIterations(s.projectionMaxIterations());
+        integrator.configure(s);
+        return this;
+    }
+
+    /**
+     * The settings in force: those last applied or set through this class, with the
+     * projection's tolerance and cap as the projection holds them (its own setters
+     * may have been called). An integrator set later keeps its own CG settings.
+     */
+    public SolverSettings settings() {
+        return settings.withProjection(projection.tolerance(), projection.maxIterations());
+    }
+
     /** Simulated time, s. */
     public double time() {
         return time;
@@ -130,22 +166,22 @@ public final class Simulation {
 
     /** What a step beyond the critical step estimate does (default WARN). */
     public Simulation setStepLimitSeverity(Severity s) {
-        stepLimitSeverity = java.util.Objects.requireNonNull(s, "step limit severity");
+        settings = settings.withStepLimitSeverity(s);
         return this;
     }
 
     public Severity stepLimitSeverity() {
-        return stepLimitSeverity;
+        return settings.stepLimitSeverity();
     }
 
     /** What a projection that misses its tolerance does (default WARN). */
     public Simulation setProjectionFailureSeverity(Severity s) {
-        projectionSeverity = java.util.Objects.requireNonNull(s, "projection failure severity");
+        settings = settings.withProjectionFailureSeverity(s);
         return this;
     }
 
     public Severity projectionFailureSeverity() {
-        return projectionSeverity;
+        return settings.projectionFailureSeverity();
     }
 
     /** Where warnings go (default: standard error, prefixed "tensim: warning: "). */
@@ -160,6 +196,7 @@ public final class Simulation {
      * off (the finiteness check stays). Default 100.
      */
     public Simulation setEnergyGrowthLimit(double factor) {
+        settings = settings.withEnergyCheck(factor, settings.energyCheckInterval());
         monitor.setEnergyGrowthLimit(factor);
         return this;
     }
@@ -170,12 +207,27 @@ public final class Simulation {
 
     /** Steps between energy checks (>= 1, default 100). */
     public Simulation setEnergyCheckInterval(int steps) {
+        settings = settings.withEnergyCheck(settings.energyGrowthLimit(), steps);
         monitor.setEnergyCheckInterval(steps);
         return this;
     }
 
     public int energyCheckInterval() {
         return monitor.energyCheckInterval();
+    }
+
+    /**
+     * Speed, in scene sizes per step, beyond which a node has run away and the run is stopped
+     * as diverged at that very step (checked every step, with the finiteness check);
+     * {@link Double#POSITIVE_INFINITY} leaves only the finiteness and distance checks. Default 10.
+     */
+    public Simulation setRunawayLimit(double sizesPerStep) {
+        monitor.setRunawayLimit(sizesPerStep);
+        return this;
+    }
+
+    public double runawayLimit() {
+        return monitor.runawayLimit();
     }
 
     /** The state's critical time step estimate ({@link SystemState#criticalTimeStep()}). */
@@ -185,7 +237,17 @@ public final class Simulation {
 
     /** The step beyond which the current integrator is expected to go unstable on this state, s. */
     public double criticalStepOfIntegrator() {
-        return state.criticalTimeStep().forIntegrator(integrator);
+        return state.criticalTimeStep().forMethod(integrator.explicit(), integrator.undampedStabilityLimit());
+    }
+
+    /**
+     * The step {@link TimeStepPolicy} recommends for the current integrator on this
+     * state, from its w_max estimate (damping not counted), with how it was chosen.
+     * Scenes that know their damping (the diaphragm) ask the policy with it.
+     */
+    public TimeStep recommendedTimeStep() {
+        return TimeStepPolicy.recommend(integrator.name(), integrator.stability(), integrator.explicit(),
+                ModalBounds.undamped(state.criticalTimeStep()));
     }
 
     public void addListener(StepListener l) {
@@ -239,7 +301,7 @@ public final class Simulation {
 
         time += dt;
         steps++;
-        monitor.check(state, forces, steps, time, criticalStepOfIntegrator);
+        monitor.check(state, forces, steps, time, dt, criticalStepOfIntegrator);
         long t4 = System.nanoTime();
         profile.record(Stage.CHECK, t4 - t3);
 
@@ -274,6 +336,7 @@ public final class Simulation {
     private void checkStepLimit(double dt) {
         checkedDt = dt;
         checkedIntegrator = integrator;
+        Severity stepLimitSeverity = settings.stepLimitSeverity();
         if (stepLimitSeverity == Severity.IGNORE || !integrator.explicit()) {
             return;
         }
@@ -292,6 +355,7 @@ public final class Simulation {
     }
 
     private void projectionFailed(double dt) {
+        Severity projectionSeverity = settings.projectionFailureSeverity();
         if (projectionSeverity == Severity.IGNORE) {
             return;
         }

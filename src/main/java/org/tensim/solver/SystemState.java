@@ -9,6 +9,7 @@ import org.tensim.model.RigidLink;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.solver.stability.CriticalTimeStep;
 
 /**
  * The compiled, flat simulation state of a {@link Topology}: arrays of doubles
@@ -253,7 +254,7 @@ public final class SystemState {
      */
     public CriticalTimeStep criticalTimeStep() {
         if (criticalTimeStep == null) {
-            criticalTimeStep = CriticalTimeStep.estimate(this);
+            criticalTimeStep = CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0);
         }
         return criticalTimeStep;
     }

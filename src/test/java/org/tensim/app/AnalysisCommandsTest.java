@@ -74,11 +74,11 @@ class AnalysisCommandsTest {
     @Test
     void badNamesGiveOneLineErrors(@TempDir Path dir) {
         String[] r = run("accuracy", "--scene", "diaphragm", "--out", dir.toString());
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0], "a bad option value is a usage error");
         assertEquals(1, r[2].strip().split("\n").length, "one line, no stack trace: " + r[2]);
         assertTrue(r[2].contains("unknown scene 'diaphragm'") && r[2].contains("spring"), r[2]);
         r = run("stability", "--integrators", "leapfrog", "--out", dir.toString());
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0]);
         assertTrue(r[2].contains("unknown integrator 'leapfrog'"), r[2]);
         r = run("stability", "--zeta", "-1", "--out", dir.toString());
         assertTrue(r[2].contains("--zeta") && r[2].contains("-1"), r[2]);

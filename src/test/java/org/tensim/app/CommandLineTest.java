@@ -32,11 +32,11 @@ class CommandLineTest {
     @Test
     void badValuesGetOneClearMessage() {
         String[] r = run("cube", "--dt", "-1", "--out", "build/tmp/never");
-        assertEquals("1", r[0]);
-        assertTrue(r[2].contains("cube time step") && r[2].contains("-1.0"), r[2]);
+        assertEquals("2", r[0], "a refused option is a usage error");
+        assertTrue(r[2].contains("--dt -1.0") && r[2].contains("> 0 s"), r[2]);
         assertTrue(!r[2].contains("\tat "), "no stack trace: " + r[2]);
         String[] b = run("bench", "--n", "1");
-        assertEquals("1", b[0]);
+        assertEquals("2", b[0]);
         assertTrue(b[2].contains("--n 1"), b[2]);
     }
 

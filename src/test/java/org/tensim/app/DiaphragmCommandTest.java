@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
+import org.tensim.solver.parallel.Parallelism;
 import picocli.CommandLine;
 
 /** The diaphragm command end to end on a coarse mesh, and its error messages. */
@@ -54,6 +55,21 @@ class DiaphragmCommandTest {
     }
 
     @Test
+    void aRunShorterThanAnInspirationSucceedsAndSaysTheBreathingWasNotMeasured() throws Exception {
+        Path mesh = coarseMesh(6);
+        Path out = dir.resolve("short");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "0.2", "--out", out.toString());
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertFalse(s.containsKey("dome_excursion_mm"), s.toString());
+        assertTrue(String.valueOf(s.get("breathing")).startsWith("not measured: the run of 0.2 s"), s.toString());
+        assertEquals(0.2, ((Number) s.get("simulated_s")).doubleValue(), 1e-3);
+        // the displacement CSV holds the end of the run: a header and one row per diaphragm node
+        int nodes = ((Number) s.get("diaphragm_nodes")).intValue();
+        assertEquals(1 + nodes, Files.readAllLines(out.resolve("displacements.csv")).size());
+    }
+
+    @Test
     void writesEveryOutputAndASummaryWithTheIssuesKeys() throws Exception {
         Path mesh = coarseMesh(10);
         Path out = dir.resolve("out");
@@ -75,8 +91,8 @@ class DiaphragmCommandTest {
         // displacements.csv: a header and one row per diaphragm node per time (two times by default)
         long rows = Files.lines(out.resolve("displacements.csv")).count() - 1;
         assertEquals(2L * ((Number) s.get("diaphragm_nodes")).longValue(), rows);
-        assertEquals(((Number) s.get("springs")).intValue() >= DiaphragmCommand.AUTO_PARALLEL_SPRINGS
-                ? org.tensim.solver.parallel.Parallelism.availableCores() : 1, ((Number) s.get("threads")).intValue(),
+        assertEquals(((Number) s.get("springs")).intValue() >= Parallelism.AUTO_PARALLEL_SPRINGS
+                ? Parallelism.availableCores() : 1, ((Number) s.get("threads")).intValue(),
                 "automatic: one thread for a small scene, all cores from the threshold");
 
         // Another integrator with its CG tolerance, on one thread: the same physiology within a few mm.
@@ -130,6 +146,7 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("diverged") && r[2].contains("reduce the time step"), r[2]);
         assertFalse(r[2].contains("\tat "), r[2]);
         Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertEquals("diverged", s.get("status"));
         assertTrue(s.containsKey("diverged"));
         assertTrue(Files.size(out.resolve("probe.csv")) > 0);
         assertTrue(Files.isRegularFile(out.resolve("vtk/diaphragm_0000.vtk")));
@@ -158,14 +175,14 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("bad.obj, line 4") && r[2].contains("expected 1..3"), r[2]);
         assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
         r = run("diaphragm", "--units", "inch");
-        assertEquals("1", r[0]);
+        assertEquals("2", r[0], "a bad option value is a usage error");
         assertTrue(r[2].contains("mesh units must be 'mm' or 'm', got 'inch'"), r[2]);
         r = run("diaphragm", "--rib-amplitude", "5");
         assertTrue(r[2].contains("rib amplitude must be at most 3"), r[2]);
         r = run("diaphragm", "--cg-tolerance", "1e-3");
         assertTrue(r[2].contains("--cg-tolerance applies to --integrator implicit-euler only, not rk2"), r[2]);
         r = run("diaphragm", "--threads", "-1");
-        assertTrue(r[2].contains("--threads must be 0 (automatic) or more, got -1"), r[2]);
+        assertTrue(r[2].contains("--threads -1: expected 0 (automatic) or 1 to"), r[2]);
         r = run("diaphragm", "--integrator", "implicit-euler", "--cg-tolerance", "-1");
         assertTrue(r[2].contains("-1"), r[2]);
         assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);

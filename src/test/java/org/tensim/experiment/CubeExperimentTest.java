@@ -36,7 +36,7 @@ class CubeExperimentTest {
     }
 
     @Test
-    void reportWritesCsvChartAndSummary(@TempDir Path dir) throws IOException {
+    void reportWritesCsvChartAndSummary(@TempDir Path dir) throws Exception {
         CubeParameters p = CubeParameters.paper().withDuration(0.5);
         CubeReport r = CubeReport.run(p, dir);
         List<String> lines = Files.readAllLines(dir.resolve("cube.csv"));
@@ -44,6 +44,7 @@ class CubeExperimentTest {
         assertEquals(p.steps() + 2, lines.size(), "header, t = 0 and one row per step");
         assertTrue(Files.size(dir.resolve("cube.png")) > 1000);
         Map<String, Object> s = Json.readMap(dir.resolve("summary.json"));
+        assertEquals("ok", s.get("status"));
         for (String key : List.of("mss_peak_y_m", "ts_peak_y_m", "paper_mss_peak_y_m", "paper_ts_peak_y_m", "steps",
                 "dt_s", "wall_s")) {
             assertTrue(s.containsKey(key), "summary has " + key);
@@ -55,17 +56,33 @@ class CubeExperimentTest {
     }
 
     @Test
-    void aDivergingRunStopsCleanlyAndKeepsItsCsv(@TempDir Path dir) throws IOException {
+    void aDivergingRunStopsCleanlyKeepsItsCsvAndMarksItsChart(@TempDir Path dir) throws Exception {
         // 1 s steps on 100 N/m springs with 1 kg nodes: w h = 10 and more, far beyond any stable step.
         CubeParameters p = CubeParameters.paper().withTimeStep(1.0).withDuration(10_000);
-        IOException e = assertThrows(IOException.class, () -> CubeReport.run(p, dir));
-        assertTrue(e.getMessage().contains("diverged at step"), e.getMessage());
-        assertTrue(e.getMessage().contains("node"), e.getMessage());
+        CubeReport r = CubeReport.run(p, dir);
+        assertEquals(org.tensim.io.RunStatus.DIVERGED, r.status());
+        Map<String, Object> s = Json.readMap(dir.resolve("summary.json"));
+        assertEquals("diverged", s.get("status"));
+        String m = s.get("diverged").toString();
+        assertTrue(m.contains("diverged at step") && m.contains("node"), m);
         List<String> lines = Files.readAllLines(dir.resolve("cube.csv"));
         assertTrue(lines.size() >= 2, "header and the rows before the divergence are kept");
         assertTrue(lines.get(0).startsWith("t_s,"));
         for (String line : lines.subList(1, lines.size())) {
             assertEquals(7, line.split(",").length, "complete rows only: " + line);
+            for (String cell : line.split(",")) {
+                assertTrue(Math.abs(Double.parseDouble(cell)) < 1e4, "no runaway value was written: " + line);
+            }
         }
+        // The chart is marked: its plot background is the diverged pink.
+        java.awt.image.BufferedImage img = javax.imageio.ImageIO.read(dir.resolve("cube.png").toFile());
+        int pink = new java.awt.Color(255, 225, 225).getRGB();
+        int found = 0;
+        for (int y = 0; y < img.getHeight(); y += 4) {
+            for (int x = 0; x < img.getWidth(); x += 4) {
+                found += img.getRGB(x, y) == pink ? 1 : 0;
+            }
+        }
+        assertTrue(found > 1000, "the diverged chart has a pink plot area: " + found + " samples");
     }
 }

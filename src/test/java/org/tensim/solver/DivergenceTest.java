@@ -24,7 +24,7 @@ class DivergenceTest {
         // Symplectic Euler at w h = 2.5: |lambda| about 4 per step, energy x16 per step.
         SystemState s = SystemState.compile(SpringScene.build(10, 0, 1e-6));
         Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
-        sim.setWarningSink(m -> { });
+        sim.setWarningSink(m -> { }).setRunawayLimit(Double.POSITIVE_INFINITY);
         Path csv = dir.resolve("run.csv");
         try (CsvWriter w = new CsvWriter(csv, List.of("t_s", "x_m", "v_m_s"), 1)) {
             sim.addListener(x -> {
@@ -92,12 +92,53 @@ class DivergenceTest {
         }
     }
 
+    /**
+     * The per-step runaway check stops an unstable run at the first step where a node moves more
+     * than 10 scene sizes in one step: every row written before it is within that range, and the
+     * run stops within a few steps of leaving the physical range, where the energy check (every 100
+     * steps) let it run on to 1e10 m.
+     */
+    @Test
+    void aRunawayStopsTheRunAtThatStep(@TempDir Path dir) throws IOException {
+        SystemState s = SystemState.compile(SpringScene.build(10, 0, 1e-6)); // w = 10 rad/s, one 1 m spring
+        Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
+        sim.setWarningSink(m -> { }).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+        double dt = 0.25; // w h = 2.5: |lambda| about 4 per step
+        double size = 1; // the spring's rest length: the largest of the scene's sizes
+        double[] worst = {0};
+        long[] lastGood = {0};
+        sim.addListener(x -> {
+            worst[0] = Math.max(worst[0], Math.abs(x.state().v[3]) * dt);
+            lastGood[0] = x.steps();
+        });
+        SimulationDivergedException e = assertThrows(SimulationDivergedException.class, () -> sim.runUntil(1e4, dt));
+        assertTrue(e.getMessage().contains("ran away") && e.getMessage().contains("node 1"), e.getMessage());
+        assertTrue(worst[0] <= DivergenceMonitor.DEFAULT_RUNAWAY_LIMIT * size,
+                "every completed step stayed within 10 scene sizes per step: " + worst[0]);
+        assertEquals(lastGood[0] + 1, e.step(), "stopped at the very step that ran away");
+        assertTrue(e.step() < 20, "a |lambda| = 4 blow-up from 1e-6 m crosses 10 m/step within 20 steps, got "
+                + e.step());
+    }
+
+    /** A long free fall (gravity, no spring) is not a runaway: it moves far, but not scene sizes per step. */
+    @Test
+    void aLongFreeFallIsNotARunaway() {
+        org.tensim.model.Topology t = new org.tensim.model.Topology();
+        t.addNode(0, 0, 0, 1);
+        t.addNode(0.1, 0, 0, 1);
+        t.setGravity(new org.tensim.model.Vec3(0, -9.81, 0));
+        Simulation sim = new Simulation(SystemState.compile(t), Integrators.create("rk2"));
+        sim.runUntil(10, 1e-3);
+        assertEquals(-0.5 * 9.81 * 100, sim.state().x[1], 0.01, "490 m down, 4,900 times the scene's size");
+    }
+
     @Test
     void growthLimitIsValidated() {
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.setEnergyGrowthLimit(0.5));
         assertTrue(e.getMessage().contains("0.5"), e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> sim.setEnergyCheckInterval(0));
+        assertThrows(IllegalArgumentException.class, () -> sim.setRunawayLimit(0));
     }
 
     /** The forced, damped paper cubes gain energy from their load, legitimately: no false alarm. */

@@ -55,6 +55,7 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
     private final List<ParameterControl> controls = new ArrayList<>();
     private final JToggleButton play = new JToggleButton("Play");
     private final JComboBox<IntegratorChoice> integrator;
+    private final JCheckBox realTime;
     private final JRadioButton massSpring = new JRadioButton("Mass-spring");
     private final JRadioButton tensegrity = new JRadioButton("Tensegrity");
     private boolean updating;
@@ -77,8 +78,7 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         transport.add(step);
         transport.add(reset);
         add(section("Simulation", transport));
-        JCheckBox realTime = check("Real time (untick: as fast as possible)", "realtime", true,
-                on -> actions.paced(on));
+        realTime = check("Real time (untick: as fast as possible)", "realtime", true, on -> actions.paced(on));
         add(left(realTime));
 
         JPanel params = column();
@@ -213,6 +213,12 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         JCheckBox box = layerBoxes.get(layer);
         box.setSelected(on);
         actions.layer(layer, on);
+    }
+
+    /** Ticks or unticks "Real time" (pacing to wall time) and applies it. */
+    void setPaced(boolean on) {
+        realTime.setSelected(on);
+        actions.paced(on);
     }
 
     /** Sets the play button's state without firing it. */

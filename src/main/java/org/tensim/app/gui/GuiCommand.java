@@ -37,8 +37,9 @@ public final class GuiCommand implements Callable<Integer> {
     double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
 
     @Option(names = "--resolution", paramLabel = "RINGS",
-            description = "rings per face of the generated double dome: 20 gives about 2,500 nodes (interactive),"
-                    + " 43 the paper's 11,354 (default: ${DEFAULT-VALUE})")
+            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
+                    + " 2,500 (default: ${DEFAULT-VALUE}, the resolution study's pick in meshes/resolution-pick.json,"
+                    + " the paper's 43 when there is none); the diaphragm opens with the large-step bdf2 solver")
     int rings = GuiScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
@@ -67,6 +68,22 @@ public final class GuiCommand implements Callable<Integer> {
     @Option(names = "--after", paramLabel = "S", description = "simulated time before --screenshot, s (default: ${DEFAULT-VALUE})")
     double after = 2;
 
+    @Option(names = "--run-for", paramLabel = "S",
+            description = {"play for S seconds of wall time once the view shows, close the window and print a JSON"
+                    + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
+                    + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)"})
+    Double runFor;
+
+    @Option(names = "--unpaced", description = "start with \"Real time\" unticked: simulate as fast as possible"
+            + " instead of at most real time")
+    boolean unpaced;
+
+    @Option(names = "--threads", paramLabel = "N",
+            description = "threads that share each step; 0 = automatic, as diaphragm --threads 0: all cores from "
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1"
+                    + " (default: ${DEFAULT-VALUE})")
+    int threads = 0;
+
     /** Scene names for picocli's help. */
     static final class SceneNames implements Iterable<String> {
         @Override
@@ -86,26 +103,59 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        long started = System.nanoTime();
         if (screenshot != null && !(after >= 0 && Double.isFinite(after))) {
             throw new IllegalArgumentException("--after must be a finite number >= 0 s, got " + after);
         }
+        if (runFor != null && !(runFor > 0 && runFor <= 86_400)) {
+            throw new IllegalArgumentException("--run-for must be a number of wall seconds > 0 and at most a day,"
+                    + " got " + runFor);
+        }
+        if (threads < 0) {
+            throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
+        }
         // Bad names and files fail here, before any window.
         SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
-        if (java.awt.GraphicsEnvironment.isHeadless()) {
-            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
-                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
-        }
-        setScripted(screenshot != null);
+        requireDisplay();
+        boolean script = screenshot != null || runFor != null;
+        setScripted(script);
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
-        // A screenshot run starts paused and plays once the view is up (takeScreenshotAndClose).
-        // A scripted screenshot never overwrites what the user tuned last.
-        GuiWindow w = open(factory, fresh ? null : dir, screenshot == null ? dir : null, preset,
-                !paused && screenshot == null);
+        // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
+        // It never overwrites what the user tuned last.
+        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
+                GuiScenes.opensInRealTime(scene));
+        if (runFor != null) {
+            java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
+            w.awaitClosed();
+            System.out.println(org.tensim.io.Json.line(summary));
+            return summary.get("diverged") == null ? 0 : 1;
+        }
+        if (unpaced) {
+            SwingUtilities.invokeAndWait(() -> w.controls().setPaced(false));
+        }
         if (screenshot != null) {
             takeScreenshotAndClose(w, screenshot, after);
         }
         w.awaitClosed();
         return 0;
+    }
+
+    /**
+     * Fails with one line when there is no display or it cannot be reached (AWT's
+     * AWTError would otherwise surface as a long stack trace from the first window).
+     */
+    static void requireDisplay() {
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            throw new IllegalStateException("the GUI needs a display: none is set (DISPLAY) or Java runs headless;"
+                    + " ./tensim gui starts one with xvfb-run when DISPLAY is unset");
+        }
+        try {
+            java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();
+        } catch (java.awt.AWTError | java.awt.HeadlessException | UnsatisfiedLinkError e) {
+            throw new IllegalStateException("cannot reach the display DISPLAY='" + System.getenv("DISPLAY")
+                    + "' (" + e.getMessage() + "); start the X server, fix DISPLAY, or unset it so that ./tensim gui"
+                    + " starts Xvfb");
+        }
     }
 
     /**
@@ -116,9 +166,22 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play)
             throws Exception {
+        return open(factory, restoreDir, saveDir, preset, play, 0, false);
+    }
+
+    /**
+     * As {@link #open(SceneFactory, Path, Path, Path, boolean)} with a thread count (0: automatic),
+     * starting from the large-step solver when realTime (before last-used parameters and the preset).
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
+            boolean realTime) throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
                 IntegratorCatalog.available());
+        if (realTime) {
+            tuning.setIntegrator(IntegratorCatalog.REAL_TIME);
+            tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
+        }
         String note = restoreDir == null ? null : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()));
         if (preset != null) {
             try {
@@ -137,7 +200,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         ViewScene start = first;
         AtomicReference<GuiWindow> w = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> w.set(new GuiWindow(factory, start, tuning, saveDir, play, note)));
+        SwingUtilities.invokeAndWait(() -> w.set(new GuiWindow(factory, start, tuning, saveDir, play, note, threads)));
         return w.get();
     }
 

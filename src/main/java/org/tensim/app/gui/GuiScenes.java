@@ -3,6 +3,7 @@ package org.tensim.app.gui;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
 import org.tensim.scene.tunable.CubeViewScene;
@@ -24,10 +25,25 @@ public final class GuiScenes {
      * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
-        /** The defaults: generated dome at the interactive resolution, the project's parametric rib cage. */
+        /**
+         * The defaults: the generated dome at the resolution the resolution study picked
+         * ({@link ResolutionPick}, meshes/resolution-pick.json; the paper's 43 rings when there is none),
+         * the project's parametric rib cage.
+         */
         public static Source defaults() {
-            return new Source(null, "mm", 2.5, DiaphragmViewScene.DEFAULT_RINGS, null);
+            return new Source(null, "mm", 2.5, ResolutionPick.read().rings(), null);
         }
+    }
+
+    /**
+     * Whether the scene opens with the large-step solver ({@link IntegratorCatalog#REAL_TIME} at
+     * {@link IntegratorCatalog#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
+     * runs at a few hundredths of real time at the paper's resolution (43 rings: 11,354 diaphragm nodes,
+     * the mesh of {@code ./tensim diaphragm}). Last-used parameters and presets
+     * still apply over it.
+     */
+    public static boolean opensInRealTime(String name) {
+        return "diaphragm".equals(name);
     }
 
     /** Names accepted by {@code --scene}, the default first. */
@@ -50,8 +66,10 @@ public final class GuiScenes {
                 return CubeViewScene.factory();
             case "diaphragm":
                 if (src.mesh() != null && !Files.isRegularFile(src.mesh())) {
-                    throw new IllegalArgumentException("--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
-                            + " or .off mesh of the diaphragm)");
+                    // A missing input file is a refused file (exit 1), not a usage error (docs/outputs.md).
+                    String msg = "--mesh " + src.mesh() + ": no such file (expected an .obj, .stl"
+                            + " or .off mesh of the diaphragm)";
+                    throw new java.io.UncheckedIOException(msg, new java.io.FileNotFoundException(msg));
                 }
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());

@@ -9,9 +9,7 @@ import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.concurrent.CountDownLatch;
 import javax.imageio.ImageIO;
 import javax.swing.JFileChooser;
@@ -65,9 +63,10 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
      * @param configDir where last-used parameters are saved, or null not to save them
      * @param play      whether to start playing at once
      * @param startMessage a note for the status bar (e.g. why last-used parameters were not restored), or null
+     * @param threads   threads per step of a body, 0 for the automatic rule ({@link SimulationRunner})
      */
     GuiWindow(SceneFactory factory, ViewScene first, Tuning tuning, Path configDir, boolean play,
-            String startMessage) {
+            String startMessage, int threads) {
         this.factory = factory;
         this.tuning = tuning;
         this.configDir = configDir;
@@ -88,7 +87,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         view.canvas().setMinimumSize(new Dimension(200, 150));
         chart = new ProbeChart(first.defaultProbeAxis());
         controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
-        runner = new SimulationRunner(factory, tuning::snapshot, this);
+        runner = new SimulationRunner(factory, tuning::snapshot, this, threads);
         tuning.bind(runner);
 
         JPanel centre = new JPanel(new BorderLayout());
@@ -300,17 +299,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     void saveScreenshot(Path file) throws Exception {
         Point p = frame.getLocationOnScreen();
         BufferedImage img = new Robot().createScreenCapture(new Rectangle(p, frame.getSize()));
-        Path abs = file.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = Files.createTempFile(abs.getParent(), abs.getFileName().toString(), ".tmp");
-        try {
-            if (!ImageIO.write(img, "png", tmp.toFile())) {
+        org.tensim.io.OutputFiles.writeAtomically(file, out -> {
+            if (!ImageIO.write(img, "png", out)) {
                 throw new IOException("no PNG writer available");
             }
-            Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        });
     }
 
     private void saveLastUsed() {

@@ -6,7 +6,6 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
-import org.tensim.solver.CriticalTimeStep;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.Body;
@@ -18,7 +17,9 @@ import org.tensim.scene.tunable.ViewScene;
 /**
  * Runs a scene's simulations on their own thread. Everything that changes the
  * model (parameters, integrator, a new scene) is queued and done on this thread
- * between two steps, so the model is never locked and never changed mid-step.
+ * between two steps, so the model is never locked and never changed mid-step;
+ * what a change costs beyond that (a scene rebuilt with new constants) is prepared
+ * on another thread meanwhile ({@link ViewScene#prepare}), so the steps go on.
  * After every step the {@link FrameBuffer} (for the scene graph) and the
  * {@link ProbeRecorder} (for the chart) copy what they need.
  *
@@ -60,14 +61,15 @@ public final class SimulationRunner implements Tuning.Target {
     private volatile double dt;
     private volatile double simTime;
     private volatile long steps;
-    private volatile double criticalDt = Double.POSITIVE_INFINITY;
     private volatile long unconvergedProjections;
+    private volatile double errorEstimate = Double.NaN;
     private volatile String divergence;
 
     private ViewScene scene; // simulation thread only
     private boolean tensegrityTendon;
-    private boolean criticalStale;
-    private long criticalComputedAt;
+    private final CriticalStepWatch critical = new CriticalStepWatch();
+    private final BodyThreads threads;
+    private final ChangePreparer preparer = new ChangePreparer();
     private long anchorWall;
     private double anchorSim;
     private boolean reanchor = true;
@@ -76,8 +78,11 @@ public final class SimulationRunner implements Tuning.Target {
      * @param factory  makes the scene (on the simulation thread)
      * @param settings the current tuned values, applied to every new scene
      * @param events   receives reports
+     * @param threads  threads that share each step of a body (>= 1), or 0 for the automatic rule of
+     *                 {@code diaphragm --threads 0} (all cores from 20,000 springs)
      */
-    public SimulationRunner(SceneFactory factory, Supplier<Settings> settings, Events events) {
+    public SimulationRunner(SceneFactory factory, Supplier<Settings> settings, Events events, int threads) {
+        this.threads = new BodyThreads(threads);
         this.factory = factory;
         this.settings = settings;
         this.events = events;
@@ -93,7 +98,7 @@ public final class SimulationRunner implements Tuning.Target {
         thread.start();
     }
 
-    /** Stops the thread and waits for it (at most 5 s). */
+    /** Stops the thread and its workers and waits for it (at most 5 s). */
     public void stop() {
         stopped = true;
         LockSupport.unpark(thread);
@@ -102,6 +107,8 @@ public final class SimulationRunner implements Tuning.Target {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        critical.close();
+        preparer.close();
     }
 
     public void play() {
@@ -153,22 +160,37 @@ public final class SimulationRunner implements Tuning.Target {
                     // Cannot change in a running simulation: a new scene with the value, from rest.
                     rebuild();
                 } else {
-                    scene.apply(key, value);
-                    updateCriticalStep();
+                    prepare(scene, key, value);
                 }
             });
         }
         LockSupport.unpark(thread);
     }
 
+    /**
+     * The costly part of a change (ViewScene.prepare: e.g. rebuilding the diaphragm with new
+     * constants) is done on the preparing thread while the simulation steps; its hand-over
+     * waits for a gap between steps, and is dropped if another scene has been installed since.
+     */
+    private void prepare(ViewScene s, String key, double value) {
+        preparer.submit(s, key, value, rest -> {
+            commands.add(() -> {
+                if (scene == s) {
+                    rest.run();
+                    critical.invalidate();
+                }
+            });
+            LockSupport.unpark(thread);
+        }, e -> events.failed("change not applied", e));
+    }
+
     @Override
     public void applyIntegrator(IntegratorChoice choice) {
         commands.add(() -> {
             if (scene != null) {
-                for (Body b : scene.bodies()) {
-                    b.simulation().setIntegrator(choice.create());
-                }
-                updateCriticalStep();
+                threads.setIntegrator(choice::create);
+                errorEstimate = Double.NaN;
+                critical.invalidate();
             }
         });
         LockSupport.unpark(thread);
@@ -205,6 +227,7 @@ public final class SimulationRunner implements Tuning.Target {
                 b.simulation().setIntegrator(integrator.create());
                 b.simulation().setWarningSink(m -> events.warning(b.name() + ": " + m));
             }
+            threads.attach(bodies);
             FrameBuffer frames = new FrameBuffer(bodies);
             ProbeRecorder probes = new ProbeRecorder(bodies, PROBE_INTERVAL_S, 1 << 14);
             Simulation last = bodies.get(bodies.size() - 1).simulation();
@@ -215,37 +238,23 @@ public final class SimulationRunner implements Tuning.Target {
             simTime = 0;
             steps = 0;
             unconvergedProjections = 0;
+            errorEstimate = Double.NaN;
             reanchor = true;
-            criticalStale = true;
-            criticalComputedAt = 0;
-            updateCriticalStep();
+            critical.newScene();
             events.installed(s, frames, probes);
         });
         LockSupport.unpark(thread);
     }
 
-    /** Marks the critical step for recomputation (done in the loop, at most every 0.3 s: a slider drag
-     *  sends many changes, and the estimate's power iteration is not free on a large scene). */
-    private void updateCriticalStep() {
-        criticalStale = true;
-    }
-
-    private void refreshCriticalStep() {
-        long now = System.nanoTime();
-        if (!criticalStale || now - criticalComputedAt < 300_000_000L) {
-            return;
-        }
-        double c = Double.POSITIVE_INFINITY;
-        for (Body b : scene.bodies()) {
-            Simulation s = b.simulation();
-            c = Math.min(c, CriticalTimeStep.estimate(s.state()).forIntegrator(s.integrator()));
-        }
-        criticalDt = c;
-        criticalStale = false;
-        criticalComputedAt = now;
-    }
-
     private void loop() {
+        try {
+            run();
+        } finally {
+            threads.close();
+        }
+    }
+
+    private void run() {
         while (!stopped) {
             Runnable c;
             while ((c = commands.poll()) != null) {
@@ -256,7 +265,7 @@ public final class SimulationRunner implements Tuning.Target {
                 }
             }
             if (scene != null) {
-                refreshCriticalStep();
+                critical.poll(scene.bodies());
             }
             if (scene == null || divergence != null) {
                 pendingSteps.set(0);
@@ -311,6 +320,7 @@ public final class SimulationRunner implements Tuning.Target {
         double h = dt;
         List<Body> bodies = scene.bodies();
         long unconverged = 0;
+        double error = Double.NaN;
         for (Body b : bodies) {
             try {
                 b.simulation().step(h);
@@ -321,7 +331,9 @@ public final class SimulationRunner implements Tuning.Target {
                 return false;
             }
             unconverged += b.simulation().unconvergedProjections();
+            error = ErrorReadout.worse(error, ErrorReadout.of(b.simulation().integrator()));
         }
+        errorEstimate = error;
         Simulation last = bodies.get(bodies.size() - 1).simulation();
         unconvergedProjections = unconverged;
         simTime = last.time();
@@ -346,7 +358,20 @@ public final class SimulationRunner implements Tuning.Target {
 
     /** The critical time step estimate of the current scene for its integrator, s (infinite: none). */
     public double criticalTimeStep() {
-        return criticalDt;
+        return critical.criticalStep();
+    }
+
+    /**
+     * The integrator's own relative error estimate of the last step, the largest over bodies
+     * ({@link ErrorReadout}), or NaN when the integrator gives none.
+     */
+    public double errorEstimate() {
+        return errorEstimate;
+    }
+
+    /** Threads that share each step of the largest body. */
+    public int threads() {
+        return threads.threads();
     }
 
     /** Steps whose rigid-link projection missed its tolerance, summed over bodies. */

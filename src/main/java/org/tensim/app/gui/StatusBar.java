@@ -9,7 +9,8 @@ import javax.swing.JPanel;
 
 /**
  * The status line: simulated time, steps per second, real-time factor, frames
- * per second, and warnings (time step beyond the critical estimate, rigid links
+ * per second, the time step and the integrator's error estimate (when it gives
+ * one, {@link ErrorReadout}), and warnings (time step beyond the critical estimate, rigid links
  * not converging, divergence, refused values). Rates are measured between two
  * calls of {@link #update}.
  */
@@ -53,14 +54,17 @@ final class StatusBar extends JPanel {
             double sps = Math.max(0, steps - lastSteps) / wall;
             double rtf = Math.max(0, sim - lastSim) / wall;
             double fps = (framesRendered - lastFrames) / wall;
-            String h = org.tensim.scene.tunable.TunableParameter.format(r.timeStep());
+            String h = org.tensim.scene.tunable.TunableParameter.format(r.timeStep()) + " s" + errorText(r.errorEstimate());
             if (r.isPlaying()) {
                 numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   %,.0f steps/s   |   real-time x%.2f   |   "
-                        + "%.0f fps   |   h = %s s", sim, sps, rtf, fps, h));
+                        + "%.0f fps   |   h = %s", sim, sps, rtf, fps, h));
             } else {
-                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   paused (%,d steps)   |   %.0f fps   |   h = %s s",
+                numbers.setText(String.format(Locale.ROOT, "t = %.3f s   |   paused (%,d steps)   |   %.0f fps   |   h = %s",
                         sim, steps, fps, h));
             }
+            numbers.setToolTipText(r.threads() + (r.threads() == 1 ? " thread" : " threads") + " per step"
+                    + (Double.isNaN(r.errorEstimate()) ? "" : "; error: the integrator's own relative estimate"
+                            + " of its last step"));
         }
         lastNanos = now;
         lastSteps = steps;
@@ -78,6 +82,14 @@ final class StatusBar extends JPanel {
             warning.setText(" ");
             warning.setToolTipText(null);
         }
+    }
+
+    /** The integrator's error estimate as shown after the time step: empty when it gives none. */
+    static String errorText(double estimate) {
+        if (Double.isNaN(estimate)) {
+            return "";
+        }
+        return String.format(Locale.ROOT, "   |   error ~%.2g %%", 100 * estimate);
     }
 
     /** The standing warnings, or null. */

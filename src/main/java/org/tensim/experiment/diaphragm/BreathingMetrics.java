@@ -33,15 +33,13 @@ public final class BreathingMetrics implements StepListener {
     private double apexAtInsp = Double.NaN;
 
     /**
-     * @param runSeconds length of the run, s (at least the inspiration time Ti)
+     * @param runSeconds length of the run, s (> 0); the breathing is measured only when the run reaches
+     *                   end-inspiration, at the inspiration time Ti ({@link #complete()})
      */
     public BreathingMetrics(DiaphragmScene scene, double runSeconds) {
         this.scene = scene;
         double period = scene.cycle().periodS();
-        if (runSeconds < scene.cycle().inspirationS()) {
-            throw new IllegalArgumentException("run of " + runSeconds + " s is shorter than one inspiration ("
-                    + scene.cycle().inspirationS() + " s); expected at least that to measure the breathing");
-        }
+        org.tensim.model.Check.positive("run length", "s", runSeconds);
         this.start = measuredCycleStart(runSeconds, period);
         this.inspirationEnd = start + scene.cycle().inspirationS();
         this.end = start + period;
@@ -153,6 +151,25 @@ public final class BreathingMetrics implements StepListener {
     /** Extents {x, y, z} at end-expiration, m. */
     public double[] extentsAtExpiration() {
         return extentsExp.clone();
+    }
+
+    /**
+     * The measured cycle's figures as summary fields, in millimetres, unrounded, under the names
+     * of the diaphragm's summary.json (docs/diaphragm.md); empty when end-inspiration was not reached.
+     */
+    public java.util.Map<String, Double> fields() {
+        java.util.Map<String, Double> f = new java.util.LinkedHashMap<>();
+        if (complete()) {
+            f.put("dome_excursion_mm", 1e3 * domeExcursionM());
+            f.put("apex_descent_mm", -1e3 * apexDescentM());
+            f.put("ap_extent_change_mm", 1e3 * apChangeM());
+            f.put("transverse_extent_change_mm", 1e3 * transverseChangeM());
+            f.put("vertical_extent_change_mm", 1e3 * verticalChangeM());
+            f.put("ap_extent_change_all_nodes_mm", 1e3 * apChangeAllM());
+            f.put("transverse_extent_change_all_nodes_mm", 1e3 * transverseChangeAllM());
+            f.put("thorax_vertical_change_mm", -1e3 * apexDescentM());
+        }
+        return f;
     }
 
     public DiaphragmScene scene() {

@@ -12,12 +12,16 @@ import java.util.Map;
 import org.knowm.xchart.XYChart;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
-import org.tensim.io.Json;
+import org.tensim.io.Progress;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunSignals;
+import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.VtkSeriesWriter;
 import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.stability.TimeStep;
 
 /**
  * Runs breathing cycles of a built diaphragm headless and writes, into one folder:
@@ -38,13 +42,13 @@ public final class DiaphragmReport {
     /**
      * Run settings.
      *
-     * @param seconds         simulated time, s (at least one inspiration)
-     * @param dtS             time step, s; 0 for the scene's recommended RK2 step
+     * @param seconds         simulated time, s (the breathing figures need at least one inspiration)
+     * @param dtS             time step, s; 0 for the step the time-step policy recommends for the integrator on the scene
      * @param vtkPerCycle     VTK frames per breathing cycle (0: none)
      * @param vectorScale     scale of the mid-inspiration vectors (paper: 100)
      * @param vectorIntervalS interval over which the mid-inspiration displacement is taken, s
      * @param csvTimes        times of the displacement CSV, s; null for end-inspiration and the end of the
-     *                        measured cycle
+     *                        measured cycle (those within the run; the end of a run shorter than Ti)
      */
     public record Options(double seconds, double dtS, int vtkPerCycle, double vectorScale, double vectorIntervalS,
             double[] csvTimes) {
@@ -64,31 +68,45 @@ public final class DiaphragmReport {
     private DiaphragmReport() {
     }
 
-    /** Runs and writes everything to {@code out}; returns the summary (also in summary.json). */
+    /** The files and folders the diaphragm command writes into its folder (docs/outputs.md). */
+    public static final List<String> OUTPUTS = List.of("sagittal.png", "axial.png", "sagittal-cycle.png",
+            "axial-cycle.png", "breathing.png", "displacements.csv", "probe.csv", "vtk");
+
+    /**
+     * Runs and writes everything to {@code out}, a run folder of its own; returns the summary
+     * (also in summary.json, with its status).
+     */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Path out, PrintStream log)
-            throws IOException {
+            throws Exception {
         return run(built, o, "rk2", out, log);
     }
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, Path, PrintStream)} with the named integrator
-     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended RK2 step is used.
+     * (see {@code Integrators.names()}); with a time step of 0 the scene's recommended step for that integrator is used.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o, String integrator, Path out,
-            PrintStream log) throws IOException {
-        return run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1, out, log);
+            PrintStream log) throws Exception {
+        Map<String, Object> summary = new LinkedHashMap<>();
+        RunFolder.run(out, "diaphragm", OUTPUTS, folder -> {
+            Map<String, Object> s = run(built, o, org.tensim.solver.integrators.Integrators.create(integrator), 1,
+                    folder, log);
+            summary.putAll(folder.finish(s.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK, s));
+        });
+        return summary;
     }
 
     /**
      * As {@link #run(DiaphragmSetup.Built, Options, String, Path, PrintStream)} with an integrator
      * instance (e.g. an implicit Euler with its own CG tolerance) on {@code threads} threads (>= 1; the
      * spring pass, RK2's and symplectic Euler's node loops and the link sweeps are shared among them,
-     * see {@link org.tensim.solver.parallel.Parallelism}).
+     * see {@link org.tensim.solver.parallel.Parallelism}). Writes every output but the summary into
+     * the run folder and returns the summary's fields; a diverged run's have "diverged" (the message)
+     * and its figures are marked DIVERGED. The caller finishes the folder.
      */
     public static Map<String, Object> run(DiaphragmSetup.Built built, Options o,
-            org.tensim.solver.Integrator chosen, int threads, Path out, PrintStream log) throws IOException {
+            org.tensim.solver.Integrator chosen, int threads, RunFolder out, PrintStream log) throws IOException {
         Check.atLeast("thread count", threads, 1);
-        Files.createDirectories(out);
         Simulation sim = built.scene().newSimulation();
         sim.setIntegrator(chosen);
         try (org.tensim.solver.parallel.Parallelism par = threads > 1
@@ -102,36 +120,36 @@ public final class DiaphragmReport {
      * write the files.
      */
     private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
-            long[] workers, Path out, PrintStream log) throws IOException {
+            long[] workers, RunFolder out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
-        double dt = o.dtS() > 0 ? o.dtS() : scene.recommendedTimeStep();
+        TimeStep step = scene.timeStep(sim.integrator(), o.dtS());
+        double dt = step.seconds();
         BreathingMetrics metrics = new BreathingMetrics(scene, o.seconds());
         Snapshots snapshots = Snapshots.plan(scene, o, metrics.measuredCycleStart());
-        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.resolve("vtk"), "diaphragm",
+        VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.file("vtk"), "diaphragm",
                 scene.allTriangles(), java.util.Arrays.copyOf(scene.labels(), scene.simulatedNodes()), "tissue") : null;
-        Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out.resolve("probe.csv"), workers);
+        Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out, workers);
         Map<String, Object> summary = new LinkedHashMap<>();
         describeScene(summary, built);
         if (metrics.complete()) {
             describeBreathing(summary, metrics);
+        } else {
+            summary.put("breathing", "not measured: the run of " + o.seconds() + " s ends before end-inspiration, "
+                    + metrics.inspirationEnd() + " s");
         }
-        describeRun(summary, built, o, sim, threads, dt, metrics.measuredCycleStart(), stepping);
-        writeDisplacements(out.resolve("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
-        figures(out, scene, snapshots.kept, snapshots.rest, o);
-        breathingChart(out.resolve("breathing.png"), out.resolve("probe.csv"));
-        Json.write(out.resolve("summary.json"), summary);
-        if (stepping.diverged != null) {
-            throw new IllegalStateException(stepping.diverged + " (outputs so far are in " + out + ")");
-        }
+        describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
+        writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
+        figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
+        breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
-            log.println("wrote " + out.resolve("summary.json") + ", displacements.csv, probe.csv, PNG slices"
+            log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
                     + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
         }
         return summary;
     }
 
     /** What the stepping loop measured: wall and CPU time of the steps, and the divergence message if any. */
-    private record Stepping(double wallS, double cpuS, String diverged) {
+    private record Stepping(double wallS, double cpuS, String diverged, double divergedAtS) {
     }
 
     /**
@@ -139,7 +157,7 @@ public final class DiaphragmReport {
      * breathing metrics after every step. Stops early, with the message, when the run diverges.
      */
     private static Stepping step(DiaphragmScene scene, Simulation sim, Options o, double dt,
-            BreathingMetrics metrics, Snapshots snapshots, VtkSeriesWriter vtk, Path probeCsv, long[] workers)
+            BreathingMetrics metrics, Snapshots snapshots, VtkSeriesWriter vtk, RunFolder out, long[] workers)
             throws IOException {
         int simulated = scene.simulatedNodes();
         int nd = scene.diaphragmNodes();
@@ -155,8 +173,10 @@ public final class DiaphragmReport {
         boolean cpuTimed = cpu.isCurrentThreadCpuTimeSupported();
         long cpuNanos = 0;
         String diverged = null;
-        try (CsvWriter probe = new CsvWriter(probeCsv, List.of("t_s", "breathing_level",
-                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20)) {
+        double divergedAt = Double.NaN;
+        try (CsvWriter probe = out.csv("probe.csv", List.of("t_s", "breathing_level",
+                "apex_dz_mm", "extent_x_mm", "extent_y_mm", "extent_z_mm"), 20);
+                Progress progress = Progress.start("diaphragm", o.seconds())) {
             double probeEvery = 0.005;
             double nextProbe = 0;
             metrics.begin(sim);
@@ -176,6 +196,8 @@ public final class DiaphragmReport {
                 if (t >= o.seconds() - 0.5 * dt) {
                     break;
                 }
+                RunSignals.checkStop();
+                progress.update(t);
                 long c0 = cpuTimed ? cpu.getCurrentThreadCpuTime() : 0;
                 long t0 = System.nanoTime();
                 sim.step(dt);
@@ -185,12 +207,13 @@ public final class DiaphragmReport {
             }
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();
+            divergedAt = e.timeSeconds();
         }
         for (int w = 0; w < workers.length && cpuTimed; w++) {
             // Worker threads exist for this run only: their whole CPU time is the steps' (spinning included).
             cpuNanos += Math.max(0, cpu.getThreadCpuTime(workers[w]));
         }
-        return new Stepping(stepNanos / 1e9, cpuTimed ? cpuNanos / 1e9 : Double.NaN, diverged);
+        return new Stepping(stepNanos / 1e9, cpuTimed ? cpuNanos / 1e9 : Double.NaN, diverged, divergedAt);
     }
 
     /** The scene's make-up: source, sizes, attachments, tendon, thickness. */
@@ -213,19 +236,12 @@ public final class DiaphragmReport {
 
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
-        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
     }
 
     /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */
     private static void describeRun(Map<String, Object> summary, DiaphragmSetup.Built built, Options o,
-            Simulation sim, int threads, double dt, double measuredCycleStart, Stepping stepping) {
+            Simulation sim, int threads, TimeStep step, double measuredCycleStart, Stepping stepping) {
         DiaphragmScene scene = built.scene();
         org.tensim.solver.Integrator chosen = sim.integrator();
         double wall = stepping.wallS();
@@ -238,9 +254,8 @@ public final class DiaphragmReport {
             summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
             summary.put("cg_unconverged_solves", ie.unconvergedSolves());
         }
-        summary.put("dt_s", dt);
-        summary.put("dt_rule", o.dtS() > 0 ? "given (--dt)" : "RK2 stable step for w_max (Gershgorin) and the Rayleigh damping, x"
-                + org.tensim.scene.diaphragm.Rk2Step.SAFETY);
+        summary.put("dt_s", step.seconds());
+        summary.put("dt_rule", step.reason());
         summary.put("omega_max_bound_rad_s", round(scene.omegaMaxBound(), 1));
         summary.put("steps", sim.steps());
         summary.put("steps_per_s", round(sim.steps() / Math.max(wall, 1e-9), 1));
@@ -258,6 +273,7 @@ public final class DiaphragmReport {
         }
         if (stepping.diverged() != null) {
             summary.put("diverged", stepping.diverged());
+            summary.put("diverged_at_s", stepping.divergedAtS());
         }
     }
 
@@ -279,8 +295,10 @@ public final class DiaphragmReport {
         }
     }
 
-    private static void figures(Path out, DiaphragmScene scene, double[][] kept, double[] rest, Options o)
-            throws IOException {
+    private static void figures(RunFolder out, DiaphragmScene scene, double[][] kept, double[] rest, Options o,
+            double divergedAt) throws IOException {
+        java.util.function.UnaryOperator<String> mark = title -> Double.isNaN(divergedAt) ? title
+                : Charts.divergedTitle(divergedAt, title);
         int nd = scene.diaphragmNodes();
         int[] upper = java.util.stream.IntStream.range(0, nd).filter(scene.surfaces()::isUpper).toArray();
         int apex = scene.apexNode();
@@ -288,22 +306,22 @@ public final class DiaphragmReport {
         double zPlane = rest[3 * apex + 2] - 0.04;
         double band = 2 * meanEdge(scene);
         if (kept[0] != null && kept[1] != null) {
-            SliceFigures.write(out.resolve("sagittal.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("sagittal.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Sagittal slice x = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * xPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 0, xPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 0, xPlane, band,
                     o.vectorScale());
-            SliceFigures.write(out.resolve("axial.png"), String.format(java.util.Locale.ROOT,
+            SliceFigures.write(out.file("axial.png"), mark.apply(String.format(java.util.Locale.ROOT,
                     "Axial slice z = %.0f mm: displacement over %.0f ms at mid-inspiration, x%.0f", 1e3 * zPlane,
-                    1e3 * o.vectorIntervalS(), o.vectorScale()), kept[0], kept[1], upper, 2, zPlane, band,
+                    1e3 * o.vectorIntervalS(), o.vectorScale())), kept[0], kept[1], upper, 2, zPlane, band,
                     o.vectorScale());
         }
         if (kept[2] != null && kept[3] != null) {
-            SliceFigures.write(out.resolve("sagittal-cycle.png"), String.format(java.util.Locale.ROOT,
-                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane), kept[2],
+            SliceFigures.write(out.file("sagittal-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Sagittal slice x = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * xPlane)), kept[2],
                     kept[3], upper, 0, xPlane, band, 1);
-            SliceFigures.write(out.resolve("axial-cycle.png"), String.format(java.util.Locale.ROOT,
-                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane), kept[2], kept[3],
-                    upper, 2, zPlane, band, 1);
+            SliceFigures.write(out.file("axial-cycle.png"), mark.apply(String.format(java.util.Locale.ROOT,
+                    "Axial slice z = %.0f mm: end-expiration to end-inspiration, x1", 1e3 * zPlane)), kept[2],
+                    kept[3], upper, 2, zPlane, band, 1);
         }
     }
 
@@ -318,7 +336,7 @@ public final class DiaphragmReport {
         return s / Math.max(n, 1);
     }
 
-    private static void breathingChart(Path png, Path probeCsv) throws IOException {
+    private static void breathingChart(Path png, Path probeCsv, double divergedAt) throws IOException {
         List<String> lines = Files.readAllLines(probeCsv);
         int n = lines.size() - 1;
         if (n < 2) {
@@ -341,6 +359,9 @@ public final class DiaphragmReport {
         Charts.addLine(c, "apex z displacement", t, dz);
         Charts.addLine(c, "transverse extent change", t, ex);
         Charts.addLine(c, "antero-posterior extent change", t, ey);
+        if (!Double.isNaN(divergedAt)) {
+            Charts.markDiverged(c, divergedAt);
+        }
         Charts.savePng(c, png);
     }
 

@@ -1,179 +1,287 @@
 package org.tensim.experiment.diaphragm;
 
-import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYSeries;
-import org.knowm.xchart.style.markers.SeriesMarkers;
-import org.tensim.io.Charts;
-import org.tensim.io.CsvWriter;
+import org.tensim.io.ProjectFolder;
 import org.tensim.io.Json;
+import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.Simulation;
 
 /**
- * "Model no more than the scene needs": the same scene at several mesh
- * resolutions, each run through one inspiration; the displacement field at
- * end-inspiration is compared with the finest one's, and plotted against the cost
- * (wall seconds per simulated second).
+ * "Model no more than the scene needs": the same scene at several mesh resolutions, each
+ * run through one inspiration; each model's displacement field at end-inspiration is
+ * compared with its family's finest ({@link ResolutionAnalysis}: error, convergence order),
+ * and the coarsest double dome within the tolerance is picked for the interactive uses
+ * ({@link ResolutionPick}).
  *
- * <p>Error measure: for every upper-surface node of the finest model, the nearest
- * upper-surface node (at rest) of the coarser one is taken, and
- * {@code e = sqrt(sum |u_coarse - u_fine|^2 / sum |u_fine|^2)} (relative RMS; the
- * nearest-node transfer itself adds an error of the order of the displacement
- * gradient times the coarse edge length).
- *
- * <p>Two families: the project's double dome at several ring counts (reference:
- * the default 43 rings), and the BodyParts3D diaphragm simplified by vertex
- * clustering, faces kept apart (reference: its finest simplification); the latter
- * only when that mesh is present.
+ * <p>Families: without a mesh, the project's double dome at several ring counts (reference:
+ * the default 43 rings) and the BodyParts3D diaphragm simplified by vertex clustering, faces
+ * kept apart, with BodyParts3D's rib boxes (reference: its finest simplification; only when that
+ * mesh is present). With a
+ * mesh ({@link #runMesh}), that mesh decimated by vertex clustering at the given cell sizes,
+ * as given, and refined by midpoint subdivision; the finest is the reference.
  */
 public final class ResolutionStudy {
-    /** Relative RMS error under which a resolution is accepted. */
+    /** Default relative RMS error under which a resolution is accepted. */
     public static final double TOLERANCE = 0.10;
     /** Ring counts of the parametric family; the last is the reference. */
     static final int[] RINGS = {10, 14, 20, 28, 43};
     /**
-     * Clustering cell sizes (mm) for the imported mesh; the last is the reference. The full mesh is not
-     * used as reference: its smallest elements force a stable step near 1.3e-5 s (docs/diaphragm.md).
+     * Clustering cell sizes (mm) for the BodyParts3D family; the last is the reference. The full mesh is
+     * not used as reference: its smallest elements force a stable step near 4e-5 s (docs/diaphragm.md).
      */
     static final double[] CELLS_MM = {16, 12, 9, 6.5};
+    /** Default clustering cells for {@code --mesh}, as multiples of the mesh's mean edge length. */
+    static final double[] CELL_FACTORS = {4, 2.8, 2};
     /** The BodyParts3D mesh, relative to the project folder. */
     public static final Path BODYPARTS_MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "diaphragm-FJ3131-dec28k-mm.obj");
 
     /**
-     * One model's outcome: rest and end positions of its diaphragm nodes (3 per node, m),
-     * which of them are on the upper surface, and its cost in wall seconds per simulated second.
+     * One model's outcome: rest and end positions of its diaphragm nodes (3 per node, m), which of
+     * them are on the upper surface, the upper surface's triangles (node ids, 3 each; null: the error
+     * falls back to the nearest node), its mean edge length (m), apex descent (m, positive down) and
+     * cost in wall seconds per simulated second.
      */
-    public record Run(String family, String label, int nodes, int springs, double costPerSimS, double dt, double[] rest,
-            double[] end, boolean[] upper) {
+    public record Run(String family, String label, int nodes, int springs, double elementSizeM, double costPerSimS,
+            double dt, double apexDescentM, double[] rest, double[] end, boolean[] upper, int[] upperTriangles) {
+        /** A run whose element size, apex descent and triangles are not recorded, for comparisons of fields only. */
+        public Run(String family, String label, int nodes, int springs, double costPerSimS, double dt, double[] rest,
+                double[] end, boolean[] upper) {
+            this(family, label, nodes, springs, Double.NaN, costPerSimS, dt, Double.NaN, rest, end, upper, null);
+        }
+    }
+
+    /** What the study needs besides the scene: simulated time, tolerance, models, where to write. */
+    public record Setup(Map<String, double[]> boxes, DiaphragmParameters p, BoundaryConditions bc,
+            BreathingCycle cycle, DiaphragmControls controls, double seconds, double tolerance, PrintStream log) {
+        public Setup {
+            if (!(tolerance > 0 && tolerance < 1)) {
+                throw new IllegalArgumentException("resolution tolerance must be in (0, 1) (relative RMS error), got "
+                        + tolerance);
+            }
+        }
+
+        Setup withBoxes(Map<String, double[]> b) {
+            return new Setup(b, p, bc, cycle, controls, seconds, tolerance, log);
+        }
     }
 
     private ResolutionStudy() {
     }
 
-    public static Map<String, Object> run(Path boxes, DiaphragmParameters p, BreathingCycle cycle,
-            DiaphragmControls controls, DiaphragmReport.Options o, Path out, PrintStream log)
-            throws IOException, MeshFormatException {
+    /**
+     * The default study: the double dome family, then BodyParts3D's when present. Writes
+     * resolution.csv/json/png to {@code out} and the pick to {@code pickFile} (null: not written).
+     */
+    public static Map<String, Object> run(Setup s, Path out, Path pickFile) throws IOException, MeshFormatException {
         Files.createDirectories(out);
-        double seconds = Math.min(o.seconds(), cycle.inspirationS());
-        Map<String, double[]> box = DiaphragmSetup.boxes(boxes);
         List<Run> parametric = new ArrayList<>();
         for (int rings : RINGS) {
             TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
-            parametric.add(simulate("double dome", rings + " rings", TwoSurfaces.split(m), box, p, cycle, controls,
-                    seconds, log));
+            parametric.add(simulate("double dome", rings + " rings", TwoSurfaces.split(m), s));
         }
-        List<Run> imported = new ArrayList<>();
+        List<List<Run>> families = new ArrayList<>(List.of(parametric));
         if (Files.isRegularFile(BODYPARTS_MESH)) {
             TriangleMesh full = MeshLoader.load(BODYPARTS_MESH, MeshUnits.MM).mesh();
-            TwoSurfaces split = TwoSurfaces.split(full);
-            int[] groups = new int[full.vertexCount()];
-            for (int v = 0; v < groups.length; v++) {
-                groups[v] = split.isUpper(v) ? 1 : 0;
+            // the mesh with the rib boxes of the same anatomy when they are there
+            Setup bp = Files.isRegularFile(DiaphragmSetup.BODYPARTS3D_BOXES) ? s.withBoxes(
+                    DiaphragmSetup.boxes(DiaphragmSetup.BODYPARTS3D_BOXES)) : s;
+            families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, bp));
+        }
+        Map<String, Object> summary = report(families, s, out);
+        List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric);
+        int i = ResolutionAnalysis.pick(rows, s.tolerance());
+        int rings = RINGS[i];
+        String reason = i == rows.size() - 1
+                ? String.format(Locale.ROOT, "no coarser double dome is within %.0f %% of the %d-ring model (%d rings:"
+                        + " %.1f %%): the reference resolution", 100 * s.tolerance(), RINGS[RINGS.length - 1],
+                        RINGS[i - 1], 100 * (double) rows.get(i - 1).get("relative_rms_error"))
+                : String.format(Locale.ROOT, "the coarsest double dome within %.0f %% of the %d-ring model, with every"
+                        + " finer one: %.1f %% at %.2f wall s per simulated s against %.2f for the reference",
+                        100 * s.tolerance(), RINGS[RINGS.length - 1],
+                        100 * (double) rows.get(i).get("relative_rms_error"),
+                        (double) rows.get(i).get("wall_s_per_simulated_s"),
+                        (double) rows.get(rows.size() - 1).get("wall_s_per_simulated_s"));
+        ResolutionPick pick = new ResolutionPick(rings, (double) rows.get(i).get("relative_rms_error"),
+                s.tolerance(), reason);
+        Map<String, Object> details = new LinkedHashMap<>();
+        details.put("nodes", rows.get(i).get("nodes"));
+        details.put("wall_s_per_simulated_s", rows.get(i).get("wall_s_per_simulated_s"));
+        details.put("measured_utc", Instant.now().toString());
+        details.put("command", "./tensim diaphragm --resolution-study");
+        pick.write(out.resolve("resolution-pick.json"), details);
+        if (pickFile != null) {
+            pick.write(pickFile, details);
+        }
+        summary.put("picked_rings", rings);
+        summary.put("pick_reason", reason);
+        if (s.log() != null) {
+            s.log().println("picked " + rings + " rings: " + reason);
+        }
+        return summary;
+    }
+
+    /**
+     * The study on a given mesh: decimated at {@code cellsMm} (empty: 4, 2.8 and 2 times its mean
+     * edge length), as given, and refined {@code refineLevels} times by midpoint subdivision.
+     */
+    public static Map<String, Object> runMesh(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning,
+            double offsetThicknessM, double[] cellsMm, int refineLevels, Setup s, Path out)
+            throws IOException, MeshFormatException {
+        Files.createDirectories(out);
+        TriangleMesh given = MeshLoader.load(meshFile, units, cleaning).mesh();
+        TwoSurfaces surfaces = DiaphragmSetup.surfaces(given, offsetThicknessM).surfaces();
+        String name = meshFile.getFileName().toString();
+        double[] cells = cellsMm;
+        if (cells == null || cells.length == 0) {
+            double h = meanEdge(given) * 1e3;
+            cells = Arrays.stream(CELL_FACTORS).map(f -> Math.round(f * h * 10) / 10.0).toArray();
+        }
+        List<Run> family = decimated(name, surfaces, cells, s);
+        family.add(simulate(name, "as given", surfaces, s));
+        if (refineLevels > 0) {
+            for (int level = 1; level <= refineLevels; level++) {
+                TriangleMesh fine = MidpointSubdivision.refine(given, level);
+                family.add(simulate(name, "refined x" + (1 << level), DiaphragmSetup.surfaces(fine,
+                        offsetThicknessM).surfaces(), s));
             }
-            for (double cell : CELLS_MM) {
-                TwoSurfaces s = split;
-                if (cell > 0) {
-                    VertexClustering.Result r = VertexClustering.simplify(full, groups, cell * 1e-3);
-                    boolean[] up = new boolean[r.groups().length];
-                    for (int v = 0; v < up.length; v++) {
-                        up[v] = r.groups()[v] == 1;
-                    }
-                    s = TwoSurfaces.of(r.mesh(), up);
-                }
-                imported.add(simulate("BodyParts3D", cell > 0 ? "cells " + cell + " mm" : "full", s, box, p, cycle,
-                        controls, seconds, log));
+        }
+        return report(List.of(family), s, out);
+    }
+
+    private static List<Run> decimated(String name, TwoSurfaces split, double[] cellsMm, Setup s) {
+        TriangleMesh full = split.mesh();
+        int[] groups = new int[full.vertexCount()];
+        for (int v = 0; v < groups.length; v++) {
+            groups[v] = split.isUpper(v) ? 1 : 0;
+        }
+        double[] sorted = cellsMm.clone();
+        Arrays.sort(sorted);
+        List<Run> runs = new ArrayList<>();
+        for (int i = sorted.length - 1; i >= 0; i--) { // coarse first
+            VertexClustering.Result r = VertexClustering.simplify(full, groups, sorted[i] * 1e-3);
+            boolean[] up = new boolean[r.groups().length];
+            for (int v = 0; v < up.length; v++) {
+                up[v] = r.groups()[v] == 1;
+            }
+            runs.add(simulate(name, "cells " + sorted[i] + " mm", TwoSurfaces.of(r.mesh(), up), s));
+        }
+        return runs;
+    }
+
+    private static Map<String, Object> report(List<List<Run>> families, Setup s, Path out) throws IOException {
+        List<Map<String, Object>> rows = new ArrayList<>();
+        List<Map<String, Object>> fams = new ArrayList<>();
+        for (List<Run> family : families) {
+            List<Map<String, Object>> r = ResolutionAnalysis.rows(family);
+            rows.addAll(r);
+            Map<String, Object> f = new LinkedHashMap<>();
+            f.put("family", family.get(0).family());
+            f.put("reference", family.get(family.size() - 1).label());
+            double order = ResolutionAnalysis.order(r);
+            f.put("order", Double.isNaN(order) ? null : DiaphragmReport.round(order, 3));
+            f.put("errors_fall_monotonically", ResolutionAnalysis.monotone(r));
+            int pick = ResolutionAnalysis.pick(r, s.tolerance());
+            f.put("coarsest_within_tolerance", pick == r.size() - 1 ? null : r.get(pick).get("model"));
+            fams.add(f);
+            if (s.log() != null) {
+                s.log().println(String.format(Locale.ROOT, "%s: order %.2f, errors fall monotonically: %s",
+                        f.get("family"), order, f.get("errors_fall_monotonically")));
             }
         }
         Map<String, Object> summary = new LinkedHashMap<>();
-        List<Map<String, Object>> rows = new ArrayList<>();
-        try (CsvWriter csv = new CsvWriter(out.resolve("resolution.csv"), List.of("family", "nodes", "springs",
-                "dt_s", "wall_s_per_simulated_s", "relative_rms_error"), 1)) {
-            for (List<Run> fam : List.of(parametric, imported)) {
-                if (fam.isEmpty()) {
-                    continue;
-                }
-                Run ref = fam.get(fam.size() - 1);
-                for (Run r : fam) {
-                    double e = r == ref ? 0 : error(ref, r);
-                    Map<String, Object> row = new LinkedHashMap<>();
-                    row.put("family", r.family());
-                    row.put("model", r.label());
-                    row.put("nodes", r.nodes());
-                    row.put("springs", r.springs());
-                    row.put("dt_s", r.dt());
-                    row.put("wall_s_per_simulated_s", DiaphragmReport.round(r.costPerSimS(), 3));
-                    row.put("relative_rms_error", DiaphragmReport.round(e, 4));
-                    rows.add(row);
-                    csv.row(fam == parametric ? 0 : 1, r.nodes(), r.springs(), r.dt(), r.costPerSimS(), e);
-                }
-            }
-        }
-        // The reference itself (error 0) is not a candidate: when no coarser model is within the
-        // tolerance, none is chosen and the reference resolution stays the default.
-        String chosen = null;
-        for (int i = 0; i + 1 < parametric.size(); i++) {
-            Map<String, Object> row = rows.get(i);
-            if ((double) row.get("relative_rms_error") <= TOLERANCE) {
-                chosen = (String) row.get("model");
-                break;
-            }
-        }
-        summary.put("simulated_s_per_model", seconds);
-        summary.put("tolerance", TOLERANCE);
-        summary.put("coarsest_double_dome_within_tolerance", chosen);
+        summary.put("simulated_s_per_model", s.seconds());
+        summary.put("tolerance", s.tolerance());
+        summary.put("attachment", s.bc().attachment().name().toLowerCase(Locale.ROOT));
+        summary.put("muscle_load", s.bc().muscleLoad().name().toLowerCase(Locale.ROOT));
+        summary.put("families", fams);
         summary.put("models", rows);
-        chart(out.resolve("resolution.png"), rows);
+        ResolutionAnalysis.csv(out.resolve("resolution.csv"), rows);
+        ResolutionAnalysis.chart(out.resolve("resolution.png"), rows, s.tolerance());
         Json.write(out.resolve("resolution.json"), summary);
         return summary;
     }
 
-    private static Run simulate(String family, String label, TwoSurfaces s, Map<String, double[]> box,
-            DiaphragmParameters p, BreathingCycle cycle, DiaphragmControls controls, double seconds, PrintStream log) {
-        DiaphragmScene scene = DiaphragmScene.build(s, box, p, cycle, controls, null);
+    static Run simulate(String family, String label, TwoSurfaces surf, Setup s) {
+        DiaphragmScene scene = DiaphragmScene.build(surf, s.boxes(), s.p(), s.cycle(), s.controls(), null, s.bc());
         Simulation sim = scene.newSimulation();
         double dt = scene.recommendedTimeStep();
         long t0 = System.nanoTime();
-        sim.runUntil(seconds, dt);
+        sim.runUntil(s.seconds(), dt);
         double wall = (System.nanoTime() - t0) / 1e9;
         int nd = scene.diaphragmNodes();
         boolean[] upper = new boolean[nd];
         for (int v = 0; v < nd; v++) {
-            upper[v] = s.isUpper(v);
+            upper[v] = surf.isUpper(v);
         }
+        int a = scene.apexNode();
         Run r = new Run(family, label, scene.topology().nodeCount(), scene.topology().springs().size(),
-                wall / sim.time(), dt, java.util.Arrays.copyOf(sim.state().x0, 3 * nd),
-                java.util.Arrays.copyOf(sim.state().x, 3 * nd), upper);
-        if (log != null) {
-            log.println(String.format(Locale.ROOT, "%s, %s: %d nodes, %d springs, dt %.2e s, %.2f wall s per"
-                    + " simulated s", family, label, r.nodes(), r.springs(), dt, r.costPerSimS()));
+                meanEdge(surf.mesh()), wall / sim.time(), dt, sim.state().x0[3 * a + 2] - sim.state().x[3 * a + 2],
+                Arrays.copyOf(sim.state().x0, 3 * nd), Arrays.copyOf(sim.state().x, 3 * nd), upper,
+                scene.upperTriangles());
+        if (s.log() != null) {
+            s.log().println(String.format(Locale.ROOT, "%s, %s: %d nodes, %d springs, mean edge %.2f mm, dt %.2e s,"
+                    + " %.2f wall s per simulated s, apex descent %.2f mm", family, label, r.nodes(), r.springs(),
+                    r.elementSizeM() * 1e3, dt, r.costPerSimS(), r.apexDescentM() * 1e3));
         }
         return r;
     }
 
-    /** Relative RMS difference of the end displacement fields, nearest upper node of the coarse model. */
+    /** Mean length of the mesh's edges (each counted once), m. */
+    static double meanEdge(TriangleMesh m) {
+        java.util.Set<Long> seen = new java.util.HashSet<>();
+        double sum = 0;
+        for (int t = 0; t < m.triangleCount(); t++) {
+            for (int k = 0; k < 3; k++) {
+                int i = m.corner(t, k);
+                int j = m.corner(t, (k + 1) % 3);
+                if (seen.add(((long) Math.min(i, j) << 32) | Math.max(i, j))) {
+                    sum += Math.sqrt(sq(m.coord(i, 0) - m.coord(j, 0)) + sq(m.coord(i, 1) - m.coord(j, 1))
+                            + sq(m.coord(i, 2) - m.coord(j, 2)));
+                }
+            }
+        }
+        return sum / seen.size();
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+
+    /**
+     * Relative RMS difference of the end displacement fields over the fine model's upper nodes: the
+     * coarse field interpolated on its upper surface ({@link FieldTransfer}), or, for a run without
+     * triangles, taken at the nearest upper node of the coarse model.
+     */
     public static double error(Run fine, Run coarse) {
+        if (coarse.upperTriangles() != null) {
+            return FieldTransfer.relativeRms(fine.rest(), fine.end(), fine.upper(), coarse.rest(), coarse.end(),
+                    coarse.upperTriangles());
+        }
         double num = 0;
         double den = 0;
         int nf = fine.rest().length / 3;
@@ -206,31 +314,5 @@ public final class ResolutionStudy {
             }
         }
         return Math.sqrt(num / den);
-    }
-
-    private static void chart(Path png, List<Map<String, Object>> rows) throws IOException {
-        XYChart c = Charts.lineChart("Resolution study: error against the finest model vs cost",
-                "wall seconds per simulated second", "relative RMS displacement error at the end of the run", 900, 600);
-        c.getStyler().setXAxisLogarithmic(true);
-        for (String fam : List.of("double dome", "BodyParts3D")) {
-            List<Double> x = new ArrayList<>();
-            List<Double> y = new ArrayList<>();
-            for (Map<String, Object> r : rows) {
-                if (r.get("family").equals(fam) && (double) r.get("relative_rms_error") > 0) {
-                    x.add((double) r.get("wall_s_per_simulated_s"));
-                    y.add((double) r.get("relative_rms_error"));
-                }
-            }
-            if (!x.isEmpty()) {
-                XYSeries s = c.addSeries(fam, x, y);
-                s.setMarker(SeriesMarkers.CIRCLE);
-            }
-        }
-        double[] all = rows.stream().mapToDouble(r -> (double) r.get("wall_s_per_simulated_s")).toArray();
-        double lo = java.util.Arrays.stream(all).min().orElse(0.01);
-        double hi = java.util.Arrays.stream(all).max().orElse(1);
-        Charts.addLine(c, "tolerance " + TOLERANCE, new double[] {lo, hi}, new double[] {TOLERANCE, TOLERANCE});
-        c.getStyler().setMarkerSize(7);
-        Charts.savePng(c, png);
     }
 }

@@ -26,8 +26,10 @@ final class Snapshots {
     static Snapshots plan(DiaphragmScene scene, DiaphragmReport.Options o, double start) {
         double ti = scene.cycle().inspirationS();
         double vecA = start + 0.5 * ti - 0.5 * o.vectorIntervalS();
+        // By default end-inspiration and the end of the measured cycle, or the end of a shorter run.
         double[] csvTimes = o.csvTimes() != null ? o.csvTimes().clone()
-                : new double[] {start + ti, Math.min(o.seconds(), start + scene.cycle().periodS())};
+                : java.util.stream.DoubleStream.of(start + ti, Math.min(o.seconds(), start + scene.cycle().periodS()))
+                        .filter(t -> t <= o.seconds()).distinct().toArray();
         for (double t : csvTimes) {
             if (!(t >= 0 && t <= o.seconds())) {
                 throw new IllegalArgumentException("CSV time " + t + " s is outside the run [0, " + o.seconds()

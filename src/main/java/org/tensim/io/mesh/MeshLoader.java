@@ -8,10 +8,14 @@ public final class MeshLoader {
     private MeshLoader() {
     }
 
-    /** Reads and cleans {@code file}; coordinates in metres. */
+    /**
+     * Reads and cleans {@code file}; coordinates in metres. A vertex far from all the
+     * others is refused ({@link MeshExtent#refuseOutliers}), never dropped silently.
+     */
     public static MeshCleaner.Result load(Path file, MeshUnits units, MeshCleaner.Options options)
             throws IOException, MeshFormatException {
         TriangleMesh raw = MeshReaders.read(file, units);
+        MeshExtent.refuseOutliers(raw, file);
         return MeshCleaner.clean(raw, options, file.getFileName().toString());
     }
 

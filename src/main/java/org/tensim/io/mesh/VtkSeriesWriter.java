@@ -3,9 +3,7 @@ package org.tensim.io.mesh;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -40,7 +38,7 @@ public final class VtkSeriesWriter {
         this.triangles = triangles.clone();
         this.labels = labels.clone();
         this.labelName = labelName;
-        Files.createDirectories(dir);
+        org.tensim.io.OutputFiles.createFolder(dir);
     }
 
     /**
@@ -59,7 +57,9 @@ public final class VtkSeriesWriter {
         }
         String name = String.format(Locale.ROOT, "%s_%04d.vtk", base, files.size());
         Path file = dir.resolve(name);
-        try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.US_ASCII)) {
+        // Written whole then renamed: a frame is complete or absent, whenever the run stops.
+        org.tensim.io.OutputFiles.writeAtomically(file, out -> {
+            BufferedWriter w = new BufferedWriter(new java.io.OutputStreamWriter(out, StandardCharsets.US_ASCII));
             w.write("# vtk DataFile Version 3.0\n");
             w.write(String.format(Locale.ROOT, "tensim %s t=%.6f s%n", base, timeS));
             w.write("ASCII\nDATASET POLYDATA\n");
@@ -83,7 +83,8 @@ public final class VtkSeriesWriter {
             for (int i = 0; i < n; i++) {
                 w.write(labels[i] + "\n");
             }
-        }
+            w.flush();
+        });
         files.add(name);
         frames.add(new double[] {timeS});
         writeCollection();
@@ -101,20 +102,16 @@ public final class VtkSeriesWriter {
     }
 
     private void writeCollection() throws IOException {
-        Path tmp = Files.createTempFile(dir, base, ".pvd.tmp");
-        try {
-            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.US_ASCII)) {
-                w.write("<?xml version=\"1.0\"?>\n");
-                w.write("<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n");
-                for (int i = 0; i < files.size(); i++) {
-                    w.write(String.format(Locale.ROOT, "    <DataSet timestep=\"%.6f\" part=\"0\" file=\"%s\"/>%n",
-                            frames.get(i)[0], files.get(i)));
-                }
-                w.write("  </Collection>\n</VTKFile>\n");
+        org.tensim.io.OutputFiles.writeAtomically(collection(), out -> {
+            BufferedWriter w = new BufferedWriter(new java.io.OutputStreamWriter(out, StandardCharsets.US_ASCII));
+            w.write("<?xml version=\"1.0\"?>\n");
+            w.write("<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n");
+            for (int i = 0; i < files.size(); i++) {
+                w.write(String.format(Locale.ROOT, "    <DataSet timestep=\"%.6f\" part=\"0\" file=\"%s\"/>%n",
+                        frames.get(i)[0], files.get(i)));
             }
-            Files.move(tmp, collection(), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+            w.write("  </Collection>\n</VTKFile>\n");
+            w.flush();
+        });
     }
 }

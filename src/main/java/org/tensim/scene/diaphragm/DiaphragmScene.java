@@ -5,7 +5,13 @@ import java.util.List;
 import java.util.Map;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
+import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.stability.ButcherTableau;
+import org.tensim.solver.stability.ModalBounds;
+import org.tensim.solver.stability.TimeStep;
+import org.tensim.solver.stability.TimeStepPolicy;
 
 /**
  * The paper's diaphragm (section 3.2), built from two boundary surfaces: muscle as a
@@ -68,7 +74,7 @@ public final class DiaphragmScene {
     private final int attachedToCartilage;
     private final int attachedToSpine;
     private final boolean[] attached;
-    private final double omegaMax;
+    private final ModalBounds modes;
     private final double timeStep;
     private final double tendonAreaFraction;
     private final int firstAnchor;
@@ -91,8 +97,8 @@ public final class DiaphragmScene {
         this.attachedToCartilage = b.attachedCartilage;
         this.attachedToSpine = b.attachedSpine;
         this.attached = b.attached;
-        this.omegaMax = b.omegaMax;
-        this.timeStep = b.dt;
+        this.modes = b.modes;
+        this.timeStep = TimeStepPolicy.recommend(Integrators.DEFAULT, ButcherTableau.MIDPOINT, true, modes).seconds();
         this.tendonAreaFraction = b.tendonFraction;
         this.firstAnchor = b.firstAnchor;
         this.addedMass = b.addedMass;
@@ -107,7 +113,16 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls);
+        return build(surfaces, boxes, p, cycle, controls, lines, BoundaryConditions.defaults());
+    }
+
+    /**
+     * As {@link #build(TwoSurfaces, Map, DiaphragmParameters, BreathingCycle, DiaphragmControls, List)}
+     * with the attachment and muscle-load models ({@link BoundaryConditions#paper()} for the paper's).
+     */
+    public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines, BoundaryConditions bc) {
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, bc);
         b.nodes();
         b.tendon();
         b.meshSprings();
@@ -115,6 +130,7 @@ public final class DiaphragmScene {
         b.thicknessSprings();
         b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
         b.attach();
+        b.columnLinks();
         b.muscle(lines == null ? defaultActionLines(surfaces) : lines);
         b.support();
         b.damping();
@@ -195,7 +211,7 @@ public final class DiaphragmScene {
     public Simulation newSimulation() {
         Simulation sim = Simulation.of(topology);
         // Disjoint links: one sweep is exact; a tolerance still guards the general case.
-        sim.projection().setTolerance(1e-9).setMaxIterations(50);
+        sim.apply(sim.settings().withProjection(1e-9, 50));
         return sim;
     }
 
@@ -230,14 +246,15 @@ public final class DiaphragmScene {
     }
 
     /**
-     * Nodes {@code 0 .. simulatedNodes()-1} are the diaphragm and the cage; the fixed anchors of the
-     * abdominal support follow (they never move and are left out of outputs).
+     * Nodes {@code 0 .. simulatedNodes()-1} are the diaphragm and the cage; the anchors of the
+     * attachment band (fixed, or driven with a rib) and of the abdominal support (fixed) follow
+     * (they are not free and are left out of outputs).
      */
     public int simulatedNodes() {
         return firstAnchor;
     }
 
-    /** Fixed anchor nodes of the abdominal support. */
+    /** Anchor nodes of the attachment band and the abdominal support. */
     public int anchorNodes() {
         return topology.nodeCount() - firstAnchor;
     }
@@ -258,7 +275,7 @@ public final class DiaphragmScene {
         return cage;
     }
 
-    /** The dome apex probe: the highest upper-surface node at rest that is not attached. */
+    /** The dome apex probe: the highest upper-surface node at rest that is not attached (driven, fixed, in the band). */
     public int apexNode() {
         return apex;
     }
@@ -275,7 +292,7 @@ public final class DiaphragmScene {
         return actionLines;
     }
 
-    /** Diaphragm nodes attached to ribs (driven rigidly with their rib). */
+    /** Diaphragm nodes attached to ribs (driven rigidly with their rib, or tied to it by the band). */
     public int attachedToRibs() {
         return attachedToRibs;
     }
@@ -285,7 +302,7 @@ public final class DiaphragmScene {
         return attachedToCartilage;
     }
 
-    /** Diaphragm nodes fixed to the spine (crura). */
+    /** Diaphragm nodes fixed or tied to the spine (crura). */
     public int attachedToSpine() {
         return attachedToSpine;
     }
@@ -311,11 +328,26 @@ public final class DiaphragmScene {
 
     /** Gershgorin bound on the highest angular frequency of the network, rad/s. */
     public double omegaMaxBound() {
-        return omegaMax;
+        return modes.omegaMax();
     }
 
-    /** The recommended time step for RK2, s (see {@link Rk2Step}). */
+    /** The network's highest frequency (Gershgorin) and its Rayleigh damping, for the time-step policy. */
+    public ModalBounds modalBounds() {
+        return modes;
+    }
+
+    /** The recommended time step of the paper's RK2 on this scene, s ({@link TimeStepPolicy}). */
     public double recommendedTimeStep() {
         return timeStep;
+    }
+
+    /**
+     * The step to run {@code integrator} with: {@code requestedS} when > 0 (given with
+     * {@code --dt}), else the recommendation of {@link TimeStepPolicy} for it on this
+     * scene; says which.
+     */
+    public TimeStep timeStep(Integrator integrator, double requestedS) {
+        return TimeStepPolicy.choose(requestedS, "--dt", integrator.name(), integrator.stability(),
+                integrator.explicit(), modes);
     }
 }

@@ -10,11 +10,13 @@ import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.solver.stability.ModalBounds;
 
 /**
  * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
  * bending springs, rigid links, thickness springs, cage, attachment, muscle, abdominal
- * support, damping (package-private; the formulas are documented on DiaphragmScene).
+ * support, damping (package-private; the formulas are documented on DiaphragmScene, the
+ * attachment band on {@link AttachmentBand}, the muscle's load on {@link MusclePressure}).
  */
 final class DiaphragmSceneBuilder {
 
@@ -23,6 +25,7 @@ final class DiaphragmSceneBuilder {
     final DiaphragmParameters p;
     final BreathingCycle cycle;
     final DiaphragmControls controls;
+    final BoundaryConditions bc;
     final Topology t = new Topology();
     final SpringList springs = new SpringList();
     final int nv;
@@ -35,6 +38,7 @@ final class DiaphragmSceneBuilder {
     boolean[] linked;
     Set<Long> linkPairs = new HashSet<>();
     ShellNetwork network;
+    final List<int[]> pendingColumns = new ArrayList<>();
     RibCage cage;
     int apex = -1;
     ActionLines lines;
@@ -43,13 +47,18 @@ final class DiaphragmSceneBuilder {
     int attachedSpine;
     boolean[] attached;
     double omegaMax;
-    double dt;
+    ModalBounds modes;
     double tendonFraction;
-    int firstAnchor;
+    /** Offset of the tendon plane: points x with {@code normal . x >= tendonCut} are tendon, m. */
+    double tendonCut;
+    int firstAnchor = -1;
+    /** Zero-length springs to anchor nodes (abdominal support, attachment band) and their stiffness, N/m. */
     final List<int[]> supportSprings = new ArrayList<>();
     final List<Double> supportK = new ArrayList<>();
 
-    DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl) {
+    DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl,
+            BoundaryConditions bc) {
+        this.bc = bc;
         this.surfaces = s;
         this.mesh = s.mesh();
         this.p = p;
@@ -105,6 +114,7 @@ final class DiaphragmSceneBuilder {
                 }
             }
         }
+        tendonCut = cut;
         labels = new int[nv];
         double tendonArea = 0;
         double upperArea = 0;
@@ -134,26 +144,40 @@ final class DiaphragmSceneBuilder {
         network.membrane(springs);
     }
 
+    /**
+     * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
+     * material model also the muscle's, made after the attachment ({@link #columnLinks}).
+     */
     void rigidLinks() {
         linked = new boolean[nv];
-        List<int[]> cand = new ArrayList<>();
-        for (int v = 0; v < nv; v++) {
-            int q = surfaces.partner(v);
-            if (labels[v] == DiaphragmScene.TENDON && q >= 0 && labels[q] == DiaphragmScene.TENDON) {
-                cand.add(surfaces.isUpper(v) ? new int[] {v, q} : new int[] {q, v});
-            }
-        }
-        cand.sort((x, y) -> Double.compare(TwoSurfaces.distance(mesh, x[0], x[1]),
-                TwoSurfaces.distance(mesh, y[0], y[1])));
-        for (int[] c : cand) {
-            double len = TwoSurfaces.distance(mesh, c[0], c[1]);
-            if (linked[c[0]] || linked[c[1]] || len < 0.3 * thickness || len > 2.5 * thickness) {
-                continue;
-            }
+        boolean all = p.tissueModel().rigidColumns();
+        for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
             linked[c[0]] = true;
             linked[c[1]] = true;
             linkPairs.add(key(c[0], c[1]));
-            t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            if (labels[c[0]] == DiaphragmScene.TENDON && labels[c[1]] == DiaphragmScene.TENDON) {
+                t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            } else {
+                pendingColumns.add(c);
+            }
+        }
+    }
+
+    /**
+     * The muscle's rigid columns (material model), once the attachment is known: a column whose two
+     * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
+     * {@code E A / L} instead.
+     */
+    void columnLinks() {
+        for (int[] c : pendingColumns) {
+            Node a = t.node(c[0]);
+            Node b = t.node(c[1]);
+            if ((a.isDriven() || a.isFixed()) && (b.isDriven() || b.isFixed())) {
+                double len = TwoSurfaces.distance(mesh, c[0], c[1]);
+                springs.add(c[0], c[1], young(c[0], c[1]) * area[c[0]] / len);
+            } else {
+                t.addRigidLink(a, b);
+            }
         }
     }
 
@@ -161,58 +185,12 @@ final class DiaphragmSceneBuilder {
         network.thickness(springs, linkPairs, linked);
     }
 
-    /**
-     * When no node is near the spine segment (a real mesh whose crura reach lower and further
-     * forward than the segment placed from the rib boxes), the crura are taken from the mesh:
-     * they are the diaphragm's lowest insertion (on the lumbar vertebrae L1-L3), so the free
-     * nodes within the attachment threshold above the mesh's lowest point are fixed.
-     */
-    private void attachCrura() {
-        double low = Double.POSITIVE_INFINITY;
-        for (int v = 0; v < nv; v++) {
-            low = Math.min(low, mesh.coord(v, 2));
-        }
-        for (int v = 0; v < nv; v++) {
-            if (!attached[v] && mesh.coord(v, 2) <= low + p.attachThresholdM()) {
-                attached[v] = true;
-                t.node(v).fix();
-                attachedSpine++;
-            }
-        }
-    }
-
     void attach() {
         attached = new boolean[nv];
-        List<RibCage.Segment> segs = cage.segments();
-        for (int v = 0; v < nv; v++) {
-            Vec3 q = t.node(v).position();
-            RibCage.Segment best = null;
-            double bestD = Double.POSITIVE_INFINITY;
-            for (RibCage.Segment s : segs) {
-                double d = RibCage.distance(t, s, q);
-                if (d < bestD) {
-                    bestD = d;
-                    best = s;
-                }
-            }
-            if (best == null || bestD > p.attachThresholdM()) {
-                continue;
-            }
-            attached[v] = true;
-            if (best.kind() == RibCage.Kind.RIB) {
-                t.node(v).drive(best.motion());
-                attachedRibs++;
-            } else if (best.kind() == RibCage.Kind.SPINE) {
-                t.node(v).fix();
-                attachedSpine++;
-            } else {
-                springs.add(v, best.a(), p.attachStiffness());
-                springs.add(v, best.b(), p.attachStiffness());
-                attachedCartilage++;
-            }
-        }
-        if (attachedSpine == 0) {
-            attachCrura();
+        if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
+            AttachmentBand.attach(this, bc);
+        } else {
+            ThresholdAttachment.attach(this);
         }
         int[] all = new int[t.nodeCount()];
         System.arraycopy(labels, 0, all, 0, nv);
@@ -228,28 +206,40 @@ final class DiaphragmSceneBuilder {
         labels = all;
         for (int v = 0; v < nv; v++) {
             Node n = t.node(v);
-            if (surfaces.isUpper(v) && !n.isDriven() && !n.isFixed() && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
+            boolean held = n.isDriven() || n.isFixed() || (bc.attachment() == BoundaryConditions.Attachment.BAND
+                    && attached[v]);
+            if (surfaces.isUpper(v) && !held && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
                 apex = v;
             }
         }
     }
 
+    /** Nodes added from now on are anchors (fixed or driven; left out of outputs). */
+    void markFirstAnchor() {
+        if (firstAnchor < 0) {
+            firstAnchor = t.nodeCount();
+        }
+    }
+
+    /** A zero-length spring of stiffness k (N/m) from diaphragm node v to anchor node a. */
+    void tie(int v, int a, double k) {
+        supportSprings.add(new int[] {v, a});
+        supportK.add(k);
+    }
+
     void muscle(List<ActionLines.Line> l) {
         lines = new ActionLines(l, cycle, controls);
+        double[] w = MusclePressure.weights(mesh, lines, bc.muscleLoad(), p.tendonNormal(), tendonCut, labels, area);
         for (int v = 0; v < nv; v++) {
-            if (labels[v] != DiaphragmScene.MUSCLE || t.node(v).isDriven() || t.node(v).isFixed()) {
-                continue;
-            }
-            double w = lines.weight(mesh.coord(v, 0), mesh.coord(v, 1));
-            if (w > 0) {
-                t.applyForce(t.node(v), lines.lawFor(w * area[v] / 2));
+            if (w[v] > 0 && !t.node(v).isDriven() && !t.node(v).isFixed()) {
+                t.applyForce(t.node(v), lines.lawFor(w[v]));
             }
         }
     }
 
     /** Anchors (fixed nodes, added last) and zero-length springs K A_i for the free lower-surface nodes. */
     void support() {
-        firstAnchor = t.nodeCount();
+        markFirstAnchor();
         if (p.abdominalSupportPaPerM() == 0) {
             return;
         }
@@ -258,9 +248,7 @@ final class DiaphragmSceneBuilder {
             if (surfaces.isUpper(v) || n.isDriven() || n.isFixed()) {
                 continue;
             }
-            Node anchor = t.addNode(n.position(), n.mass()).fix();
-            supportSprings.add(new int[] {v, anchor.id()});
-            supportK.add(p.abdominalSupportPaPerM() * area[v] / 2);
+            tie(v, t.addNode(n.position(), n.mass()).fix().id(), p.abdominalSupportPaPerM() * area[v] / 2);
         }
     }
 
@@ -280,7 +268,7 @@ final class DiaphragmSceneBuilder {
         meanMass /= nv;
         double alpha = p.viscousPerS();
         t.setViscousDamping(alpha * meanMass);
-        dt = Rk2Step.stable(omegaMax, beta, alpha) * Rk2Step.SAFETY;
+        modes = new ModalBounds(omegaMax, beta, alpha, "Gershgorin bound");
     }
 
     private static long key(int i, int j) {

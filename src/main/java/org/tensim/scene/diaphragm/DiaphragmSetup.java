@@ -68,24 +68,38 @@ public final class DiaphragmSetup {
     public static Built load(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
             List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
             DiaphragmControls controls) throws IOException, MeshFormatException {
+        return load(meshFile, units, cleaning, offsetThicknessM, lines, boxesFile, p, cycle, controls,
+                BoundaryConditions.defaults());
+    }
+
+    /** As the overload above with the attachment and muscle-load models. */
+    public static Built load(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
+            List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls, BoundaryConditions bc) throws IOException, MeshFormatException {
         MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
-        TriangleMesh m = r.mesh();
-        TwoSurfaces s;
-        SurfaceMode mode;
+        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(r.mesh(), meshFile, units, "diaphragm",
+                PLAUSIBLE_SIZE_M[0], PLAUSIBLE_SIZE_M[1]);
+        Surfaces s = surfaces(r.mesh(), offsetThicknessM);
+        return new Built(DiaphragmScene.build(s.surfaces(), boxes(boxesFile), p, cycle, controls, lines, bc), r.report(),
+                s.mode(), meshFile + ", " + cage(boxesFile));
+    }
+
+    /** A mesh's two boundary surfaces and how they were found. */
+    public record Surfaces(TwoSurfaces surfaces, SurfaceMode mode) {
+    }
+
+    /**
+     * The two surfaces of a mesh: split when it is a thin closed shell (both sides found,
+     * thickness under 3 % of the size), else the mesh offset by {@code offsetThicknessM}.
+     */
+    public static Surfaces surfaces(TriangleMesh m, double offsetThicknessM) {
         TwoSurfaces split = TwoSurfaces.split(m);
         double[] b = m.bounds();
         double size = Math.sqrt(sq(b[3] - b[0]) + sq(b[4] - b[1]) + sq(b[5] - b[2]));
         boolean shell = split.lowerCount() > 0.3 * split.upperCount() && split.upperCount() > 0.3 * split.lowerCount()
                 && split.thicknessM() < 0.03 * size;
-        if (shell) {
-            s = split;
-            mode = SurfaceMode.SHELL;
-        } else {
-            s = TwoSurfaces.offset(m, offsetThicknessM);
-            mode = SurfaceMode.OFFSET;
-        }
-        return new Built(DiaphragmScene.build(s, boxes(boxesFile), p, cycle, controls, lines), r.report(), mode,
-                meshFile + ", " + cage(boxesFile));
+        return shell ? new Surfaces(split, SurfaceMode.SHELL)
+                : new Surfaces(TwoSurfaces.offset(m, offsetThicknessM), SurfaceMode.OFFSET);
     }
 
     /** The generated double dome at a resolution (rings per face), split into its two faces. */
@@ -97,10 +111,24 @@ public final class DiaphragmSetup {
     /** As {@link #generated(int, Path, DiaphragmParameters, BreathingCycle, DiaphragmControls)} with action lines. */
     public static Built generated(int rings, List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls) throws IOException {
-        TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
-        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines), null,
-                SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
+        return generated(rings, lines, boxesFile, p, cycle, controls, BoundaryConditions.defaults());
     }
+
+    /** As the overload above with the attachment and muscle-load models. */
+    public static Built generated(int rings, List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p,
+            BreathingCycle cycle, DiaphragmControls controls, BoundaryConditions bc) throws IOException {
+        TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
+        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines, bc),
+                null, SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
+    }
+
+    /**
+     * Plausible largest side of a diaphragm's bounding box, m: an adult's is about 0.3 m
+     * transversely (BodyParts3D: 0.27 m; the project's double dome: 0.28 m); 0.08 m admits
+     * a newborn's, 1 m any adult's with room to spare. A mesh outside this range is read in the
+     * wrong --units (a metre file read as mm measures 0.3 mm) or is not a diaphragm.
+     */
+    public static final double[] PLAUSIBLE_SIZE_M = {0.08, 1.0};
 
     /**
      * The rib and sternum boxes, metres: the project's parametric cage when {@code file} is null, else

@@ -54,6 +54,10 @@ public final class DoubleDomeGenerator {
             double thickness) {
         public Shape {
             Check.atLeast("double dome rings", rings, 2);
+            if (rings > MAX_RINGS) {
+                throw new IllegalArgumentException("double dome rings must be at most " + MAX_RINGS + " ("
+                        + faceVertices(MAX_RINGS) + " vertices a face), got " + rings);
+            }
             Check.positive("double dome transverse semi-axis", "m", semiAxisX);
             Check.positive("double dome antero-posterior semi-axis", "m", semiAxisY);
             Check.finite("double dome centre y", "m", centreY);
@@ -105,6 +109,12 @@ public final class DoubleDomeGenerator {
 
     private DoubleDomeGenerator() {
     }
+
+    /**
+     * Most rings per face: 500 give 751,501 vertices a face, 60 times the paper's model; the
+     * counts of larger ones overflow the int indices of the mesh long before memory runs out.
+     */
+    public static final int MAX_RINGS = 500;
 
     /** Vertices per face for a number of rings. */
     public static int faceVertices(int rings) {

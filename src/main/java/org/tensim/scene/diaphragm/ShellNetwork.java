@@ -131,7 +131,6 @@ public final class ShellNetwork {
             if (!s.isUpper(u)) {
                 continue;
             }
-            double across = 0;
             for (int j : neighbours.get(u)) {
                 int l = s.partner(j);
                 double a = edgeArea.get(key(u, j))[0];
@@ -143,15 +142,12 @@ public final class ShellNetwork {
                 if (d > 3 * (thickness + e)) {
                     continue; // a partner on the far side of a badly paired mesh
                 }
-                double k = sandwich.diagonal(edgeMembrane(u, j, a, e), e, d);
-                if (springs.add(u, l, k)) {
-                    across += k * Math.max(0, d * d - e * e) / (d * d);
-                }
+                springs.add(u, l, sandwich.diagonal(edgeMembrane(u, j, a, e), e, d));
             }
             int l = s.partner(u);
             if (l >= 0 && !linked[u] && !linked[l]) {
                 double len = TwoSurfaces.distance(mesh, u, l);
-                columnDone[l] |= springs.add(u, l, SandwichShell.column(young.youngPa(u, l), area[u], len, across));
+                columnDone[l] |= springs.add(u, l, young.youngPa(u, l) * area[u] / len);
             }
             columnDone[u] = true;
         }
@@ -170,7 +166,8 @@ public final class ShellNetwork {
     /**
      * A shell on its own, one material throughout: node v is vertex v, of mass
      * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs
-     * (rest length the current distance, undamped), no rigid links. For the accuracy scenes.
+     * (rest length the current distance, undamped) and, in the material model, its rigid columns.
+     * For the accuracy scenes.
      */
     public static Topology standalone(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
         TriangleMesh mesh = s.mesh();
@@ -198,8 +195,50 @@ public final class ShellNetwork {
         };
         ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);
         n.membrane(sink);
-        n.thickness(sink, Set.of(), new boolean[mesh.vertexCount()]);
+        boolean[] linked = new boolean[mesh.vertexCount()];
+        Set<Long> linkPairs = new java.util.HashSet<>();
+        if (model.rigidColumns()) {
+            for (int[] c : columnPairs(s, v -> true)) {
+                linked[c[0]] = true;
+                linked[c[1]] = true;
+                linkPairs.add(key(c[0], c[1]));
+                t.addRigidLink(t.node(c[0]), t.node(c[1]));
+            }
+        }
+        n.thickness(sink, linkPairs, linked);
         return t;
+    }
+
+    /**
+     * Struts across the thickness: each eligible node with its partner (also eligible) on the other
+     * face, shortest first, each node at most once, length 0.3 to 2.5 thicknesses (disjoint struts:
+     * "compression discontinuous", paper section 2.1). Pairs are (upper, lower).
+     */
+    public static List<int[]> columnPairs(TwoSurfaces s, java.util.function.IntPredicate eligible) {
+        TriangleMesh mesh = s.mesh();
+        int nv = mesh.vertexCount();
+        double th = s.thicknessM();
+        List<int[]> cand = new ArrayList<>();
+        for (int v = 0; v < nv; v++) {
+            int q = s.partner(v);
+            if (eligible.test(v) && q >= 0 && eligible.test(q)) {
+                cand.add(s.isUpper(v) ? new int[] {v, q} : new int[] {q, v});
+            }
+        }
+        cand.sort((x, y) -> Double.compare(TwoSurfaces.distance(mesh, x[0], x[1]),
+                TwoSurfaces.distance(mesh, y[0], y[1])));
+        boolean[] used = new boolean[nv];
+        List<int[]> out = new ArrayList<>();
+        for (int[] c : cand) {
+            double len = TwoSurfaces.distance(mesh, c[0], c[1]);
+            if (used[c[0]] || used[c[1]] || len < 0.3 * th || len > 2.5 * th) {
+                continue;
+            }
+            used[c[0]] = true;
+            used[c[1]] = true;
+            out.add(c);
+        }
+        return out;
     }
 
     /** Key of an unordered node pair. */

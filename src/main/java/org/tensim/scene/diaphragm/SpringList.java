@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import org.tensim.model.Topology;
+import org.tensim.solver.stability.CriticalTimeStep;
 
 /**
  * Springs collected before they are added to the topology (package-private): the
@@ -50,27 +51,28 @@ final class SpringList implements ShellNetwork.Sink {
     }
 
     /**
-     * Gershgorin bound on the highest angular frequency, rad/s:
-     * {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} over the free nodes (PHYSICS.md).
+     * Gershgorin bound on the highest angular frequency of these springs and the
+     * extra ones, rad/s: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} over the free
+     * nodes ({@link CriticalTimeStep#gershgorin}, rows form; PHYSICS.md).
      */
     double omegaMaxBound(Topology t, java.util.List<int[]> extraPairs, java.util.List<Double> extraK) {
-        double[] sum = new double[t.nodeCount()];
-        for (int s = 0; s < n; s++) {
-            sum[a[s]] += k[s];
-            sum[b[s]] += k[s];
-        }
+        int total = n + extraPairs.size();
+        int[] sa = Arrays.copyOf(a, total);
+        int[] sb = Arrays.copyOf(b, total);
+        double[] sk = Arrays.copyOf(k, total);
         for (int s = 0; s < extraPairs.size(); s++) {
-            sum[extraPairs.get(s)[0]] += extraK.get(s);
-            sum[extraPairs.get(s)[1]] += extraK.get(s);
+            sa[n + s] = extraPairs.get(s)[0];
+            sb[n + s] = extraPairs.get(s)[1];
+            sk[n + s] = extraK.get(s);
         }
-        double w2 = 0;
-        for (int i = 0; i < sum.length; i++) {
+        double[] mass = new double[t.nodeCount()];
+        boolean[] free = new boolean[t.nodeCount()];
+        for (int i = 0; i < mass.length; i++) {
             var node = t.node(i);
-            if (!node.isFixed() && !node.isDriven()) {
-                w2 = Math.max(w2, 2 * sum[i] / node.mass());
-            }
+            mass[i] = node.mass();
+            free[i] = !node.isFixed() && !node.isDriven();
         }
-        return Math.sqrt(w2);
+        return CriticalTimeStep.gershgorin(mass.length, sa, sb, sk, total, mass, free, CriticalTimeStep.Form.ROWS);
     }
 
     /** Adds every spring to t, rest length = current distance, axial damping beta * k (N s/m). */

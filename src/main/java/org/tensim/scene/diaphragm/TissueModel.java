@@ -15,9 +15,17 @@ public enum TissueModel {
     /**
      * Springs identified element by element from E, nu and t ({@link org.tensim.scene.shell.SandwichShell}):
      * faces sized for Kirchhoff's bending rigidity, the rest of the membrane on the prisms'
-     * diagonals, columns across the thickness; no folding springs.
+     * diagonals; no folding springs. Every node's column across the thickness is a rigid link
+     * (Kirchhoff-Love: the normal keeps its length), so that the diagonals' pull across the
+     * thickness cannot thin the shell and take their membrane stiffness away where elements are
+     * as short as the shell is thick; the tendon differs from the muscle by its modulus.
      */
     MATERIAL;
+
+    /** Whether every column across the thickness is a rigid link (else only the tendon's). */
+    public boolean rigidColumns() {
+        return this == MATERIAL;
+    }
 
     /** The model of that name (case-insensitive), with the known names in the error. */
     public static TissueModel parse(String name) {

@@ -12,6 +12,7 @@ import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.model.Topology;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.RibCage;
 import org.tensim.solver.Simulation;
@@ -34,8 +35,9 @@ import org.tensim.solver.SystemState;
  * rebuilt scene's spring and damping constants
  * ({@link DiaphragmScene#copyConstantsTo}), keeping its positions, velocities and time.
  * The recommended time step becomes the rebuilt scene's. A rebuild takes about 0.4 s at
- * the GUI's default resolution (20 rings, measured at a load average of 25), during which
- * the simulation waits.
+ * the GUI's default resolution (20 rings, measured at a load average of 25): through
+ * {@link #prepare} it is made on a background thread while the simulation keeps
+ * stepping, and only the copy of the constants waits for a gap between two steps.
  *
  * <p>Tendon model: with rigid links (tensegrity, the paper's), or with every link
  * replaced by a spring ({@link RigidLinksAsSprings}) to compare.
@@ -50,12 +52,11 @@ public final class DiaphragmViewScene implements ViewScene {
 
     /** Inspiration:expiration of quiet breathing, 1:2 (PHYSICS.md). */
     static final double EXPIRATION_RATIO = 2;
-    /** Rings per face of the generated double dome used by default: about 2,500 nodes, interactive. */
-    public static final int DEFAULT_RINGS = 20;
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
-    static final List<TunableParameter> PARAMETERS = List.of(
+    /** The tunable parameters (the sweep and calibration read their names and ranges here). */
+    public static final List<TunableParameter> PARAMETERS = List.of(
             TunableParameter.linear(RIB_AMPLITUDE, "Rib motion amplitude", "x quiet", 0,
                     DiaphragmControls.MAX_RIB_AMPLITUDE, 1,
                     "Rib rotation about each rib's helical axis, times quiet breathing (0: ribs still)."),
@@ -78,9 +79,12 @@ public final class DiaphragmViewScene implements ViewScene {
     private final List<Body> bodies;
     /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
     private DiaphragmScene scene;
+    /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
+    private volatile DiaphragmScene prepared;
 
     private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity) {
         this.scene = scene;
+        this.prepared = scene;
         this.tensegrity = tensegrity;
         if (tensegrity) {
             sim = scene.newSimulation();
@@ -221,13 +225,28 @@ public final class DiaphragmViewScene implements ViewScene {
 
     @Override
     public void apply(String key, double value) {
-        DiaphragmControls c = scene.controls();
+        prepare(key, value).run();
+    }
+
+    /** Rebuilds for a tissue constant here; the controls and the hand-over are left for the simulation thread. */
+    @Override
+    public Runnable prepare(String key, double value) {
         switch (key) {
-            case RIB_AMPLITUDE -> c.setRibAmplitude(value);
-            case MUSCLE_ACTION -> c.setMuscleAmplitudePa(value);
-            case TISSUE_STIFFNESS -> retune(scene.parameters().withTissueYoung(value));
-            case TISSUE_DAMPING -> retune(scene.parameters().withDamping(value, scene.parameters().viscousPerS()));
-            case SURROUNDING_DAMPING -> retune(scene.parameters().withViscous(value));
+            case RIB_AMPLITUDE -> {
+                return () -> scene.controls().setRibAmplitude(value);
+            }
+            case MUSCLE_ACTION -> {
+                return () -> scene.controls().setMuscleAmplitudePa(value);
+            }
+            case TISSUE_STIFFNESS -> {
+                return retune(prepared.parameters().withTissueYoung(value));
+            }
+            case TISSUE_DAMPING -> {
+                return retune(prepared.parameters().withDamping(value, prepared.parameters().viscousPerS()));
+            }
+            case SURROUNDING_DAMPING -> {
+                return retune(prepared.parameters().withViscous(value));
+            }
             case BREATHING_PERIOD -> throw new IllegalStateException(BREATHING_PERIOD
                     + " is fixed when the scene is built: make a new scene with it");
             default -> throw new IllegalArgumentException("diaphragm scene has no parameter '" + key + "'; known: "
@@ -236,16 +255,20 @@ public final class DiaphragmViewScene implements ViewScene {
     }
 
     /**
-     * Rebuilds the scene with new constants and hands them to the running simulation; nothing when they
-     * are the scene's already (a new scene is given every setting, mostly unchanged).
+     * Rebuilds the scene with new constants and returns their hand-over to the running simulation;
+     * nothing when they are the scene's already (a new scene is given every setting, mostly unchanged).
      */
-    private void retune(DiaphragmParameters p) {
-        if (p.equals(scene.parameters())) {
-            return;
+    private Runnable retune(DiaphragmParameters p) {
+        DiaphragmScene from = prepared;
+        if (p.equals(from.parameters())) {
+            return () -> { };
         }
-        DiaphragmScene rebuilt = scene.rebuiltWith(p);
-        DiaphragmScene.copyConstantsTo(sim.state(),
-                tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology()));
-        scene = rebuilt;
+        DiaphragmScene rebuilt = from.rebuiltWith(p);
+        Topology constants = tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology());
+        prepared = rebuilt;
+        return () -> {
+            DiaphragmScene.copyConstantsTo(sim.state(), constants);
+            scene = rebuilt;
+        };
     }
 }

@@ -34,6 +34,22 @@ public interface ViewScene {
      */
     void apply(String key, double value);
 
+    /**
+     * Splits {@link #apply} in two for a change made while the scene runs: this call does
+     * the costly part (e.g. rebuilding a scene with new constants) on a background
+     * thread, while the simulation keeps stepping, and returns what is left to do on
+     * the simulation thread between two steps (handing the new constants over). Calls
+     * of prepare come from one thread at a time, in the order of the changes, and each
+     * builds on the previous ones even before they are handed over. The default
+     * prepares nothing: all of {@link #apply} is left for the simulation thread.
+     *
+     * @return the rest of the change, to run on the simulation thread
+     * @throws IllegalArgumentException for an unknown key
+     */
+    default Runnable prepare(String key, double value) {
+        return () -> apply(key, value);
+    }
+
     /** The time step the scene is meant to run at, s. */
     double defaultTimeStep();
 

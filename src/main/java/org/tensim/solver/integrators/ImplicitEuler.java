@@ -3,7 +3,9 @@ package org.tensim.solver.integrators;
 import org.tensim.model.Check;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
+import org.tensim.solver.SolverSettings;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.stability.LinearStability;
 
 /**
  * Backward (implicit) Euler, linearised once per step (Baraff and Witkin 1998):
@@ -34,10 +36,22 @@ import org.tensim.solver.SystemState;
  * (numerical damping that grows with w h).
  */
 public final class ImplicitEuler implements Integrator {
-    /** Default CG stopping tolerance: residual norm at most 1e-12 of the right-hand side's. */
-    public static final double DEFAULT_TOLERANCE = 1e-12;
-    /** Default cap on CG iterations per step. */
-    public static final int DEFAULT_MAX_ITERATIONS = 500;
+    /** Default CG stopping tolerance: residual norm at most 1e-12 of the right-hand side's ({@link SolverSettings}). */
+    public static final double DEFAULT_TOLERANCE = SolverSettings.DEFAULTS.cgTolerance();
+    /** Default cap on CG iterations per step: 500 ({@link SolverSettings}). */
+    public static final int DEFAULT_MAX_ITERATIONS = SolverSettings.DEFAULTS.cgMaxIterations();
+
+    private static final LinearStability STABILITY = LinearStability.declared(Double.POSITIVE_INFINITY,
+            (h, zeta, x, v) -> {
+                double v1 = (v - h * x) / (1 + h * (2 * zeta) + h * h);
+                return new double[] {x + h * v1, v1};
+            });
+
+    /** (1 + h c + h^2) v1 = v - h x, x1 = x + h v1 on x'' = -x - c x': |R| &lt; 1 at every step. */
+    @Override
+    public LinearStability stability() {
+        return STABILITY;
+    }
 
     private double tolerance = DEFAULT_TOLERANCE;
     private int maxIterations = DEFAULT_MAX_ITERATIONS;
@@ -86,9 +100,10 @@ public final class ImplicitEuler implements Integrator {
         return false;
     }
 
+    /** The CG tolerance and iteration cap of the settings. */
     @Override
-    public double undampedStabilityLimit() {
-        return Double.POSITIVE_INFINITY;
+    public void configure(SolverSettings settings) {
+        setTolerance(settings.cgTolerance()).setMaxIterations(settings.cgMaxIterations());
     }
 
     /** Relative residual at which CG stops (dimensionless, > 0). */
@@ -106,6 +121,11 @@ public final class ImplicitEuler implements Integrator {
     public ImplicitEuler setMaxIterations(int n) {
         maxIterations = Check.atLeast("implicit Euler CG iteration cap", n, 1);
         return this;
+    }
+
+    /** Cap on CG iterations per step. */
+    public int maxIterations() {
+        return maxIterations;
     }
 
     /** CG iterations of the last step. */

@@ -10,11 +10,17 @@ import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
- * The integrators by name, for command lines, reports and scene files. Each call
- * of {@link #create(String)} makes a new instance (integrators keep scratch
- * arrays sized for one state). Adding an integrator is one line here and one class.
+ * The integrators by name: the single source of their names and order (command
+ * lines, their help, reports, the GUI's menu), of their stability description
+ * ({@link Integrator#stability()}) and of the tests' parameter lists (tests enumerate
+ * {@link #names()}, so a new method is tested at once). Each call of
+ * {@link #create(String)} makes a new instance (integrators keep scratch arrays sized
+ * for one state). Adding an integrator is one line here and one class.
  */
 public final class Integrators {
+    /** The paper's integrator, the default of every command. */
+    public static final String DEFAULT = "rk2";
+
     private static final Map<String, Supplier<Integrator>> BY_NAME = new LinkedHashMap<>();
 
     static {
@@ -48,6 +54,30 @@ public final class Integrators {
                     + String.join(", ", BY_NAME.keySet()));
         }
         return s.get();
+    }
+
+    /**
+     * The names for a help text, the default marked:
+     * {@code "euler, symplectic-euler, rk2 (the paper's), ..."}.
+     */
+    public static String helpList() {
+        StringBuilder b = new StringBuilder();
+        for (String n : BY_NAME.keySet()) {
+            b.append(b.length() == 0 ? "" : ", ").append(n).append(n.equals(DEFAULT) ? " (the paper's)" : "");
+        }
+        return b.toString();
+    }
+
+    /**
+     * The names as an {@link Iterable} with a public no-argument constructor, for
+     * command-line libraries that fill help texts from such a class (picocli's
+     * {@code completionCandidates}).
+     */
+    public static final class Names implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return names().iterator();
+        }
     }
 
     /** Name to supplier, read-only. */

@@ -2,7 +2,9 @@ package org.tensim.solver.integrators;
 
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
+import org.tensim.solver.NodeLoops;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.stability.LinearStability;
 
 /**
  * Symplectic (semi-implicit) Euler: the velocity first, then the position with
@@ -19,8 +21,22 @@ import org.tensim.solver.SystemState;
  * frequency rules: h &lt; 2 / w_max.
  */
 public final class SymplecticEuler implements Integrator {
-    private double[] f;
+    /** The step on x'' = -x - 2 zeta x', and the undamped limit w h = 2 (trace 2 - (w h)^2). */
+    private static final LinearStability STABILITY = LinearStability.declared(2, (h, zeta, x, v) -> {
+        double v1 = v + h * (-x - 2 * zeta * v);
+        return new double[] {x + h * v1, v1};
+    });
+
+    @Override
+    public LinearStability stability() {
+        return STABILITY;
+    }
+
+    private final NodeLoops.Body update = this::updateRange;
     private final double[] scratch = new double[6];
+    private double[] f;
+    private SystemState s;
+    private double h;
 
     @Override
     public String name() {
@@ -38,22 +54,35 @@ public final class SymplecticEuler implements Integrator {
     }
 
     @Override
-    public void step(ForceModel model, double t, double h) {
-        SystemState s = model.state();
-        if (f == null || f.length != 3 * s.nodeCount) {
-            f = new double[3 * s.nodeCount];
+    public void step(ForceModel model, double t, double dt) {
+        SystemState st = model.state();
+        if (f == null || f.length != 3 * st.nodeCount) {
+            f = new double[3 * st.nodeCount];
         }
+        s = st;
+        h = dt;
+        model.computeForces(t, st.x, st.v, f);
+        model.nodeLoops().run(st.nodeCount, update);
+        st.applyMotions(t + dt, st.x, st.v, scratch);
+        s = null;
+    }
+
+    /** v += h w f, then x += h v (the new velocity), for the free nodes of [lo, hi). */
+    private void updateRange(int lo, int hi) {
         final double[] x = s.x;
         final double[] v = s.v;
         final double[] im = s.invMass;
-        model.computeForces(t, x, v, f);
-        for (int i = 0; i < s.nodeCount; i++) {
+        final double[] fo = f;
+        final double dt = h;
+        for (int i = lo; i < hi; i++) {
             final double w = im[i];
+            if (w == 0) {
+                continue; // fixed and driven nodes: also no 0 * inf from an infinite force
+            }
             for (int k = 3 * i; k < 3 * i + 3; k++) {
-                v[k] += h * w * f[k];
-                x[k] += h * v[k]; // the new velocity: this is what makes it symplectic
+                v[k] += dt * w * fo[k];
+                x[k] += dt * v[k]; // the new velocity: this is what makes it symplectic
             }
         }
-        s.applyMotions(t + h, x, v, scratch);
     }
 }

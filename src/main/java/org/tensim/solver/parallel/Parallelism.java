@@ -1,20 +1,15 @@
 package org.tensim.solver.parallel;
 
-import org.tensim.solver.Integrator;
-import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
-import org.tensim.solver.integrators.SymplecticEuler;
 
 /**
- * Puts a {@link Simulation} on several threads: its force model gets a
- * {@link ParallelSpringPass} and, when there are rigid links, its projection gets
- * {@link ParallelLinkSweeps}, both on one {@link WorkerPool}; the paper's
- * {@link MidpointRK2} is swapped for {@link ParallelMidpointRK2} and
- * {@link SymplecticEuler} for {@link ParallelSymplecticEuler} (same arithmetic, node
- * loops split). Other integrators keep their own node loops, single-threaded; their
- * force passes are parallel all the same.
- * Close it to stop the threads and restore the single-threaded loops and integrator.
+ * Puts a {@link Simulation} on several threads, the same way for every integrator:
+ * on one {@link WorkerPool}, its force model gets a {@link ParallelSpringPass} and
+ * {@link PooledNodeLoops} (which split the integrator's node loops, see
+ * {@link org.tensim.solver.NodeLoops}), and, when there are rigid links, its
+ * projection gets {@link ParallelLinkSweeps}. The integrator itself is not replaced.
+ * Close it to stop the threads and restore the single-threaded loops.
  *
  * <pre>
  *   try (Parallelism p = Parallelism.install(sim, 2)) {
@@ -22,16 +17,16 @@ import org.tensim.solver.integrators.SymplecticEuler;
  *   }
  * </pre>
  *
- * Results do not depend on the thread count (bit for bit); see the two classes for
- * how they may differ from the built-in loops (summation and sweep order).
+ * Results do not depend on the thread count (bit for bit); see the spring pass and
+ * the link sweeps for how they may differ from the built-in loops (summation and
+ * sweep order). Node loops give the built-in loops' bits.
  */
 public final class Parallelism implements AutoCloseable {
     private final Simulation sim;
     private final WorkerPool pool;
     private final ParallelSpringPass springs;
     private final ParallelLinkSweeps links;
-    private final Integrator replaced;
-    private final Integrator installed;
+    private final PooledNodeLoops nodeLoops;
 
     private Parallelism(Simulation sim, int threads, ParallelSpringPass.Order order, int minWork) {
         this.sim = sim;
@@ -42,21 +37,15 @@ public final class Parallelism implements AutoCloseable {
                 defaults ? ParallelSpringPass.MIN_PARALLEL_SPRINGS : minWork);
         this.links = s.linkCount() == 0 ? null
                 : new ParallelLinkSweeps(s, pool, defaults ? ParallelLinkSweeps.MIN_PARALLEL_LINKS : minWork);
+        this.nodeLoops = new PooledNodeLoops(pool, defaults ? PooledNodeLoops.MIN_PARALLEL_NODES : minWork);
         sim.forces().setSpringPass(springs);
+        sim.forces().setNodeLoops(nodeLoops);
         sim.projection().setSweeps(links);
-        int minNodes = defaults ? ParallelMidpointRK2.MIN_PARALLEL_NODES : minWork;
-        if (sim.integrator() instanceof MidpointRK2) {
-            replaced = sim.integrator();
-            installed = new ParallelMidpointRK2(pool, minNodes);
-            sim.setIntegrator(installed);
-        } else if (sim.integrator() instanceof SymplecticEuler) {
-            replaced = sim.integrator();
-            installed = new ParallelSymplecticEuler(pool, minNodes);
-            sim.setIntegrator(installed);
-        } else {
-            replaced = null;
-            installed = null;
-        }
+    }
+
+    /** Installs with the thread count of the simulation's settings ({@code SolverSettings.threads}). */
+    public static Parallelism install(Simulation sim) {
+        return install(sim, sim.settings().threads());
     }
 
     /** Installs with the automatic node order ({@link ParallelSpringPass.Order#AUTO}). */
@@ -92,9 +81,24 @@ public final class Parallelism implements AutoCloseable {
         return new Parallelism(sim, threads, order, minParallelWork);
     }
 
+    /**
+     * Springs from which {@link #automaticThreads(int)} uses every core: the real-time study
+     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
+     * up, and a third slower at 12,144 (14 rings) and below.
+     */
+    public static final int AUTO_PARALLEL_SPRINGS = 20_000;
+
     /** Number of cores the JVM sees: the default thread count. */
     public static int availableCores() {
         return Runtime.getRuntime().availableProcessors();
+    }
+
+    /**
+     * The automatic thread count of a scene with {@code springs} springs: every core from
+     * {@link #AUTO_PARALLEL_SPRINGS}, else 1 (below it a dispatch costs more than it saves).
+     */
+    public static int automaticThreads(int springs) {
+        return springs >= AUTO_PARALLEL_SPRINGS ? availableCores() : 1;
     }
 
     public int threads() {
@@ -107,6 +111,11 @@ public final class Parallelism implements AutoCloseable {
 
     public ParallelSpringPass springPass() {
         return springs;
+    }
+
+    /** The node loops installed on the force model. */
+    public PooledNodeLoops nodeLoops() {
+        return nodeLoops;
     }
 
     /** The link sweeps, or null when the state has no rigid links. */
@@ -123,8 +132,8 @@ public final class Parallelism implements AutoCloseable {
         if (links != null && sim.projection().sweeps() == links) {
             sim.projection().setSweeps(null);
         }
-        if (installed != null && sim.integrator() == installed) {
-            sim.setIntegrator(replaced);
+        if (sim.forces().nodeLoops() == nodeLoops) {
+            sim.forces().setNodeLoops(null);
         }
         pool.close();
     }

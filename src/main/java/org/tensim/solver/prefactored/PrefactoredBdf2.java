@@ -39,7 +39,7 @@ import org.tensim.solver.SystemState;
  * Allocation-free after the first step (and after a parameter change, whose background
  * factorisation allocates off the stepping thread).
  */
-public final class PrefactoredBdf2 implements Integrator {
+public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.ErrorEstimating {
     /** Name in {@link org.tensim.solver.integrators.Integrators}. */
     public static final String NAME = "bdf2";
     /** Default Newton iterations per step. */
@@ -137,6 +137,7 @@ public final class PrefactoredBdf2 implements Integrator {
      * that against RK2). NaN until two steps of the same size were made. Safe to read from
      * another thread.
      */
+    @Override
     public double errorEstimate() {
         return errorEstimate;
     }

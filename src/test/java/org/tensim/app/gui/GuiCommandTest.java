@@ -16,6 +16,8 @@ import org.tensim.app.Main;
 import picocli.CommandLine;
 
 class GuiCommandTest {
+    private static final int USAGE = org.tensim.io.RunStatus.USAGE_EXIT;
+
     @TempDir
     Path dir;
 
@@ -28,17 +30,82 @@ class GuiCommandTest {
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
         StringWriter err = new StringWriter();
-        assertEquals(1, run(err, "gui", "--scene", "teapot"));
+        // An option value out of its range is a usage error (docs/outputs.md: exit code 2).
+        assertEquals(2, run(err, "gui", "--scene", "teapot"));
         assertTrue(err.toString().contains("'teapot'") && err.toString().contains("cube"), err.toString());
         StringWriter err2 = new StringWriter();
-        assertEquals(1, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
+        assertEquals(2, run(err2, "gui", "--scene", "cube", "--mesh", "organ.obj"));
         assertTrue(err2.toString().contains("organ.obj"), err2.toString());
         StringWriter err3 = new StringWriter();
         assertEquals(1, run(err3, "gui", "--scene", "diaphragm", "--mesh", dir.resolve("none.obj").toString()));
         assertTrue(err3.toString().contains("none.obj") && err3.toString().contains("no such file"), err3.toString());
         StringWriter err4 = new StringWriter();
-        assertEquals(1, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
+        assertEquals(2, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
+    }
+
+    @Test
+    void theDiaphragmOpensAtThePickedResolutionWithTheLargeStepSolver() {
+        GuiCommand c = new GuiCommand();
+        new CommandLine(c).parseArgs();
+        assertEquals(org.tensim.experiment.diaphragm.ResolutionPick.read().rings(), c.rings,
+                "the resolution study's pick (the paper's 43 rings when none is committed)");
+        assertEquals("diaphragm", c.scene);
+        assertTrue(GuiScenes.opensInRealTime("diaphragm") && !GuiScenes.opensInRealTime("cube"));
+    }
+
+    @Test
+    void badRunForOrThreadsIsRefusedWithTheValueNamed() {
+        for (String bad : new String[] {"0", "-2", "NaN"}) {
+            StringWriter err = new StringWriter();
+            assertEquals(USAGE, run(err, "gui", "--scene", "cube", "--run-for", bad));
+            assertTrue(err.toString().contains("--run-for") && err.toString().contains(bad), err.toString());
+        }
+        StringWriter err = new StringWriter();
+        assertEquals(USAGE, run(err, "gui", "--scene", "cube", "--threads", "-1"));
+        assertTrue(err.toString().contains("--threads") && err.toString().contains("-1"), err.toString());
+    }
+
+    @Test
+    @Tag("gui")
+    void runForClosesTheWindowAndPrintsWhatItMeasuredAsTheLastLine() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8));
+        try {
+            code = run(err, "gui", "--scene", "cube", "--config-dir", dir.toString(), "--fresh", "--run-for", "1.5",
+                    "--unpaced");
+        } finally {
+            System.setOut(saved);
+        }
+        assertEquals(0, code, err.toString());
+        String[] lines = out.toString(java.nio.charset.StandardCharsets.UTF_8).trim().split("\\R");
+        java.util.Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<java.util.Map<String, Object>>() { });
+        assertEquals("cube", m.get("scene"));
+        assertEquals(40, ((Number) m.get("nodes")).intValue(), "the two cubes' 2 x 20 nodes");
+        assertEquals("rk2", m.get("integrator"));
+        assertEquals(false, m.get("paced"));
+        double wall = ((Number) m.get("wall_s")).doubleValue();
+        assertTrue(wall >= 1.5 && wall < 10, "closed after its 1.5 s: " + m);
+        double dt = ((Number) m.get("dt_s")).doubleValue();
+        double sim = ((Number) m.get("sim_s")).doubleValue();
+        long steps = ((Number) m.get("steps")).longValue();
+        assertTrue(steps > 0 && ((Number) m.get("frames")).longValue() > 0, "it ran and drew: " + m);
+        // The figures are consistent with one another: simulated time is steps x dt, rates are per wall second.
+        assertEquals(steps * dt, sim, 2 * dt, m.toString());
+        // (wall_s is rounded to 1 ms in the summary: 1e-3 relative.)
+        double rtf = ((Number) m.get("realtime_factor")).doubleValue();
+        assertEquals(sim / wall, rtf, 1e-3 * rtf + 1e-4, m.toString());
+        double sps = ((Number) m.get("steps_per_s")).doubleValue();
+        assertEquals(steps / wall, sps, 1e-3 * sps + 0.1, m.toString());
+        double fps = ((Number) m.get("fps")).doubleValue();
+        assertEquals(((Number) m.get("frames")).doubleValue() / wall, fps, 1e-3 * fps + 0.1, m.toString());
+        assertEquals(null, m.get("diverged"));
+        assertTrue(m.containsKey("error_estimate") && m.containsKey("edt_longest_delay_ms"), m.toString());
     }
 
     @Test

@@ -48,6 +48,29 @@ class GuiDiaphragmTest {
     }
 
     @Test
+    void diaphragmOpensWithTheLargeStepSolverOnAllCoresAndShowsItsErrorEstimate() throws Exception {
+        GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, true, 2, true);
+        try {
+            waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
+            assertEquals(IntegratorCatalog.REAL_TIME, w.tuning().integrator().name());
+            assertEquals(IntegratorCatalog.REAL_TIME_STEP_S, w.runner().timeStep());
+            assertEquals(IntegratorCatalog.REAL_TIME,
+                    w.scene().bodies().get(0).simulation().integrator().name(), "the running simulation's");
+            assertEquals(2, w.runner().threads(), "--threads 2 reaches the step");
+            // BDF2 estimates its error once two steps of the same size are behind it.
+            waitFor("an error estimate", () -> Double.isFinite(w.runner().errorEstimate()) && w.runner().steps() > 3);
+            double e = w.runner().errorEstimate();
+            assertTrue(e >= 0 && e < 1, "a relative error estimate: " + e);
+            Thread.sleep(600); // the status bar refreshes every 250 ms
+            String[] text = new String[1];
+            onEdt(() -> text[0] = w.status().numbersText());
+            assertTrue(text[0].contains("real-time x") && text[0].contains("error ~"), text[0]);
+        } finally {
+            onEdt(w::close);
+        }
+    }
+
+    @Test
     void diaphragmIsDrawnMovesAndRespondsToTheMuscleControl() throws Exception {
         GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, true);
         try {

@@ -16,14 +16,26 @@ import org.tensim.solver.SystemState;
 /** How the diaphragm scene is built: tissues, rigid links, attachments, masses, forces. */
 class DiaphragmSceneTest {
     @Test
-    void rigidLinksAreDisjointStrutsAcrossTheThicknessOfTheTendonOnly() throws Exception {
+    void paperModelLinksTheTendonOnly() throws Exception {
+        DiaphragmScene s = SceneFixture.coarse(16, 1, 2000, DiaphragmParameters.defaults().withTissueModel(TissueModel.PAPER));
+        assertTrue(s.topology().rigidLinks().size() > 20, "some links: " + s.topology().rigidLinks().size());
+        for (RigidLink l : s.topology().rigidLinks()) {
+            assertTrue(s.isTendon(l.a()) && s.isTendon(l.b()), "link " + l + " outside the tendon");
+        }
+    }
+
+    @Test
+    void rigidLinksAreDisjointStrutsAcrossTheThickness() throws Exception {
         DiaphragmScene s = SceneFixture.coarse(16, 1, 2000);
         Topology t = s.topology();
         int[] uses = new int[t.nodeCount()];
         double th = s.surfaces().thicknessM();
-        assertTrue(t.rigidLinks().size() > 20, "some links: " + t.rigidLinks().size());
+        // Material model: every column is rigid (Kirchhoff-Love), but never between two immovable nodes.
+        assertTrue(t.rigidLinks().size() > s.diaphragmNodes() / 3, "links: " + t.rigidLinks().size());
         for (RigidLink l : t.rigidLinks()) {
-            assertTrue(s.isTendon(l.a()) && s.isTendon(l.b()), "link " + l + " outside the tendon");
+            boolean aFree = !t.node(l.a()).isDriven() && !t.node(l.a()).isFixed();
+            boolean bFree = !t.node(l.b()).isDriven() && !t.node(l.b()).isFixed();
+            assertTrue(aFree || bFree, "link " + l + " between two immovable nodes");
             assertTrue(s.surfaces().isUpper(l.a()) != s.surfaces().isUpper(l.b()), "joins upper to lower");
             assertTrue(l.length() >= 0.3 * th && l.length() <= 2.5 * th);
             uses[l.a()]++;
@@ -44,7 +56,8 @@ class DiaphragmSceneTest {
 
     @Test
     void massIsDensityTimesVolumeAndAttachedNodesAreNotIntegrated() throws Exception {
-        DiaphragmScene s = SceneFixture.coarse(16, 1, 2000);
+        // the paper's attachment drives or fixes the attached nodes (the band's ties: BoundaryConditionsTest)
+        DiaphragmScene s = SceneFixture.coarse(16, 1, 2000, BoundaryConditions.paper());
         Topology t = s.topology();
         TriangleMesh m = s.surfaces().mesh();
         double mass = 0;
@@ -73,8 +86,9 @@ class DiaphragmSceneTest {
 
     @Test
     void muscleForceIsTheAmplitudeTimesTheWeightedAreaAtEndInspiration() throws Exception {
+        // the paper's nodal forces (the integrated pressure: BoundaryConditionsTest)
         double pa = 2000;
-        DiaphragmScene s = SceneFixture.coarse(12, 1, pa);
+        DiaphragmScene s = SceneFixture.coarse(12, 1, pa, BoundaryConditions.paper());
         SystemState st = SystemState.compile(s.topology());
         // Only the external laws: no springs stretched at rest, so forces at rest are the muscle's alone.
         ForceModel fm = new ForceModel(st);

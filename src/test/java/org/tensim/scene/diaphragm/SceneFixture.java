@@ -33,9 +33,26 @@ final class SceneFixture {
 
     /** A coarse double dome (rings per face) with the default parameters. */
     static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa) throws IOException {
+        return coarse(rings, ribAmplitude, musclePa, DiaphragmParameters.defaults());
+    }
+
+    /** The same with other parameters. */
+    static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa, DiaphragmParameters p)
+            throws IOException {
+        return coarse(rings, ribAmplitude, musclePa, p, BoundaryConditions.defaults());
+    }
+
+    /** The same with the given attachment and muscle-load models. */
+    static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa, BoundaryConditions bc)
+            throws IOException {
+        return coarse(rings, ribAmplitude, musclePa, DiaphragmParameters.defaults(), bc);
+    }
+
+    /** The same with other parameters and the given attachment and muscle-load models. */
+    static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa, DiaphragmParameters p,
+            BoundaryConditions bc) throws IOException {
         return DiaphragmScene.build(
                 TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings))),
-                boxes(), DiaphragmParameters.defaults(), BreathingCycle.quiet(),
-                new DiaphragmControls(ribAmplitude, musclePa), null);
+                boxes(), p, BreathingCycle.quiet(), new DiaphragmControls(ribAmplitude, musclePa), null, bc);
     }
 }

@@ -1,5 +1,6 @@
 package org.tensim.solver.integrators;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -15,6 +16,8 @@ import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.stability.LinearStability;
+import org.tensim.solver.stability.StabilityTheory;
 
 /** Properties every integrator must have, whatever its order. */
 class IntegratorsTest {
@@ -26,6 +29,9 @@ class IntegratorsTest {
     void registryHasTheSevenMethodsAndTheirNames() {
         assertEquals(List.of("euler", "symplectic-euler", "rk2", "heun", "verlet", "rk4", "implicit-euler", "bdf2"),
                 Integrators.names());
+        assertTrue(Integrators.helpList().startsWith(
+                "euler, symplectic-euler, rk2 (the paper's), heun, verlet, rk4, implicit-euler, bdf2"),
+                Integrators.helpList());
         for (String n : Integrators.names()) {
             Integrator i = Integrators.create(n);
             assertEquals(n, i.name());
@@ -125,5 +131,84 @@ class IntegratorsTest {
         assertEquals(0, ie.unconvergedSolves());
         assertTrue(ie.lastRelativeResidual() <= ImplicitEuler.DEFAULT_TOLERANCE, "residual " + ie.lastRelativeResidual());
         assertTrue(ie.lastIterations() > 1, "a real solve: " + ie.lastIterations() + " CG iterations");
+    }
+
+    /**
+     * A fixed node under an infinite force (a mis-set load, a spring at a singular
+     * length) must not turn into 0 * inf = NaN in any integrator: fixed nodes are not
+     * integrated, so the free node and the fixed one stay finite.
+     */
+    @ParameterizedTest
+    @MethodSource("names")
+    void anInfiniteForceOnAFixedNodeDoesNotPoisonTheState(String name) {
+        Topology t = new Topology();
+        Node fixed = t.addNode(0, 0, 0, 1).fix();
+        Node free = t.addNode(1.1, 0, 0, 1);
+        t.addSpring(fixed.id(), free.id(), 100, 1.0, 0.5); // stretched by 0.1 m
+        t.applyForce(fixed, (time, f, o) -> f[o + 1] += Double.POSITIVE_INFINITY);
+        SystemState s = SystemState.compile(t);
+        Simulation sim = new Simulation(s, Integrators.create(name));
+        sim.setWarningSink(m -> { });
+        sim.runUntil(0.1, 1e-3);
+        for (int k = 0; k < 6; k++) {
+            assertTrue(Double.isFinite(s.x[k]) && Double.isFinite(s.v[k]), name + ": coordinate " + k + " x = "
+                    + s.x[k] + ", v = " + s.v[k]);
+        }
+        assertEquals(0, s.x[0], 0);
+        assertEquals(0, s.x[1], 0);
+        assertEquals(0, s.v[1], 0);
+        assertTrue(Math.abs(s.x[3] - 1.0) <= 0.1 && s.x[3] < 1.09, name + ": the free node swings about its rest"
+                + " length 1 m, x = " + s.x[3]);
+    }
+
+    /**
+     * Every registered method describes its linear stability, or is implicit (then
+     * taken as unconditionally stable): its undamped limit must agree with its own
+     * step formula (bounded just below the limit, growing just above; 0 = growing at
+     * w h = 0.01; infinite = bounded at w h = 1000).
+     */
+    @ParameterizedTest
+    @MethodSource("names")
+    void stabilityLimitAgreesWithTheStepFormula(String name) {
+        Integrator in = Integrators.create(name);
+        LinearStability st = in.stability();
+        if (st == null) {
+            assertTrue(!in.explicit(), name + ": an explicit method must describe its stability");
+            assertEquals(Double.POSITIVE_INFINITY, in.undampedStabilityLimit(), name);
+            return;
+        }
+        double limit = st.undampedLimit();
+        assertEquals(limit, in.undampedStabilityLimit(), 0, name);
+        if (limit == 0) {
+            assertTrue(!StabilityTheory.stable(st, 1e-2, 0), name + " grows at w h = 0.01");
+        } else if (limit == Double.POSITIVE_INFINITY) {
+            assertTrue(StabilityTheory.stable(st, 1e3, 0), name + " bounded at w h = 1000");
+        } else {
+            assertTrue(StabilityTheory.stable(st, 0.999 * limit, 0), name + " bounded just below " + limit);
+            assertTrue(!StabilityTheory.stable(st, 1.001 * limit, 0), name + " grows just above " + limit);
+        }
+    }
+
+    /** Computed from the tableaux' stability polynomials: the textbook values, RK4's to the last bit. */
+    @Test
+    void undampedLimitsComputedFromTheTableaux() {
+        assertEquals(0, ExplicitEuler.TABLEAU.undampedLimit());
+        assertEquals(0, Heun.TABLEAU.undampedLimit());
+        assertEquals(0, MidpointRK2.TABLEAU.undampedLimit());
+        assertEquals(2 * Math.sqrt(2), RK4.TABLEAU.undampedLimit(), 0);
+        assertEquals("1/24", RK4.TABLEAU.stabilityPolynomial().coefficient(4).toString());
+    }
+
+    /** The hand-fused paper's RK2 is the generic tableau loop, bit for bit (on a damped, driven, loaded lattice). */
+    @Test
+    void handFusedRk2IsTheMidpointTableau() {
+        Topology t = org.tensim.solver.parallel.ParallelIntegratorsTest.scene();
+        Simulation fused = new Simulation(SystemState.compile(t), new MidpointRK2());
+        Simulation generic = new Simulation(SystemState.compile(t), new ExplicitRungeKutta("rk2", 2,
+                MidpointRK2.TABLEAU));
+        fused.runUntil(0.05, 1e-3);
+        generic.runUntil(0.05, 1e-3);
+        assertArrayEquals(fused.state().x, generic.state().x);
+        assertArrayEquals(fused.state().v, generic.state().v);
     }
 }

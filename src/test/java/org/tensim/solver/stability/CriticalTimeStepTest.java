@@ -1,4 +1,4 @@
-package org.tensim.solver;
+package org.tensim.solver.stability;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -14,10 +14,34 @@ import org.tensim.model.Spring;
 import org.tensim.model.Topology;
 import org.tensim.scene.LatticeScene;
 import org.tensim.scene.SpringScene;
+import org.tensim.solver.Integrator;
+import org.tensim.solver.Severity;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /** The critical time step estimate against exact values and against the measured limit. */
 class CriticalTimeStepTest {
+    private static double forIntegrator(CriticalTimeStep c, String name) {
+        Integrator in = Integrators.create(name);
+        return c.forMethod(in.explicit(), in.undampedStabilityLimit());
+    }
+
+    /** The one Gershgorin bound, both forms, on one free node between a fixed end and a free 4 kg mass. */
+    @Test
+    void gershgorinFormsOnKnownRows() {
+        int[] a = {0, 1};
+        int[] b = {1, 2};
+        double[] k = {100, 300};
+        double[] m = {1, 1, 4};
+        boolean[] free = {false, true, true};
+        // Rows of M^-1 K: node 1: 2 (100 + 300) / 1 = 800; node 2: 2 300 / 4 = 150.
+        assertEquals(Math.sqrt(800), CriticalTimeStep.gershgorin(3, a, b, k, 2, m, free, CriticalTimeStep.Form.ROWS),
+                1e-12);
+        // Symmetric: node 1: 100 + 300 + 300 / 2 = 550; node 2: 300 / 4 + 300 / 2 = 225.
+        assertEquals(Math.sqrt(550), CriticalTimeStep.gershgorin(3, a, b, k, 2, m, free,
+                CriticalTimeStep.Form.SYMMETRIC), 1e-12);
+    }
     @Test
     void singleAnchoredSpringIsExact() {
         double omega = 7;
@@ -25,8 +49,8 @@ class CriticalTimeStepTest {
         assertEquals(omega, c.omegaMaxPower(), 1e-9 * omega, "power iteration on one spring");
         assertEquals(omega, c.omegaMaxGershgorin(), 1e-9 * omega, "Gershgorin on one spring (anchor fixed)");
         assertEquals(2 / omega, c.stepSeconds(), 1e-9);
-        assertEquals(2 * Math.sqrt(2) / omega, c.forIntegrator(Integrators.create("rk4")), 1e-9);
-        assertEquals(Double.POSITIVE_INFINITY, c.forIntegrator(Integrators.create("implicit-euler")));
+        assertEquals(2 * Math.sqrt(2) / omega, forIntegrator(c, "rk4"), 1e-9);
+        assertEquals(Double.POSITIVE_INFINITY, forIntegrator(c, "implicit-euler"));
     }
 
     @Test

@@ -1,0 +1,162 @@
+package org.tensim.scene.diaphragm;
+
+import java.util.List;
+import org.tensim.model.Node;
+import org.tensim.model.Vec3;
+
+/**
+ * The diaphragm's origins as a band with a stiffness per unit area
+ * ({@link BoundaryConditions.Attachment#BAND}; package-private, called by the scene builder).
+ *
+ * <p>Each diaphragm node i within the attachment threshold W of the cage (distance d_i to its
+ * nearest segment) is tied with
+ * <pre>
+ *   k_i = k_b (A_i / 2) taper(d_i),   taper = 1 for d &lt;= W - T,  cos^2(pi (d - W + T) / (2 T)) up to W
+ * </pre>
+ * (A_i its share of its face's area, half per face as the node masses; k_b in Pa/m). A rib node's tie
+ * is a zero-length spring to an anchor at its rest point driven by that rib's helical-axis motion; a
+ * spine node's to a fixed anchor; a cartilage or sternum node's is two springs to the segment's ends,
+ * split by the node's projection on the segment ({@code (1 - s) k_i} and {@code s k_i}). The band's
+ * total stiffness, {@code k_b} times its area, and the stiffness per unit area at any point converge
+ * as the mesh is refined; the smooth taper keeps nodes entering the band from adding stiffness in
+ * steps. A node's tie frequency {@code sqrt(2 k_b / (rho t))} does not depend on the element size.
+ */
+final class AttachmentBand {
+    private AttachmentBand() {
+    }
+
+    static void attach(DiaphragmSceneBuilder b, BoundaryConditions bc) {
+        double w = b.p.attachThresholdM();
+        double taper = bc.bandTaperM();
+        if (taper > w) {
+            throw new IllegalArgumentException("attachment band taper (" + taper * 1e3 + " mm) must not exceed the"
+                    + " attachment threshold (" + w * 1e3 + " mm)");
+        }
+        List<RibCage.Segment> segs = bc.costalOriginsOnly() ? origins(b.cage.segments()) : b.cage.segments();
+        boolean spineFound = false;
+        double[] weight = new double[b.nv];
+        RibCage.Segment[] nearest = new RibCage.Segment[b.nv];
+        for (int v = 0; v < b.nv; v++) {
+            Vec3 q = b.t.node(v).position();
+            double bestD = Double.POSITIVE_INFINITY;
+            for (RibCage.Segment s : segs) {
+                double d = RibCage.distance(b.t, s, q);
+                if (d < bestD) {
+                    bestD = d;
+                    nearest[v] = s;
+                }
+            }
+            weight[v] = taper(bestD, w, taper);
+            spineFound |= weight[v] > 0 && nearest[v].kind() == RibCage.Kind.SPINE;
+        }
+        if (!spineFound) {
+            crura(b, weight, nearest, w, taper);
+        }
+        b.markFirstAnchor();
+        for (int v = 0; v < b.nv; v++) {
+            if (weight[v] == 0) {
+                continue;
+            }
+            b.attached[v] = true;
+            double k = bc.bandStiffnessPaPerM() * b.area[v] / 2 * weight[v];
+            Node n = b.t.node(v);
+            RibCage.Segment s = nearest[v];
+            if (s == null || s.kind() == RibCage.Kind.SPINE) {
+                b.tie(v, b.t.addNode(n.position(), n.mass()).fix().id(), k);
+                b.attachedSpine++;
+            } else if (s.kind() == RibCage.Kind.RIB) {
+                b.tie(v, b.t.addNode(n.position(), n.mass()).drive(s.motion()).id(), k);
+                b.attachedRibs++;
+            } else {
+                double f = projection(b, s, n.position());
+                if (f < 1) {
+                    b.springs.add(v, s.a(), k * (1 - f));
+                }
+                if (f > 0) {
+                    b.springs.add(v, s.b(), k * f);
+                }
+                b.attachedCartilage++;
+            }
+        }
+    }
+
+    /**
+     * When no node is near the spine segment (a real mesh whose crura reach lower and further
+     * forward than the segment placed from the rib boxes), the crura are the diaphragm's lowest
+     * insertion: the nodes within the threshold above the mesh's lowest point, tapered the same way.
+     */
+    private static void crura(DiaphragmSceneBuilder b, double[] weight, RibCage.Segment[] nearest, double w,
+            double taper) {
+        double low = Double.POSITIVE_INFINITY;
+        for (int v = 0; v < b.nv; v++) {
+            low = Math.min(low, b.mesh.coord(v, 2));
+        }
+        for (int v = 0; v < b.nv; v++) {
+            double c = taper(b.mesh.coord(v, 2) - low, w, taper);
+            if (c > weight[v]) {
+                weight[v] = c;
+                nearest[v] = null;
+            }
+        }
+    }
+
+    /**
+     * The diaphragm's origins among the cage's segments (Gray's Anatomy): the costal part arises from
+     * the inner surfaces of the lower six ribs and their cartilages (ribs 7-12), the sternal part from
+     * the back of the xiphoid process (the sternum's lowest segment), the lumbar part (crura) from the
+     * spine. Ribs 1-6 and their cartilages lie against the dome (the zone of apposition is apposed, not
+     * attached) and are left out.
+     */
+    static List<RibCage.Segment> origins(List<RibCage.Segment> all) {
+        List<RibCage.Segment> out = new java.util.ArrayList<>();
+        RibCage.Segment xiphoid = null;
+        for (RibCage.Segment s : all) {
+            switch (s.kind()) {
+                case RIB, CARTILAGE -> {
+                    if (ribNumber(s.name()) >= 7) {
+                        out.add(s);
+                    }
+                }
+                case STERNUM -> xiphoid = s; // segments run from the manubrium down: the last is the lowest
+                case SPINE -> out.add(s);
+                default -> throw new IllegalStateException("unknown cage segment kind " + s.kind());
+            }
+        }
+        if (xiphoid != null) {
+            out.add(xiphoid);
+        }
+        return out;
+    }
+
+    /** The rib number at the end of a segment name such as {@code rib-r7} or {@code cartilage-l10}. */
+    private static int ribNumber(String name) {
+        int i = name.length();
+        while (i > 0 && Character.isDigit(name.charAt(i - 1))) {
+            i--;
+        }
+        if (i == name.length()) {
+            throw new IllegalStateException("cage segment '" + name + "' has no rib number");
+        }
+        return Integer.parseInt(name.substring(i));
+    }
+
+    /** 1 inside the band, falling as cos^2 over the last {@code taper} metres to 0 at {@code w}. */
+    static double taper(double d, double w, double taper) {
+        if (d >= w) {
+            return 0;
+        }
+        if (d <= w - taper) {
+            return 1;
+        }
+        double c = Math.cos(0.5 * Math.PI * (d - (w - taper)) / taper);
+        return c * c;
+    }
+
+    /** Parameter in [0, 1] of the point of segment s nearest to q. */
+    private static double projection(DiaphragmSceneBuilder b, RibCage.Segment s, Vec3 q) {
+        Vec3 a = b.t.node(s.a()).position();
+        Vec3 e = b.t.node(s.b()).position().minus(a);
+        double l2 = e.dot(e);
+        return l2 == 0 ? 0.5 : Math.max(0, Math.min(1, q.minus(a).dot(e) / l2));
+    }
+}

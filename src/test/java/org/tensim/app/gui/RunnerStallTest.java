@@ -1,0 +1,169 @@
+package org.tensim.app.gui;
+
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.FrameBuffer;
+import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.ViewScene;
+
+/**
+ * A stiffness change made in the GUI while the diaphragm runs must not stall the
+ * simulation thread: what follows a change (scaling the springs, the critical-step
+ * estimate, an integrator's refactorisation) happens between two steps or in the
+ * background. Measured as the longest gap between steps right after each change
+ * against the longest gaps over as many steps elsewhere in the same run: a ratio, so
+ * that a loaded machine slows both alike. No absolute time is asserted.
+ *
+ * <p>The reference is the 90th percentile of those windows, not their median: on a
+ * shared machine the background work (the critical-step estimate, a refactorisation)
+ * competes with the simulation thread for a core, and a thread that loses a core for
+ * a scheduler slice is slowed, not stalled. Measured here (2 cores, load average 15-17):
+ * with the critical-step estimate done on the simulation thread, as it was, the ratio
+ * was 4.7 (RK2); estimated in the background, 1.0-1.1 for both integrators.
+ */
+class RunnerStallTest {
+    private static final int CHANGES = 8;
+    /**
+     * Changes made first and not measured: the first rebuilds of the scene run interpreted and
+     * grow the heap (JIT compilation, garbage collections that stop every thread), a one-time cost
+     * that under a load average of 38 stretched the first gaps to 1.5-3.3 s.
+     */
+    private static final int WARM_UP_CHANGES = 2;
+    /** Steps after a change (and in each reference window) whose longest gap is taken. */
+    private static final int WINDOW = 5;
+    /** Largest accepted ratio of the median post-change window to the 90th percentile reference window. */
+    private static final double MAX_RATIO = 3;
+
+    @ParameterizedTest
+    @ValueSource(strings = {"rk2", IntegratorCatalog.REAL_TIME})
+    void stiffnessChangeWhileRunningDoesNotStallTheSteps(String integrator) throws Exception {
+        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 14, null));
+        ViewScene first = factory.create(true);
+        Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), true,
+                IntegratorCatalog.available());
+        tuning.setIntegrator(integrator);
+        if (!"rk2".equals(integrator)) {
+            tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
+        }
+        long[] stepNanos = new long[1 << 20];
+        AtomicInteger recorded = new AtomicInteger();
+        AtomicReference<String> trouble = new AtomicReference<>();
+        SimulationRunner runner = new SimulationRunner(factory, tuning::snapshot, new SimulationRunner.Events() {
+            @Override
+            public void installed(ViewScene s, FrameBuffer frames, ProbeRecorder probes) {
+                s.bodies().get(0).simulation().addListener(sim -> {
+                    int i = recorded.get();
+                    if (i < stepNanos.length) {
+                        stepNanos[i] = System.nanoTime();
+                        recorded.set(i + 1);
+                    }
+                });
+            }
+
+            @Override
+            public void diverged(String body, SimulationDivergedException e) {
+                trouble.set("diverged: " + e.getMessage());
+            }
+
+            @Override
+            public void failed(String what, RuntimeException e) {
+                trouble.set(what + ": " + e);
+            }
+
+            @Override
+            public void warning(String message) {
+            }
+        }, 0);
+        tuning.bind(runner);
+        runner.setPaced(false);
+        runner.start(first);
+        runner.play();
+        long[] changeNanos = new long[CHANGES + WARM_UP_CHANGES];
+        try {
+            GuiTestSupport.waitFor("the first steps", () -> recorded.get() > 4 * WINDOW);
+            Thread.sleep(400); // the first critical-step estimate of the new scene
+            double e0 = tuning.get(DiaphragmViewScene.TISSUE_STIFFNESS);
+            for (int c = 0; c < changeNanos.length; c++) {
+                int before = recorded.get();
+                // Softer, then back: stays stable for RK2 at the scene's step.
+                changeNanos[c] = System.nanoTime();
+                tuning.set(DiaphragmViewScene.TISSUE_STIFFNESS, c % 2 == 0 ? 0.7 * e0 : e0);
+                GuiTestSupport.waitFor("steps after change " + c, () -> recorded.get() > before + 4 * WINDOW);
+                Thread.sleep(500); // longer than the critical-step estimate's 0.3 s throttle
+            }
+        } finally {
+            runner.stop();
+        }
+        assertNull(trouble.get());
+        int n = recorded.get();
+        long[] t = Arrays.copyOf(stepNanos, n);
+        int measuredFrom = firstStepAfter(t, changeNanos[WARM_UP_CHANGES - 1]) + WINDOW + 1;
+        List<Long> afterChange = new ArrayList<>();
+        boolean[] near = new boolean[n];
+        for (int k = 0; k < changeNanos.length; k++) {
+            int i = firstStepAfter(t, changeNanos[k]);
+            if (k >= WARM_UP_CHANGES) {
+                afterChange.add(longestGap(t, i, WINDOW));
+            }
+            for (int j = Math.max(0, i - 1); j < Math.min(n, i + WINDOW + 1); j++) {
+                near[j] = true;
+            }
+        }
+        List<Long> reference = new ArrayList<>();
+        for (int i = measuredFrom; i + WINDOW < n; i += WINDOW) { // after the warm-up
+            boolean clear = true;
+            for (int j = i - 1; j <= i + WINDOW; j++) {
+                clear &= !near[j];
+            }
+            if (clear) {
+                reference.add(longestGap(t, i, WINDOW));
+            }
+        }
+        assertTrue(reference.size() >= CHANGES, "too few reference windows: " + reference.size());
+        double ratio = percentile(afterChange, 0.5) / (double) percentile(reference, 0.9);
+        String figures = String.format(java.util.Locale.ROOT,
+                "%s: after a stiffness change the longest step gap is %.1f times the usual one (median %.2f ms"
+                        + " against the 90th percentile %.2f ms of %d reference windows of %d steps; per change, ms: %s)",
+                integrator, ratio, percentile(afterChange, 0.5) * 1e-6, percentile(reference, 0.9) * 1e-6,
+                reference.size(), WINDOW,
+                afterChange.stream().map(g -> String.format(java.util.Locale.ROOT, "%.2f", g * 1e-6)).toList());
+        System.out.println(figures);
+        assertTrue(ratio < MAX_RATIO, figures);
+    }
+
+    /** Index of the first step that ended after time c (the change is applied before that step). */
+    private static int firstStepAfter(long[] t, long c) {
+        for (int i = 0; i < t.length; i++) {
+            if (t[i] > c) {
+                return i;
+            }
+        }
+        throw new AssertionError("no step after a change");
+    }
+
+    /** The longest of the gaps that end at steps i .. i + w - 1, ns. */
+    private static long longestGap(long[] t, int i, int w) {
+        long g = 0;
+        for (int j = Math.max(1, i); j < Math.min(t.length, i + w); j++) {
+            g = Math.max(g, t[j] - t[j - 1]);
+        }
+        return g;
+    }
+
+    private static long percentile(List<Long> l, double q) {
+        List<Long> s = new ArrayList<>(l);
+        s.sort(null);
+        return s.get((int) Math.min(s.size() - 1, Math.floor(q * s.size())));
+    }
+}
