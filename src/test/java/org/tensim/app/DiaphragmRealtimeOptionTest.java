@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
@@ -14,7 +12,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.bench.RealTimeSetting;
 import org.tensim.io.Json;
-import picocli.CommandLine;
 
 /** diaphragm --realtime, the checked --dt and the real-time study's selection options. */
 class DiaphragmRealtimeOptionTest {
@@ -22,13 +19,7 @@ class DiaphragmRealtimeOptionTest {
     Path dir;
 
     private static String[] run(String... args) {
-        CommandLine cl = Main.commandLine();
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new String[] {String.valueOf(code), out.toString(), err.toString()};
+        return CommandLineTest.run(args);
     }
 
     private static void rejected(String expected, String... args) {
