@@ -217,7 +217,8 @@ public final class AccuracyStudy {
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         double err = diverged ? Double.NaN : maxDistance(sim.state().x, ref);
-        long products = integrator instanceof ImplicitEuler ie ? ie.matrixVectorProducts() : 0;
+        long products = integrator instanceof ImplicitEuler ie ? ie.matrixVectorProducts()
+                : integrator instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b ? b.jacobianProducts() : 0;
         return new Run(name, dt, err, wall, sim.forces().evaluations(), products, sim.steps(),
                 sim.stepLimitWarnings() > 0, diverged);
     }

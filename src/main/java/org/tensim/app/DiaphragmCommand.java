@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.bench.RealTimeSetting;
 import org.tensim.bench.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
@@ -21,6 +22,7 @@ import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -121,6 +123,12 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE})")
     double tendonFraction = DiaphragmParameters.defaults().tendonAreaFraction();
 
+    @Option(names = "--tissue-model", paramLabel = "NAME",
+            description = "how the springs come from the tissue: material (identified from E, nu and t: Kirchhoff"
+                    + " bending, rigid columns) or paper (the model the paper's figures were reproduced with)"
+                    + " (default: ${DEFAULT-VALUE}; docs/diaphragm.md)")
+    String tissueModel = DiaphragmParameters.defaults().tissueModel().name().toLowerCase();
+
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
             description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
@@ -144,6 +152,20 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "time step, s (default: the step the time-step policy recommends for the integrator on"
                     + " this scene; summary.json's dt_rule says how it was chosen)")
     double dt = 0;
+
+    @Option(names = "--realtime",
+            description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
+                    + " default mesh, on all cores; the summary names it and its measured error")
+    boolean realtime;
+
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+            description = "--realtime-study only: ring counts, ascending (default: 10,14,20,28,43)")
+    int[] studyRings;
+
+    @Option(names = "--study-configs", paramLabel = "REGEX",
+            description = "--realtime-study only: run the configurations whose label this finds (RK2 on two threads,"
+                    + " the reference of each resolution, always runs)")
+    String studyConfigs;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
             description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE})")
@@ -203,12 +225,44 @@ public final class DiaphragmCommand implements Callable<Integer> {
         CommandChecks.threads(spec, "--threads", threads, true);
         CommandChecks.outFolder(spec, out);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
+        if (dt < 0 || dt > period) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--dt must be > 0 s (or 0 for the"
+                    + " recommended step) and at most one breathing period (--period " + period + " s), got " + dt
+                    + " s");
+        }
         if (dt != 0) {
             CommandChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
         }
+        RealTimeSetting setting = null;
+        if (realtime) {
+            if (dt != 0 || cgTolerance != null || !integrator.equals("rk2")) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
+                                + " --cg-tolerance");
+            }
+            setting = RealTimeSetting.DEFAULT_MESH;
+            chosen = setting.newIntegrator();
+            dt = setting.dtS();
+        }
+        if (studyRings != null) {
+            for (int i = 0; i < studyRings.length; i++) {
+                if (studyRings[i] < 4 || (i > 0 && studyRings[i] <= studyRings[i - 1])) {
+                    throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--study-rings must be"
+                            + " ascending ring counts of 4 or more, got " + java.util.Arrays.toString(studyRings));
+                }
+            }
+        }
+        java.util.regex.Pattern only;
+        try {
+            only = studyConfigs == null ? null : java.util.regex.Pattern.compile(studyConfigs);
+        } catch (java.util.regex.PatternSyntaxException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
+                            + "'");
+        }
         MeshUnits u = MeshUnits.parse(units);
         DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
-                .withTendonAreaFraction(tendonFraction);
+                .withTendonAreaFraction(tendonFraction).withTissueModel(TissueModel.parse(tissueModel));
         if (tendonNormal != null || tendonPointMm != null) {
             Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
             Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
@@ -232,7 +286,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         if (realtimeStudy) {
             return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
                 registerAll(run, REALTIME_OUTPUTS);
-                Map<String, Object> s = RealTimeStudy.run(boxes, params, cycle, controls, seconds, out, System.out);
+                Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
+                        boxes, params, cycle, controls, seconds, out, System.out);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
@@ -258,8 +313,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
+        final org.tensim.solver.Integrator integratorUsed = chosen;
+        final RealTimeSetting named = setting;
         return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, bc, cleaning,
-                lines, cycle, controls, o, chosen));
+                lines, cycle, controls, o, integratorUsed, named));
     }
 
     /** Outputs of the studies, written by the study classes themselves into --out. */
@@ -276,7 +333,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
     private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, BoundaryConditions bc,
             MeshCleaner.Options cleaning,
             List<ActionLines.Line> lines, BreathingCycle cycle, DiaphragmControls controls, DiaphragmReport.Options o,
-            org.tensim.solver.Integrator chosen) throws Exception {
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting) throws Exception {
         DiaphragmSetup.Built built;
         if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
             built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls, bc);
@@ -287,8 +344,17 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println(built.meshReport().describe());
         }
         int n = threads > 0 ? threads
-                : org.tensim.solver.parallel.Parallelism.automaticThreads(built.scene().topology().springs().size());
+                : setting != null ? org.tensim.solver.parallel.Parallelism.availableCores()
+                        : org.tensim.solver.parallel.Parallelism.automaticThreads(
+                                built.scene().topology().springs().size());
+        if (setting != null) {
+            System.out.println("realtime: " + setting.describe()
+                    + (mesh.equals(DiaphragmSetup.DEFAULT_MESH) ? "" : "; this mesh (" + mesh + ") was not measured"));
+        }
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
+        if (setting != null) {
+            fields.put("realtime_setting", setting.toMap());
+        }
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {

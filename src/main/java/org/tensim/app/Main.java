@@ -20,7 +20,8 @@ import picocli.CommandLine.Command;
             "(Villard, Bourne, Bello, ISBMS 2008).", "",
             "The launcher also has: ./tensim test (the whole test suite)."},
         subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
-            DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class})
+            DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class, SweepCommand.class,
+            CalibrateCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

@@ -16,14 +16,15 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 
 /**
  * The real-time study on two small models and a short run: every configuration is
- * run and reported, the two-thread RK2 gives the one-thread field, and the sternum's
- * mass scaling leaves the field nearly unchanged (its inertial forces are small).
+ * run and reported, the one-thread RK2 gives the two-thread field (the reference), the
+ * sternum's mass scaling leaves the field nearly unchanged (its inertial forces are small),
+ * and the reference's samples are kept for the next study.
  */
 class RealTimeStudyTest {
     @Test
     @SuppressWarnings("unchecked")
     void reportsEveryConfigurationAndItsErrors(@TempDir Path out) throws IOException {
-        Map<String, Object> s = RealTimeStudy.run(new int[] {6, 8}, null, DiaphragmParameters.defaults(),
+        Map<String, Object> s = RealTimeStudy.run(new int[] {6, 8}, null, null, DiaphragmParameters.defaults(),
                 BreathingCycle.quiet(), new DiaphragmControls(1, 2600), 0.4, out, null);
         List<Map<String, Object>> runs = (List<Map<String, Object>>) s.get("runs");
         int configs = RealTimeStudy.configs().size();
@@ -31,23 +32,31 @@ class RealTimeStudyTest {
         assertTrue(Files.size(out.resolve("realtime.png")) > 0);
         assertEquals(1 + 2 * configs, Files.readAllLines(out.resolve("realtime.csv")).size());
         assertEquals(0.0, (double) runs.get(0).get("relative_rms_error"), "the reference against itself");
+        try (java.util.stream.Stream<Path> files = Files.list(out)) {
+            assertEquals(2, files.filter(f -> f.getFileName().toString().startsWith("rk2-reference-")).count(),
+                    "the same-mesh references' samples are kept, one file per resolution");
+        }
         for (Map<String, Object> r : runs) {
             assertTrue((double) r.get("realtime_factor") > 0, r.toString());
             assertTrue(!(boolean) r.get("diverged"), r.toString());
             String config = (String) r.get("config");
             double own = (double) r.get("error_vs_rk2_same_resolution");
-            if (config.contains("2 threads")) {
-                assertTrue(own < 1e-9, "thread count changes rounding only: " + r);
+            double worst = (double) r.get("worst_error_vs_rk2_same_resolution");
+            assertTrue(worst >= 0 && Double.isFinite(worst), r.toString());
+            if (config.startsWith("rk2 at the stable step / 1 thread")) {
+                assertTrue(own < 1e-9 && worst < 1e-9, "thread count changes rounding only: " + r);
             } else if (config.contains("sternum mass")) {
                 assertTrue(own < 0.05, "sternum mass scaling changes the field little: " + r);
-            } else if (config.startsWith("implicit")) {
+            } else if (config.startsWith("implicit") || config.startsWith("bdf2")) {
                 assertTrue((double) r.get("cg_products_per_step") > 0, r.toString());
             }
             if (config.contains("sternum mass")) {
-                // It lifts the sternum's limit on the step: a larger stable step than the unscaled RK2's.
+                // It lifts the sternum's limit on the step: a larger stable step than the unscaled RK2's
+                // (1.47 times at 8 rings since the material springs and the attachment band, 2026-11-23: the
+                // next modes are not far above the sternum's).
                 Map<String, Object> plain = runs.stream().filter(x -> x.get("rings").equals(r.get("rings"))
                         && ((String) x.get("config")).startsWith("rk2 at the stable step / 1")).findFirst().get();
-                assertTrue((double) r.get("dt_s") > 1.5 * (double) plain.get("dt_s"), r + " vs " + plain);
+                assertTrue((double) r.get("dt_s") > 1.3 * (double) plain.get("dt_s"), r + " vs " + plain);
             }
         }
     }

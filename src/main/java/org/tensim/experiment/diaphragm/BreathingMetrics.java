@@ -153,6 +153,25 @@ public final class BreathingMetrics implements StepListener {
         return extentsExp.clone();
     }
 
+    /**
+     * The measured cycle's figures as summary fields, in millimetres, unrounded, under the names
+     * of the diaphragm's summary.json (docs/diaphragm.md); empty when end-inspiration was not reached.
+     */
+    public java.util.Map<String, Double> fields() {
+        java.util.Map<String, Double> f = new java.util.LinkedHashMap<>();
+        if (complete()) {
+            f.put("dome_excursion_mm", 1e3 * domeExcursionM());
+            f.put("apex_descent_mm", -1e3 * apexDescentM());
+            f.put("ap_extent_change_mm", 1e3 * apChangeM());
+            f.put("transverse_extent_change_mm", 1e3 * transverseChangeM());
+            f.put("vertical_extent_change_mm", 1e3 * verticalChangeM());
+            f.put("ap_extent_change_all_nodes_mm", 1e3 * apChangeAllM());
+            f.put("transverse_extent_change_all_nodes_mm", 1e3 * transverseChangeAllM());
+            f.put("thorax_vertical_change_mm", -1e3 * apexDescentM());
+        }
+        return f;
+    }
+
     public DiaphragmScene scene() {
         return scene;
     }

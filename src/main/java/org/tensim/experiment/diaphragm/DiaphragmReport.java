@@ -236,14 +236,7 @@ public final class DiaphragmReport {
 
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
-        summary.put("dome_excursion_mm", round(1e3 * metrics.domeExcursionM(), 3));
-        summary.put("apex_descent_mm", round(-1e3 * metrics.apexDescentM(), 3));
-        summary.put("ap_extent_change_mm", round(1e3 * metrics.apChangeM(), 3));
-        summary.put("transverse_extent_change_mm", round(1e3 * metrics.transverseChangeM(), 3));
-        summary.put("vertical_extent_change_mm", round(1e3 * metrics.verticalChangeM(), 3));
-        summary.put("ap_extent_change_all_nodes_mm", round(1e3 * metrics.apChangeAllM(), 3));
-        summary.put("transverse_extent_change_all_nodes_mm", round(1e3 * metrics.transverseChangeAllM(), 3));
-        summary.put("thorax_vertical_change_mm", round(-1e3 * metrics.apexDescentM(), 3));
+        metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
     }
 
     /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */

@@ -30,7 +30,8 @@ public final class CubeViewScene implements ViewScene {
 
     private static final CubeParameters P = CubeParameters.paper();
 
-    private static final List<TunableParameter> PARAMETERS = List.of(
+    /** The tunable parameters (the sweep and calibration read their names and ranges here). */
+    public static final List<TunableParameter> PARAMETERS = List.of(
             TunableParameter.linear(FORCE_AMPLITUDE, "Force amplitude", "N", 0, 2000, P.forceAmplitudeN(),
                     "Peak of the sinusoidal force on each of the two loaded upper nodes of both cubes."),
             TunableParameter.log(FORCE_FREQUENCY, "Force frequency", "Hz", 0.02, 5, P.forceFrequencyHz(),

@@ -55,7 +55,8 @@ public final class DiaphragmViewScene implements ViewScene {
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
-    static final List<TunableParameter> PARAMETERS = List.of(
+    /** The tunable parameters (the sweep and calibration read their names and ranges here). */
+    public static final List<TunableParameter> PARAMETERS = List.of(
             TunableParameter.linear(RIB_AMPLITUDE, "Rib motion amplitude", "x quiet", 0,
                     DiaphragmControls.MAX_RIB_AMPLITUDE, 1,
                     "Rib rotation about each rib's helical axis, times quiet breathing (0: ribs still)."),

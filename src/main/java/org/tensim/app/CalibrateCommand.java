@@ -1,0 +1,103 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.tensim.calibration.Calibration;
+import org.tensim.calibration.CalibrationReader;
+import org.tensim.calibration.CalibrationSpec;
+import org.tensim.calibration.SyntheticTarget;
+import org.tensim.io.Json;
+import org.tensim.sweep.SpecReader;
+import org.tensim.sweep.SweepEngine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code tensim calibrate}: fits parameters to targets with CMA-ES over the sweep engines. */
+@Command(name = "calibrate", mixinStandardHelpOptions = true,
+        description = {"Fits chosen parameters within bounds (CMA-ES, Hipparchus), each generation's candidates",
+            "run at once on the sweep engine, to weighted targets: summary figures with tolerances,",
+            "landmark trajectories (CSV id,t,x,y,z), a target surface at a breathing phase",
+            "(OBJ/STL/OFF; mean and 95th-percentile distance). Writes best-preset.json (for",
+            "./tensim gui --preset), history.csv, convergence.png, residuals.json and evaluations.csv",
+            "to --out. With --make-target, writes a synthetic target surface instead. docs/calibration.md."})
+public final class CalibrateCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the calibration spec (JSON)")
+    Path specFile;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/calibrate/SPEC-NAME)")
+    Path out;
+
+    @picocli.CommandLine.Mixin
+    EngineOptions engines = new EngineOptions();
+
+    @Option(names = "--make-target", paramLabel = "FILE.obj",
+            description = "instead of calibrating: run the spec's scene at --truth and write its surface at --phase-s,"
+                    + " with --noise-mm, as an OBJ in mm")
+    Path makeTarget;
+
+    @Option(names = "--truth", paramLabel = "NAME=VALUE", split = ",",
+            description = "--make-target: parameter values of the run (others: the spec's fixed values or defaults)")
+    Map<String, Double> truth = new LinkedHashMap<>();
+
+    @Option(names = "--phase-s", paramLabel = "S", description = "--make-target: time of the surface, s")
+    double phaseS = Double.NaN;
+
+    @Option(names = "--noise-mm", paramLabel = "MM",
+            description = "--make-target: Gaussian noise per coordinate, mm (default: ${DEFAULT-VALUE})")
+    double noiseMm = 0;
+
+    @Option(names = "--seed", paramLabel = "N", description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE})")
+    long seed = 1;
+
+    @Override
+    public Integer call() throws Exception {
+        if (makeTarget != null) {
+            return makeTarget();
+        }
+        CalibrationSpec s;
+        try {
+            s = CalibrationReader.read(specFile);
+        } catch (SpecReader.SpecException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
+        Path dir = out != null ? out : Path.of("out", "calibrate", SweepCommand.defaultOut(specFile).getFileName()
+                .toString());
+        try (SweepEngine e = engines.create(spec.commandLine())) {
+            System.out.println("calibrating " + s.names() + " of " + s.setup().geometry() + " on " + e.describe()
+                    + " into " + dir);
+            Calibration.Result r = Calibration.run(s, e, dir, System.out);
+            System.out.println("wrote " + dir.resolve("best-preset.json") + ", history.csv, convergence.png,"
+                    + " residuals.json, evaluations.csv");
+            System.out.println(Json.line(r.summary()));
+        }
+        return 0;
+    }
+
+    private int makeTarget() {
+        org.tensim.sweep.RunSetup setup;
+        try {
+            setup = CalibrationReader.readSetup(specFile);
+        } catch (SpecReader.SpecException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
+        if (!(phaseS > 0 && phaseS <= setup.seconds())) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--phase-s must be within the"
+                    + " spec's run (0, " + setup.seconds() + "] s, got " + phaseS);
+        }
+        for (Map.Entry<String, Double> e : truth.entrySet()) {
+            try {
+                org.tensim.sweep.SceneRun.parameter(setup.scene(), e.getKey()).validate(e.getValue(), "--truth");
+            } catch (IllegalArgumentException ex) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), ex.getMessage());
+            }
+        }
+        SyntheticTarget.write(setup, truth, phaseS, noiseMm, seed, makeTarget);
+        System.out.println("wrote " + makeTarget);
+        return 0;
+    }
+}

@@ -1,0 +1,56 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.tensim.io.Json;
+import org.tensim.sweep.SpecReader;
+import org.tensim.sweep.Sweep;
+import org.tensim.sweep.SweepEngine;
+import org.tensim.sweep.SweepSpec;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code tensim sweep}: a parameter sweep of headless runs, on all local cores or on Spark. */
+@Command(name = "sweep", mixinStandardHelpOptions = true,
+        description = {"A parameter sweep: every point of a grid or Latin hypercube is an independent headless",
+            "run of a scene (the GUI's parameters and ranges). Writes results.csv as points finish",
+            "(parameters, summary fields, status ok/diverged/refused with its message, wall time),",
+            "charts/OUTPUT-vs-PARAMETER.png and sweep.json to --out. Started again on the same --out it",
+            "resumes, skipping the points already done. Spec format and engines: docs/scaling.md."})
+public final class SweepCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the sweep spec (JSON)")
+    Path specFile;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/sweep/SPEC-NAME)")
+    Path out;
+
+    @picocli.CommandLine.Mixin
+    EngineOptions engines = new EngineOptions();
+
+    @Override
+    public Integer call() throws Exception {
+        SweepSpec s;
+        try {
+            s = SpecReader.readSweep(specFile);
+        } catch (SpecReader.SpecException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
+        Path dir = out != null ? out : defaultOut(specFile);
+        try (SweepEngine e = engines.create(spec.commandLine())) {
+            System.out.println("sweep of " + s.setup().geometry() + " on " + e.describe() + " into " + dir);
+            Sweep.Outcome o = Sweep.run(s, dir, e, System.console() != null, System.out);
+            System.out.println("wrote " + dir.resolve("results.csv") + ", charts/, sweep.json");
+            System.out.println(Json.line(o.summary()));
+        }
+        return 0;
+    }
+
+    /** out/sweep/NAME for a spec file NAME.json (also used by calibrate: out/calibrate/NAME). */
+    static Path defaultOut(Path specFile) {
+        String n = specFile.getFileName().toString();
+        return Path.of("out", "sweep", n.endsWith(".json") ? n.substring(0, n.length() - 5) : n);
+    }
+}

@@ -1,0 +1,115 @@
+package org.tensim.calibration;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.knowm.xchart.XYChart;
+import org.tensim.app.gui.PresetFile;
+import org.tensim.app.gui.Settings;
+import org.tensim.app.gui.Tuning;
+import org.tensim.io.Charts;
+import org.tensim.io.CsvWriter;
+import org.tensim.io.Json;
+
+/**
+ * Writes what a calibration found: {@code best-preset.json} (a GUI preset with the fitted
+ * and fixed values, opened by {@code ./tensim gui --preset}), {@code history.csv} and
+ * {@code convergence.png} (best score per generation), {@code residuals.json} (each target's
+ * residuals at the best candidate) and returns the summary.
+ */
+public final class CalibrationReport {
+    private CalibrationReport() {
+    }
+
+    /** Writes the files into {@code out}; returns the summary (also in residuals.json). */
+    public static Map<String, Object> write(Path out, CalibrationSpec spec, Calibrator.Outcome o, String engine)
+            throws IOException {
+        List<String> names = spec.names();
+        Calibrator.Evaluation best = o.best();
+        Map<String, Double> values = new LinkedHashMap<>(spec.setup().fixed());
+        for (int i = 0; i < names.size(); i++) {
+            values.put(names.get(i), best.values()[i]);
+        }
+        if (spec.setup().dtS() > 0) {
+            values.put(Tuning.TIME_STEP, spec.setup().dtS());
+        }
+        PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
+                spec.setup().integrator(), true, values));
+
+        List<String> header = new ArrayList<>(List.of("generation", "runs", "best_of_generation", "best_so_far",
+                "wall_s"));
+        header.addAll(names);
+        try (CsvWriter w = new CsvWriter(out.resolve("history.csv"), header, 1)) {
+            for (Calibrator.Generation g : o.history()) {
+                double[] row = new double[header.size()];
+                row[0] = g.generation();
+                row[1] = g.evaluations();
+                row[2] = g.best();
+                row[3] = g.bestSoFar();
+                row[4] = g.wallS();
+                System.arraycopy(g.values(), 0, row, 5, names.size());
+                w.row(row);
+            }
+        }
+        double[] gen = o.history().stream().mapToDouble(Calibrator.Generation::generation).toArray();
+        double[] bestSoFar = o.history().stream().mapToDouble(g -> Math.max(g.bestSoFar(), 1e-12)).toArray();
+        double[] genBest = o.history().stream().mapToDouble(g -> Math.max(Math.min(g.best(), Calibrator.PENALTY),
+                1e-12)).toArray();
+        if (gen.length > 0) {
+            XYChart c = Charts.lineChart("Calibration: objective (weighted squared residuals) per generation",
+                    "generation", "objective", 800, 500);
+            c.getStyler().setYAxisLogarithmic(true);
+            Charts.addLineWithMarkers(c, "best so far", gen, bestSoFar);
+            Charts.addLineWithMarkers(c, "best of the generation", gen, genBest);
+            Charts.savePng(c, out.resolve("convergence.png"));
+        }
+
+        Map<String, Object> s = new LinkedHashMap<>();
+        s.put("scene", spec.setup().geometry());
+        s.put("engine", engine);
+        s.put("best", valuesMap(names, best.values()));
+        s.put("objective", best.fitness());
+        s.put("best_status", best.result().status());
+        List<Map<String, Object>> targets = new ArrayList<>();
+        for (Target t : spec.targets()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("target", t.describe());
+            m.put("weight", t.weight());
+            double[] r = t.residuals(best.result());
+            Map<String, Object> res = new LinkedHashMap<>();
+            double contribution = 0;
+            for (int i = 0; i < r.length; i++) {
+                res.put(t.residualNames().get(i), r[i]);
+                contribution += t.weight() * r[i] * r[i];
+            }
+            m.put("residuals", res);
+            Map<String, Object> measured = new LinkedHashMap<>();
+            for (String f : t.fields()) {
+                measured.put(f, best.result().field(f));
+            }
+            m.put("measured", measured);
+            m.put("contribution", contribution);
+            targets.add(m);
+        }
+        s.put("targets", targets);
+        s.put("runs", o.evaluations().size());
+        s.put("diverged_or_refused", o.evaluations().stream().filter(e -> !e.result().ok()).count());
+        s.put("generations", o.history().size());
+        s.put("wall_s", Math.round(o.wallS() * 100) / 100.0);
+        s.put("load_average", Math.round(java.lang.management.ManagementFactory.getOperatingSystemMXBean()
+                .getSystemLoadAverage() * 100) / 100.0);
+        Json.write(out.resolve("residuals.json"), s);
+        return s;
+    }
+
+    private static Map<String, Double> valuesMap(List<String> names, double[] v) {
+        Map<String, Double> m = new LinkedHashMap<>();
+        for (int i = 0; i < names.size(); i++) {
+            m.put(names.get(i), v[i]);
+        }
+        return m;
+    }
+}

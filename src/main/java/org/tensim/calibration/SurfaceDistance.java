@@ -1,0 +1,162 @@
+package org.tensim.calibration;
+
+import java.util.Arrays;
+
+/**
+ * Unsigned distances from points to a triangle surface, with no correspondence between
+ * the points and the surface's vertices (the 4D-CT case: a segmented surface against the
+ * model's nodes). For each point the closest point of every triangle is found by the
+ * region test of Ericson (Real-Time Collision Detection, 2005, section 5.1.5); triangles
+ * whose bounding sphere lies farther than the best distance so far are skipped, which keeps
+ * the cost well below points x triangles on a surface.
+ */
+public final class SurfaceDistance {
+    private final double[] v;
+    private final int[] tri;
+    private final double[] centre;
+    private final double[] radius;
+    private final int[] order;
+    private final double maxR;
+
+    /**
+     * @param xyz       vertex coordinates, m (3 per vertex)
+     * @param triangles vertex indices, 3 per triangle
+     */
+    public SurfaceDistance(double[] xyz, int[] triangles) {
+        if (triangles.length == 0 || triangles.length % 3 != 0) {
+            throw new IllegalArgumentException("a surface needs whole triangles, got " + triangles.length
+                    + " indices");
+        }
+        v = xyz.clone();
+        tri = triangles.clone();
+        int n = tri.length / 3;
+        centre = new double[3 * n];
+        radius = new double[n];
+        for (int t = 0; t < n; t++) {
+            for (int a = 0; a < 3; a++) {
+                centre[3 * t + a] = (v[3 * tri[3 * t] + a] + v[3 * tri[3 * t + 1] + a] + v[3 * tri[3 * t + 2] + a]) / 3;
+            }
+            double r = 0;
+            for (int k = 0; k < 3; k++) {
+                int p = tri[3 * t + k];
+                r = Math.max(r, Math.sqrt(sq(v[3 * p] - centre[3 * t]) + sq(v[3 * p + 1] - centre[3 * t + 1])
+                        + sq(v[3 * p + 2] - centre[3 * t + 2])));
+            }
+            radius[t] = r;
+        }
+        // Triangles sorted along x so that a search can start near the point.
+        Integer[] idx = new Integer[n];
+        for (int t = 0; t < n; t++) {
+            idx[t] = t;
+        }
+        Arrays.sort(idx, (a, b) -> Double.compare(centre[3 * a], centre[3 * b]));
+        order = Arrays.stream(idx).mapToInt(Integer::intValue).toArray();
+        maxR = Arrays.stream(radius).max().orElse(0);
+    }
+
+    /** Distance from (px, py, pz) to the surface, m. */
+    public double distance(double px, double py, double pz) {
+        int n = order.length;
+        // start at the triangle whose centre's x is nearest, then walk both ways while it can matter
+        int lo = 0;
+        int hi = n - 1;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (centre[3 * order[mid]] < px) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        double best = Double.POSITIVE_INFINITY;
+        // Every point of triangle t has x within maxR of its centre's: once the centres are farther
+        // than best + maxR along x, no triangle further along can be closer.
+        for (int i = lo, j = lo - 1; i < n || j >= 0;) {
+            if (i < n) {
+                int t = order[i];
+                if (centre[3 * t] - px - maxR <= best) {
+                    best = Math.min(best, check(t, px, py, pz, best));
+                    i++;
+                } else {
+                    i = n;
+                }
+            }
+            if (j >= 0) {
+                int t = order[j];
+                if (px - centre[3 * t] - maxR <= best) {
+                    best = Math.min(best, check(t, px, py, pz, best));
+                    j--;
+                } else {
+                    j = -1;
+                }
+            }
+        }
+        return best;
+    }
+
+    private double check(int t, double px, double py, double pz, double best) {
+        double dc = Math.sqrt(sq(px - centre[3 * t]) + sq(py - centre[3 * t + 1]) + sq(pz - centre[3 * t + 2]));
+        if (dc - radius[t] > best) {
+            return best;
+        }
+        return Math.sqrt(squaredToTriangle(px, py, pz, t));
+    }
+
+    /** Squared distance to triangle t (Ericson's closest point by Voronoi regions). */
+    private double squaredToTriangle(double px, double py, double pz, int t) {
+        int ia = 3 * tri[3 * t];
+        int ib = 3 * tri[3 * t + 1];
+        int ic = 3 * tri[3 * t + 2];
+        double abx = v[ib] - v[ia], aby = v[ib + 1] - v[ia + 1], abz = v[ib + 2] - v[ia + 2];
+        double acx = v[ic] - v[ia], acy = v[ic + 1] - v[ia + 1], acz = v[ic + 2] - v[ia + 2];
+        double apx = px - v[ia], apy = py - v[ia + 1], apz = pz - v[ia + 2];
+        double d1 = abx * apx + aby * apy + abz * apz;
+        double d2 = acx * apx + acy * apy + acz * apz;
+        if (d1 <= 0 && d2 <= 0) {
+            return apx * apx + apy * apy + apz * apz; // vertex A
+        }
+        double bpx = px - v[ib], bpy = py - v[ib + 1], bpz = pz - v[ib + 2];
+        double d3 = abx * bpx + aby * bpy + abz * bpz;
+        double d4 = acx * bpx + acy * bpy + acz * bpz;
+        if (d3 >= 0 && d4 <= d3) {
+            return bpx * bpx + bpy * bpy + bpz * bpz; // vertex B
+        }
+        double vc = d1 * d4 - d3 * d2;
+        if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+            double s = d1 / (d1 - d3); // edge AB
+            return sq(apx - s * abx) + sq(apy - s * aby) + sq(apz - s * abz);
+        }
+        double cpx = px - v[ic], cpy = py - v[ic + 1], cpz = pz - v[ic + 2];
+        double d5 = abx * cpx + aby * cpy + abz * cpz;
+        double d6 = acx * cpx + acy * cpy + acz * cpz;
+        if (d6 >= 0 && d5 <= d6) {
+            return cpx * cpx + cpy * cpy + cpz * cpz; // vertex C
+        }
+        double vb = d5 * d2 - d1 * d6;
+        if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+            double w = d2 / (d2 - d6); // edge AC
+            return sq(apx - w * acx) + sq(apy - w * acy) + sq(apz - w * acz);
+        }
+        double va = d3 * d6 - d5 * d4;
+        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+            double w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge BC
+            double bcx = v[ic] - v[ib], bcy = v[ic + 1] - v[ib + 1], bcz = v[ic + 2] - v[ib + 2];
+            return sq(bpx - w * bcx) + sq(bpy - w * bcy) + sq(bpz - w * bcz);
+        }
+        double denom = 1 / (va + vb + vc); // inside the face
+        double s = vb * denom;
+        double w = vc * denom;
+        return sq(apx - s * abx - w * acx) + sq(apy - s * aby - w * acy) + sq(apz - s * abz - w * acz);
+    }
+
+    /** The value at the nearest-rank percentile q (0..100) of the values (sorted in place). */
+    public static double percentile(double[] values, double q) {
+        Arrays.sort(values);
+        int rank = (int) Math.ceil(q / 100 * values.length);
+        return values[Math.max(0, Math.min(values.length - 1, rank - 1))];
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+}

@@ -1,0 +1,68 @@
+package org.tensim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.bench.RealTimeSetting;
+import org.tensim.io.Json;
+
+/** diaphragm --realtime, the checked --dt and the real-time study's selection options. */
+class DiaphragmRealtimeOptionTest {
+    @TempDir
+    Path dir;
+
+    private static String[] run(String... args) {
+        return CommandLineTest.run(args);
+    }
+
+    private static void rejected(String expected, String... args) {
+        String[] r = run(args);
+        assertFalse(r[0].equals("0"), "exit code of " + String.join(" ", args));
+        assertTrue(r[2].contains(expected), r[2]);
+        assertFalse(r[2].contains("\tat "), "no stack trace: " + r[2]);
+    }
+
+    @Test
+    void badStepsAndSelectionsGetOneClearLine() {
+        rejected("--dt must be > 0 s (or 0 for the recommended step) and at most one breathing period (--period 4.0 s),"
+                + " got -1.0 s", "diaphragm", "--dt", "-1");
+        rejected("got 5.0 s", "diaphragm", "--dt", "5");
+        rejected("(--period 2.0 s), got 2.5 s", "diaphragm", "--period", "2", "--dt", "2.5");
+        rejected("--realtime chooses the integrator and the step itself", "diaphragm", "--realtime", "--dt", "0.01");
+        rejected("--realtime chooses the integrator and the step itself", "diaphragm", "--realtime", "--integrator",
+                "rk4");
+        rejected("--study-rings must be ascending ring counts of 4 or more, got [43, 10]", "diaphragm",
+                "--realtime-study", "--study-rings", "43,10");
+        rejected("--study-configs is not a regular expression", "diaphragm", "--realtime-study", "--study-configs",
+                "bdf2[");
+    }
+
+    @Test
+    void realtimeRunsTheMeasuredSettingAndNamesIt() throws Exception {
+        Path mesh = dir.resolve("coarse.obj");
+        String[] m = run("diaphragm-mesh", "--rings", "10", "--out", mesh.toString());
+        assumeTrue(m[0].equals("0") && Files.isRegularFile(mesh), "coarse mesh not generated: " + m[2]);
+        Path out = dir.resolve("out");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--realtime", "--seconds", "1.4", "--vtk-per-cycle",
+                "0", "--out", out.toString());
+        assumeTrue(!r[2].contains("HeadlessException") && !r[2].contains("AWTError"), "no AWT for the figures");
+        assertEquals("0", r[0], r[2]);
+        RealTimeSetting s = RealTimeSetting.DEFAULT_MESH;
+        Map<String, Object> summary = Json.readMap(out.resolve("summary.json"));
+        assertEquals(s.integrator(), summary.get("integrator"));
+        @SuppressWarnings("unchecked")
+        Map<String, Object> named = (Map<String, Object>) summary.get("realtime_setting");
+        assertEquals(s.integrator(), named.get("integrator"));
+        assertEquals(s.dtS(), ((Number) named.get("dt_s")).doubleValue(), 1e-12);
+        if (s.dtS() > 0) {
+            assertEquals(s.dtS(), ((Number) summary.get("dt_s")).doubleValue(), 1e-12);
+        }
+    }
+}
