@@ -78,26 +78,26 @@ public final class DiaphragmScene {
     private final Map<String, double[]> boxes;
     private final DiaphragmParameters parameters;
 
-    private DiaphragmScene(DiaphragmSceneBuilder b, Map<String, double[]> boxes) {
+    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes) {
         this.boxes = boxes;
-        this.parameters = b.p;
-        this.topology = b.t;
-        this.surfaces = b.surfaces;
-        this.labels = b.labels;
-        this.cage = b.cage;
-        this.apex = b.apex;
-        this.controls = b.controls;
-        this.cycle = b.cycle;
-        this.actionLines = b.lines;
-        this.attachedToRibs = b.attachedRibs;
-        this.attachedToCartilage = b.attachedCartilage;
-        this.attachedToSpine = b.attachedSpine;
-        this.attached = b.attached;
-        this.modes = b.modes;
+        this.parameters = b.parameters();
+        this.topology = b.topology();
+        this.surfaces = b.surfaces();
+        this.labels = b.labels();
+        this.cage = b.cage();
+        this.apex = b.apex();
+        this.controls = b.controls();
+        this.cycle = b.cycle();
+        this.actionLines = b.actionLines();
+        this.attachedToRibs = b.attachedToRibs();
+        this.attachedToCartilage = b.attachedToCartilage();
+        this.attachedToSpine = b.attachedToSpine();
+        this.attached = b.attached();
+        this.modes = b.modes();
         this.timeStep = TimeStepPolicy.recommend(Integrators.DEFAULT, ButcherTableau.MIDPOINT, true, modes).seconds();
-        this.tendonAreaFraction = b.tendonFraction;
-        this.firstAnchor = b.firstAnchor;
-        this.addedMass = b.addedMass;
+        this.tendonAreaFraction = b.tendonAreaFraction();
+        this.firstAnchor = b.firstAnchor();
+        this.addedMass = b.addedMassKg();
     }
 
     /**
@@ -118,19 +118,8 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines, BoundaryConditions bc) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, bc);
-        b.nodes();
-        b.tendon();
-        b.meshSprings();
-        b.rigidLinks();
-        b.thicknessSprings();
-        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
-        b.attach();
-        b.columnLinks();
-        b.muscle(lines == null ? defaultActionLines(surfaces) : lines);
-        b.support();
-        b.damping();
-        return new DiaphragmScene(b, boxes);
+        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, p, cycle, controls,
+                lines == null ? defaultActionLines(surfaces) : lines, bc), boxes);
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
@@ -13,50 +14,99 @@ import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.solver.stability.ModalBounds;
 
 /**
- * Builds a {@link DiaphragmScene} step by step, in this order: nodes, tendon, membrane and
- * bending springs, rigid links, thickness springs, cage, attachment, muscle, abdominal
- * support, damping (package-private; the formulas are documented on DiaphragmScene, the
- * attachment band on {@link AttachmentBand}, the muscle's load on {@link MusclePressure}).
+ * Builds a {@link DiaphragmScene}: {@link #build} runs the named steps in their order (nodes,
+ * tendon, membrane and bending springs, rigid links, thickness springs, cage, attachment,
+ * thickness columns, muscle, abdominal support, damping) on private state, and hands everything
+ * the scene holds back as one {@link Parts} record. The formulas are documented on
+ * DiaphragmScene, the attachment band on {@link AttachmentBand}, the muscle's load on
+ * {@link MusclePressure}. The few fields left package-visible are the attachment strategies'
+ * view of the build ({@link AttachmentBand}, {@link ThresholdAttachment}): the mesh, the
+ * topology and springs being built, the node areas and the cage, and what they record.
  */
 final class DiaphragmSceneBuilder {
+    /**
+     * What the steps produce: everything a {@link DiaphragmScene} holds.
+     *
+     * @param parameters         the tissue parameters it was built with
+     * @param topology           nodes, springs and rigid links (diaphragm, cage, anchors)
+     * @param labels             tissue label per diaphragm node ({@link DiaphragmScene#TENDON}, MUSCLE)
+     * @param apex               the apex node (highest upper-surface node)
+     * @param actionLines        the muscle's action lines
+     * @param attachedToRibs     diaphragm nodes attached to ribs
+     * @param attachedToCartilage diaphragm nodes attached to cartilage or sternum
+     * @param attachedToSpine    diaphragm nodes attached to the spine
+     * @param attached           per diaphragm node: attached to ribs, cartilage, sternum or spine
+     * @param modes              bounds on the highest angular frequency, rad/s
+     * @param tendonAreaFraction tendon's share of the upper surface's area
+     * @param firstAnchor        id of the first anchor node (-1: none)
+     * @param addedMassKg        mass added by the mass floor, kg
+     */
+    record Parts(DiaphragmParameters parameters, Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage,
+            int apex, DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
+            int attachedToCartilage, int attachedToSpine, boolean[] attached, ModalBounds modes,
+            double tendonAreaFraction, int firstAnchor, double addedMassKg) {
+    }
 
-    final TwoSurfaces surfaces;
+    /** Runs every step, in its order, and returns what the scene holds. */
+    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p, BreathingCycle cycle,
+            DiaphragmControls controls, List<ActionLines.Line> actionLines, BoundaryConditions bc) {
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, bc);
+        b.nodes();
+        b.tendon();
+        b.meshSprings();
+        b.rigidLinks();
+        b.thicknessSprings();
+        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+        b.attach();
+        b.columnLinks();
+        b.muscle(actionLines);
+        b.support();
+        b.damping();
+        return new Parts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
+                b.attachedCartilage, b.attachedSpine, b.attached, b.modes, b.tendonFraction, b.firstAnchor,
+                b.addedMass);
+    }
+
+    // Inputs.
+    private final TwoSurfaces surfaces;
     final TriangleMesh mesh;
     final DiaphragmParameters p;
-    final BreathingCycle cycle;
-    final DiaphragmControls controls;
-    final BoundaryConditions bc;
+    private final BreathingCycle cycle;
+    private final DiaphragmControls controls;
+    private final BoundaryConditions bc;
+    final int nv;
+    private final double thickness;
+    /** Smallest node mass, as a fraction of the median node's. */
+    private static final double MASS_FLOOR = 0.3;
+
+    // Built by the steps; the attachment strategies read and extend the package-visible ones.
     final Topology t = new Topology();
     final SpringList springs = new SpringList();
-    final int nv;
-    final double thickness;
-    /** Smallest node mass, as a fraction of the median node's. */
-    static final double MASS_FLOOR = 0.3;
-    double addedMass;
     double[] area;
-    int[] labels;
-    boolean[] linked;
-    Set<Long> linkPairs = new HashSet<>();
-    ShellNetwork network;
-    final List<int[]> pendingColumns = new ArrayList<>();
     RibCage cage;
-    int apex = -1;
-    ActionLines lines;
+    boolean[] attached;
     int attachedRibs;
     int attachedCartilage;
     int attachedSpine;
-    boolean[] attached;
-    double omegaMax;
-    ModalBounds modes;
-    double tendonFraction;
+    private double addedMass;
+    private int[] labels;
+    private boolean[] linked;
+    private final Set<Long> linkPairs = new HashSet<>();
+    private ShellNetwork network;
+    private final List<int[]> pendingColumns = new ArrayList<>();
+    private int apex = -1;
+    private ActionLines lines;
+    private double omegaMax;
+    private ModalBounds modes;
+    private double tendonFraction;
     /** Offset of the tendon plane: points x with {@code normal . x >= tendonCut} are tendon, m. */
-    double tendonCut;
-    int firstAnchor = -1;
+    private double tendonCut;
+    private int firstAnchor = -1;
     /** Zero-length springs to anchor nodes (abdominal support, attachment band) and their stiffness, N/m. */
-    final List<int[]> supportSprings = new ArrayList<>();
-    final List<Double> supportK = new ArrayList<>();
+    private final List<int[]> supportSprings = new ArrayList<>();
+    private final List<Double> supportK = new ArrayList<>();
 
-    DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl,
+    private DiaphragmSceneBuilder(TwoSurfaces s, DiaphragmParameters p, BreathingCycle c, DiaphragmControls ctl,
             BoundaryConditions bc) {
         this.bc = bc;
         this.surfaces = s;
@@ -68,7 +118,7 @@ final class DiaphragmSceneBuilder {
         this.thickness = s.thicknessM();
     }
 
-    void nodes() {
+    private void nodes() {
         area = SurfaceGeometry.vertexAreas(mesh);
         // Mass floor: a few vertices of sliver triangles (real meshes) would carry almost no mass and
         // set the highest frequency alone; their mass is raised to MASS_FLOOR times the median's.
@@ -86,7 +136,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void tendon() {
+    private void tendon() {
         Vec3 n = p.tendonNormal();
         double cut;
         if (p.tendonPoint() != null) {
@@ -137,7 +187,7 @@ final class DiaphragmSceneBuilder {
     }
 
     /** The faces' springs, by the tissue model (see {@link ShellNetwork}). */
-    void meshSprings() {
+    private void meshSprings() {
         network = new ShellNetwork(surfaces, area, this::young,
                 new ShellMaterial(p.muscleYoungPa(), p.poissonRatio(), thickness, p.densityKgPerM3()),
                 p.tissueModel(), p.bendingFactor());
@@ -148,7 +198,7 @@ final class DiaphragmSceneBuilder {
      * The struts across the thickness ({@link ShellNetwork#columnPairs}): the tendon's, made now; in the
      * material model also the muscle's, made after the attachment ({@link #columnLinks}).
      */
-    void rigidLinks() {
+    private void rigidLinks() {
         linked = new boolean[nv];
         boolean all = p.tissueModel().rigidColumns();
         for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
@@ -168,7 +218,7 @@ final class DiaphragmSceneBuilder {
      * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
      * {@code E A / L} instead.
      */
-    void columnLinks() {
+    private void columnLinks() {
         for (int[] c : pendingColumns) {
             Node a = t.node(c[0]);
             Node b = t.node(c[1]);
@@ -181,11 +231,11 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void thicknessSprings() {
+    private void thicknessSprings() {
         network.thickness(springs, linkPairs, linked);
     }
 
-    void attach() {
+    private void attach() {
         attached = new boolean[nv];
         if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
             AttachmentBand.attach(this, bc);
@@ -227,7 +277,7 @@ final class DiaphragmSceneBuilder {
         supportK.add(k);
     }
 
-    void muscle(List<ActionLines.Line> l) {
+    private void muscle(List<ActionLines.Line> l) {
         lines = new ActionLines(l, cycle, controls);
         double[] w = MusclePressure.weights(mesh, lines, bc.muscleLoad(), p.tendonNormal(), tendonCut, labels, area);
         for (int v = 0; v < nv; v++) {
@@ -238,7 +288,7 @@ final class DiaphragmSceneBuilder {
     }
 
     /** Anchors (fixed nodes, added last) and zero-length springs K A_i for the free lower-surface nodes. */
-    void support() {
+    private void support() {
         markFirstAnchor();
         if (p.abdominalSupportPaPerM() == 0) {
             return;
@@ -252,7 +302,7 @@ final class DiaphragmSceneBuilder {
         }
     }
 
-    void damping() {
+    private void damping() {
         omegaMax = springs.omegaMaxBound(t, supportSprings, supportK);
         double beta = 2 * p.highDampingRatio() / omegaMax;
         springs.addTo(t, beta);
