@@ -9,7 +9,6 @@ import org.tensim.calibration.CalibrationReader;
 import org.tensim.calibration.CalibrationSpec;
 import org.tensim.calibration.SyntheticTarget;
 import org.tensim.io.Json;
-import org.tensim.sweep.Engines;
 import org.tensim.sweep.SpecReader;
 import org.tensim.sweep.SweepEngine;
 import picocli.CommandLine.Command;
@@ -33,14 +32,8 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/calibrate/SPEC-NAME)")
     Path out;
 
-    @Option(names = "--engine", paramLabel = "local|spark", description = "sweep engine (default: ${DEFAULT-VALUE})")
-    String engine = "local";
-
-    @Option(names = "--master", paramLabel = "URL", description = "Spark master (spark only; default local[*])")
-    String master;
-
-    @Option(names = "--workers", paramLabel = "N", description = "local engine: runs at once (default: 0, one per core)")
-    int workers = 0;
+    @picocli.CommandLine.Mixin
+    EngineOptions engines = new EngineOptions();
 
     @Option(names = "--make-target", paramLabel = "FILE.obj",
             description = "instead of calibrating: run the spec's scene at --truth and write its surface at --phase-s,"
@@ -72,19 +65,9 @@ public final class CalibrateCommand implements Callable<Integer> {
         } catch (SpecReader.SpecException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
-        if (workers < 0) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--workers must be 0 (one per core) or more, got " + workers);
-        }
         Path dir = out != null ? out : Path.of("out", "calibrate", SweepCommand.defaultOut(specFile).getFileName()
                 .toString());
-        SweepEngine e;
-        try {
-            e = Engines.create(engine, master, workers);
-        } catch (IllegalArgumentException ex) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), ex.getMessage());
-        }
-        try (e) {
+        try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("calibrating " + s.names() + " of " + s.setup().geometry() + " on " + e.describe()
                     + " into " + dir);
             Calibration.Result r = Calibration.run(s, e, dir, System.out);

@@ -22,6 +22,7 @@ import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -121,6 +122,12 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "share of the upper surface's area given to the tendon when no --tendon-point is given"
                     + " (default: ${DEFAULT-VALUE})")
     double tendonFraction = DiaphragmParameters.defaults().tendonAreaFraction();
+
+    @Option(names = "--tissue-model", paramLabel = "NAME",
+            description = "how the springs come from the tissue: material (identified from E, nu and t: Kirchhoff"
+                    + " bending, rigid columns) or paper (the model the paper's figures were reproduced with)"
+                    + " (default: ${DEFAULT-VALUE}; docs/diaphragm.md)")
+    String tissueModel = DiaphragmParameters.defaults().tissueModel().name().toLowerCase();
 
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
             description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
@@ -255,7 +262,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
         MeshUnits u = MeshUnits.parse(units);
         DiaphragmParameters p = DiaphragmParameters.defaults().withAttachThreshold(attachMm * 1e-3)
-                .withTendonAreaFraction(tendonFraction);
+                .withTendonAreaFraction(tendonFraction).withTissueModel(TissueModel.parse(tissueModel));
         if (tendonNormal != null || tendonPointMm != null) {
             Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
             Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);

@@ -3,7 +3,6 @@ package org.tensim.app;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.tensim.io.Json;
-import org.tensim.sweep.Engines;
 import org.tensim.sweep.SpecReader;
 import org.tensim.sweep.Sweep;
 import org.tensim.sweep.SweepEngine;
@@ -28,17 +27,8 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/sweep/SPEC-NAME)")
     Path out;
 
-    @Option(names = "--engine", paramLabel = "local|spark",
-            description = "local: all cores, one run per core (default); spark: Spark tasks (docs/scaling.md)")
-    String engine = "local";
-
-    @Option(names = "--master", paramLabel = "URL",
-            description = "Spark master, e.g. local[2] or spark://host:7077 (default: local[*]); spark only")
-    String master;
-
-    @Option(names = "--workers", paramLabel = "N",
-            description = "local engine: points run at once (default: 0, one per core)")
-    int workers = 0;
+    @picocli.CommandLine.Mixin
+    EngineOptions engines = new EngineOptions();
 
     @Override
     public Integer call() throws Exception {
@@ -48,26 +38,14 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (SpecReader.SpecException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
-        if (workers < 0) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--workers must be 0 (one per core) or more, got " + workers);
-        }
         Path dir = out != null ? out : defaultOut(specFile);
-        try (SweepEngine e = create()) {
+        try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("sweep of " + s.setup().geometry() + " on " + e.describe() + " into " + dir);
             Sweep.Outcome o = Sweep.run(s, dir, e, System.console() != null, System.out);
             System.out.println("wrote " + dir.resolve("results.csv") + ", charts/, sweep.json");
             System.out.println(Json.line(o.summary()));
         }
         return 0;
-    }
-
-    private SweepEngine create() {
-        try {
-            return Engines.create(engine, master, workers);
-        } catch (IllegalArgumentException e) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
     }
 
     /** out/sweep/NAME for a spec file NAME.json (also used by calibrate: out/calibrate/NAME). */

@@ -82,7 +82,10 @@ public final class Progress implements AutoCloseable {
         if (mode == Mode.BAR) {
             try {
                 if (bar == null) {
+                    // Created late (after the quiet time): it starts from where the run is, so its ETA is right.
                     bar = new ProgressBarBuilder().setTaskName(task).setInitialMax(BAR_TICKS)
+                            .startsFrom(Math.round(BAR_TICKS * t / totalS), java.time.Duration.ofNanos(
+                                    System.nanoTime() - start))
                             .setStyle(ProgressBarStyle.ASCII).setUpdateIntervalMillis(500).continuousUpdate()
                             .setConsumer(new ConsoleProgressBarConsumer(err)).build();
                 }

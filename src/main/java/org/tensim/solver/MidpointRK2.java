@@ -21,8 +21,10 @@ import org.tensim.solver.stability.LinearStability;
  *
  * <p>Written out by hand as the readable reference of the paper's method; it is
  * the generic {@code integrators.ExplicitRungeKutta} on {@link #TABLEAU} to the last
- * bit (tested), and was measured faster than it (docs/performance.md, JMH
- * {@code IntegratorStepBenchmark}). Its two node loops run through
+ * bit (tested). Kept because the generic loop measured 0.8 % to 4.6 % slower in CPU
+ * time per step (4 of 5 alternating rounds, lattice n = 31); JMH
+ * ({@code IntegratorStepBenchmark}) could not separate the two on the loaded machine
+ * of that day (docs/performance.md). Its two node loops run through
  * {@link ForceModel#nodeLoops()}.
  */
 public final class MidpointRK2 implements Integrator {

@@ -100,7 +100,7 @@ public final class SpecReader {
         String file = null;
         String units = "mm";
         double thicknessMm = 2.5;
-        int rings = org.tensim.experiment.diaphragm.ResolutionPick.read().rings(); // the GUI's default resolution
+        int rings = GuiScenes.Source.defaults().rings(); // the GUI's default resolution
         if (mesh != null) {
             if (!scene.equals("diaphragm")) {
                 throw fail("mesh", mesh, "no mesh: scene '" + scene + "' is built in");

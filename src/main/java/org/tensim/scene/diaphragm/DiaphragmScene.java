@@ -29,21 +29,17 @@ import org.tensim.solver.stability.TimeStepPolicy;
  * almost no mass and alone set the stable step ({@link #addedMassKg()} says how much
  * this adds).
  *
- * <p><b>Springs.</b> Every mesh edge is a spring of stiffness
- * {@code k_e = E (t / 2) sum(A_T) / |e|^2} over the triangles T on the edge (Van
- * Gelder 1998's membrane formula; for an equilateral triangle it gives
- * {@code sqrt(3)/4 E h} per triangle, Lloyd, Szekely and Harders 2007), E of the
- * muscle or, when both ends are tendon, of the tendon (in-plane: the tendon's fibres
- * run in the surface). Across the thickness
- * (computed at start, as the paper does) each upper node u is joined to its nearest
- * lower node and to the nearest lower nodes of its upper neighbours (diagonals that
- * resist the faces sliding over each other); these n_u springs share the node's
- * column, {@code k = E_muscle A_u / (n_u L)} (in the tendon too, whose thickness the
- * rigid links hold).
+ * <p><b>Springs</b> ({@link ShellNetwork}, by the {@link TissueModel}). Material model (default):
+ * identified from E, nu and t element by element ({@link org.tensim.scene.shell.SandwichShell}): the
+ * faces' edge springs carry the share of Van Gelder's membrane ({@code E t sum(A_T) / |e|^2}) that gives
+ * Kirchhoff's bending rigidity, the prisms' diagonals the rest, and every column across the thickness is
+ * a rigid link. Paper model: each face {@code E (t/2) sum(A_T) / |e|^2}, folding springs, and columns
+ * plus diagonals sharing {@code E_muscle A_u / L}. E is the muscle's or, when both ends are tendon, the
+ * tendon's.
  *
  * <p><b>Tendon and rigid links.</b> Nodes on the side of the plane that its normal
  * points to are tendon. Heuristic for the rigid links: candidate pairs are each
- * tendon node with its nearest node on the other surface (also tendon); they are
+ * tendon node (each node, in the material model) with its nearest node on the other surface; they are
  * taken shortest first, each node at most once, and only when their length is
  * 0.3 to 2.5 times the thickness. Each node therefore carries at most one rigid
  * link: the struts are disjoint, which is the tensegrity principle ("compression

@@ -43,7 +43,8 @@ public class ExplicitRungeKutta implements Integrator {
     private final int[][] terms;
     /** Per stage: the integer weight beta_j (b_j = beta_j / D). */
     private final double[] beta;
-    private final boolean onlyLastStage;
+    /** The stages with a non-zero weight, ascending. */
+    private final int[] weighted;
     private final int[] forceSlot;
     private final int slots;
     private final NodeLoops.Body stageBody = this::stageRange;
@@ -70,13 +71,11 @@ public class ExplicitRungeKutta implements Integrator {
         int st = tableau.stages();
         terms = new int[st][];
         beta = new double[st];
-        int weighted = 0;
         for (int i = 0; i < st; i++) {
             terms[i] = tableau.terms(i);
             beta[i] = tableau.weight(i);
-            weighted += beta[i] != 0 ? 1 : 0;
         }
-        onlyLastStage = weighted == 1 && beta[st - 1] == 1;
+        weighted = java.util.stream.IntStream.range(0, st).filter(j -> beta[j] != 0).toArray();
         forceSlot = new int[st];
         int next = 0;
         for (int j = 0; j < st; j++) {
@@ -207,30 +206,62 @@ public class ExplicitRungeKutta implements Integrator {
 
     /** The end of the step for the free nodes of [lo, hi): x += (h / D) sum beta V, v += ... w F. */
     private void finalRange(int lo, int hi) {
+        if (weighted.length > 4) {
+            finalRangeGeneral(lo, hi);
+            return;
+        }
+        // Up to four weighted stages (every classic method): the arrays in locals and the
+        // stage count as loop-invariant tests, which the JIT hoists out of the loop.
         final double[] x = s.x;
         final double[] v = s.v;
         final double[] im = s.invMass;
-        final double[] beta = this.beta;
         final double hb = h / tableau.weightDenominator();
-        final int stages = beta.length;
-        final int last = stages - 1;
-        if (onlyLastStage) {
-            // Only the last stage counts (Euler, the midpoint rule): x += h V_s, v += h w F_s.
-            final double[] vl = vs[last];
-            final double[] fl = fs[forceSlot[last]];
-            for (int i = lo; i < hi; i++) {
-                final double w = im[i];
-                if (w == 0) {
-                    continue;
-                }
-                for (int k = 3 * i; k < 3 * i + 3; k++) {
-                    final double sx = vl[k];
-                    x[k] += hb * sx;
-                    v[k] += hb * w * fl[k];
-                }
+        final boolean factored = tableau.equalWeights();
+        final int m = weighted.length;
+        final double[] va = vs[weighted[0]];
+        final double[] fa = fs[forceSlot[weighted[0]]];
+        final double ba = beta[weighted[0]];
+        final double[] vb = m > 1 ? vs[weighted[1]] : null;
+        final double[] fb = m > 1 ? fs[forceSlot[weighted[1]]] : null;
+        final double bb = m > 1 ? beta[weighted[1]] : 0;
+        final double[] vc = m > 2 ? vs[weighted[2]] : null;
+        final double[] fc = m > 2 ? fs[forceSlot[weighted[2]]] : null;
+        final double bc = m > 2 ? beta[weighted[2]] : 0;
+        final double[] vd = m > 3 ? vs[weighted[3]] : null;
+        final double[] fd = m > 3 ? fs[forceSlot[weighted[3]]] : null;
+        final double bd = m > 3 ? beta[weighted[3]] : 0;
+        for (int i = lo; i < hi; i++) {
+            final double w = im[i];
+            if (w == 0) {
+                continue;
             }
-            return;
+            for (int k = 3 * i; k < 3 * i + 3; k++) {
+                double sx = ba * va[k];
+                double sf = factored ? fa[k] : ba * w * fa[k];
+                if (m > 1) {
+                    sx += bb * vb[k];
+                    sf += factored ? fb[k] : bb * w * fb[k];
+                }
+                if (m > 2) {
+                    sx += bc * vc[k];
+                    sf += factored ? fc[k] : bc * w * fc[k];
+                }
+                if (m > 3) {
+                    sx += bd * vd[k];
+                    sf += factored ? fd[k] : bd * w * fd[k];
+                }
+                x[k] += hb * sx;
+                v[k] += factored ? hb * w * sf : hb * sf;
+            }
         }
+    }
+
+    /** As {@link #finalRange} for any number of weighted stages. */
+    private void finalRangeGeneral(int lo, int hi) {
+        final double[] x = s.x;
+        final double[] v = s.v;
+        final double[] im = s.invMass;
+        final double hb = h / tableau.weightDenominator();
         final boolean factored = tableau.equalWeights();
         for (int i = lo; i < hi; i++) {
             final double w = im[i];
@@ -240,18 +271,13 @@ public class ExplicitRungeKutta implements Integrator {
             for (int k = 3 * i; k < 3 * i + 3; k++) {
                 double sx = 0;
                 double sf = 0;
-                boolean first = true;
-                for (int j = 0; j < stages; j++) {
-                    final double b = beta[j];
-                    if (b == 0) {
-                        continue;
-                    }
+                for (int t = 0; t < weighted.length; t++) {
+                    final int j = weighted[t];
                     final double fj = fs[forceSlot[j]][k];
-                    final double bv = b * vs[j][k];
-                    final double bf = factored ? fj : b * w * fj;
-                    sx = first ? bv : sx + bv;
-                    sf = first ? bf : sf + bf;
-                    first = false;
+                    final double bv = beta[j] * vs[j][k];
+                    final double bf = factored ? fj : beta[j] * w * fj;
+                    sx = t == 0 ? bv : sx + bv;
+                    sf = t == 0 ? bf : sf + bf;
                 }
                 x[k] += hb * sx;
                 v[k] += factored ? hb * w * sf : hb * sf;
