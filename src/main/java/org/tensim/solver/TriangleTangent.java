@@ -25,6 +25,7 @@ public final class TriangleTangent implements ExtraStiffness {
     private final double[] stress; // per element: s00, s01, s11
     private final double[] corner = new double[9];
     private final double[] cornerOut = new double[9];
+    private final double[] scratchF = new double[6];
     private final double[] scratchU = new double[3];
     private final double[] scratchW = new double[3];
 
@@ -43,7 +44,7 @@ public final class TriangleTangent implements ExtraStiffness {
      * @param psd keep only the positive part of the stress in the geometric term (K positive semi-definite)
      */
     public void linearise(double[] px, boolean psd) {
-        final double[] fr = new double[6];
+        final double[] fr = scratchF;
         for (int e = 0; e < s.triangleCount(); e++) {
             TriangleKernels.deformationGradient(s.triP3, s.triQ3, s.triRest, e, px, fr);
             System.arraycopy(fr, 0, grad, 6 * e, 6);
@@ -94,6 +95,11 @@ public final class TriangleTangent implements ExtraStiffness {
      * dropped); null for the full layout (3 x node id). Allocation-free.
      */
     public void multiplyAdd(double[] p, double[] out, int[] offset) {
+        multiplyAdd(p, out, offset, 1);
+    }
+
+    /** out += scale K p, offsets as in {@link #multiplyAdd(double[], double[], int[])}. */
+    public void multiplyAdd(double[] p, double[] out, int[] offset, double scale) {
         final double[] dy = corner;
         final double[] g = cornerOut;
         for (int e = 0; e < s.triangleCount(); e++) {
@@ -115,14 +121,64 @@ public final class TriangleTangent implements ExtraStiffness {
                 int oq = dof(s.triQ[3 * e + k], offset);
                 for (int d = 0; d < 3; d++) {
                     if (op >= 0) {
-                        out[op + d] += 0.5 * g[3 * k + d];
+                        out[op + d] += 0.5 * scale * g[3 * k + d];
                     }
                     if (oq >= 0) {
-                        out[oq + d] += 0.5 * g[3 * k + d];
+                        out[oq + d] += 0.5 * scale * g[3 * k + d];
                     }
                 }
             }
         }
+    }
+
+    /** The state this tangent belongs to. */
+    public SystemState state() {
+        return s;
+    }
+
+    /**
+     * diag += scale times the diagonal of K (full layout, 3 per node), for a Jacobi preconditioner.
+     * Costs nine element products per element.
+     */
+    public void addDiagonal(double[] diag, double scale) {
+        final double[] dy = corner;
+        final double[] g = cornerOut;
+        for (int e = 0; e < s.triangleCount(); e++) {
+            for (int h = 0; h < 6; h++) {
+                int n = h < 3 ? s.triP[3 * e + h] : s.triQ[3 * e + h - 3];
+                if (!firstAppearance(e, h, n)) {
+                    continue; // each node of the element once
+                }
+                for (int d = 0; d < 3; d++) {
+                    // A unit displacement of node n along d moves each corner it belongs to by 1/2 per share.
+                    java.util.Arrays.fill(dy, 0);
+                    for (int c = 0; c < 3; c++) {
+                        dy[3 * c + d] = weight(e, c, n);
+                    }
+                    cornerProduct(e, dy, g);
+                    double sum = 0;
+                    for (int c = 0; c < 3; c++) {
+                        sum += weight(e, c, n) * g[3 * c + d];
+                    }
+                    diag[3 * n + d] += scale * sum;
+                }
+            }
+        }
+    }
+
+    /** How much of node n's displacement corner c of element e takes: 0, 1/2 or 1. */
+    private double weight(int e, int c, int n) {
+        return (s.triP[3 * e + c] == n ? 0.5 : 0) + (s.triQ[3 * e + c] == n ? 0.5 : 0);
+    }
+
+    private boolean firstAppearance(int e, int h, int n) {
+        for (int j = 0; j < h; j++) {
+            int m = j < 3 ? s.triP[3 * e + j] : s.triQ[3 * e + j - 3];
+            if (m == n) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static int dof(int node, int[] offset) {
