@@ -69,7 +69,7 @@ public final class LinearStatics {
         }
         TriangleTangent triangles = t.triangles().isEmpty() ? null : new TriangleTangent(SystemState.compile(t));
         if (triangles != null) {
-            triangles.addDiagonal(diag, 1);
+            triangles.addDiagonal(diag, 1, 0);
         }
         for (int i = 0; i < n; i++) {
             if (fixed[i] || diag[i] == 0) {

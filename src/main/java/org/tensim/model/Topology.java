@@ -79,7 +79,7 @@ public final class Topology {
      */
     public TriangleElement addTriangle(int a, int b, int c, double thicknessM, double youngPa, double poisson) {
         int[] corners = {a, b, c};
-        return addTriangle(corners, corners, thicknessM, youngPa, poisson);
+        return addTriangle(corners, corners, thicknessM, youngPa, poisson, 0);
     }
 
     /**
@@ -89,8 +89,10 @@ public final class Topology {
      * @param thicknessM t, m (&gt; 0)
      * @param youngPa    Young's modulus E, Pa (&gt; 0)
      * @param poisson    Poisson's ratio nu, in (-1, 0.5]
+     * @param dampingS   stiffness-proportional (Kelvin-Voigt) damping time beta, s (&gt;= 0; 0 undamped)
      */
-    public TriangleElement addTriangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
+    public TriangleElement addTriangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson,
+            double dampingS) {
         if (p.length != 3 || q.length != 3) {
             throw new IllegalArgumentException("a triangle element needs 3 corners, got " + p.length + " and "
                     + q.length + " node ids");
@@ -101,7 +103,7 @@ public final class Topology {
             Check.index("triangle corner node", q[k], nodes.size());
             rest[k] = nodes.get(p[k]).position().plus(nodes.get(q[k]).position()).times(0.5);
         }
-        TriangleElement e = new TriangleElement(p, q, rest, thicknessM, youngPa, poisson);
+        TriangleElement e = new TriangleElement(p, q, rest, thicknessM, youngPa, poisson, dampingS);
         triangles.add(e);
         return e;
     }

@@ -22,6 +22,11 @@ package org.tensim.model;
  * For small strains it is the linear constant-strain triangle, so a uniform strain is represented
  * exactly on any triangle and for any nu (the patch test); it is invariant under rigid motions.
  * The rest shape is the corners' positions when the element is made.
+ *
+ * <p>Damping (optional) is Kelvin-Voigt, proportional to the stiffness as a spring's axial damping
+ * {@code c = beta k} is: the viscous stress {@code beta (2 mu dE/dt + lambda tr(dE/dt) I)} is added
+ * to S, with {@code dE/dt = sym(F^T dF/dt)}; it dissipates {@code beta (2 mu |dE/dt|^2 + lambda
+ * tr(dE/dt)^2) A t >= 0} and does not resist rigid motions.
  */
 public final class TriangleElement {
     private final int[] p;
@@ -31,6 +36,7 @@ public final class TriangleElement {
     private final double thicknessM;
     private final double youngPa;
     private final double poisson;
+    private final double dampingS;
 
     /**
      * @param p          first node of each corner (3 ids)
@@ -39,8 +45,10 @@ public final class TriangleElement {
      * @param thicknessM t, m (&gt; 0)
      * @param youngPa    E, Pa (&gt; 0)
      * @param poisson    nu, in (-1, 0.5]
+     * @param dampingS   beta, s (&gt;= 0): the viscous stress's factor over the elastic one's
      */
-    TriangleElement(int[] p, int[] q, Vec3[] rest, double thicknessM, double youngPa, double poisson) {
+    TriangleElement(int[] p, int[] q, Vec3[] rest, double thicknessM, double youngPa, double poisson,
+            double dampingS) {
         String name = "triangle element " + p[0] + "-" + p[1] + "-" + p[2];
         this.thicknessM = Check.positive(name + " thickness", "m", thicknessM);
         this.youngPa = Check.positive(name + " Young's modulus", "Pa", youngPa);
@@ -49,6 +57,7 @@ public final class TriangleElement {
                     + poisson);
         }
         this.poisson = poisson;
+        this.dampingS = Check.nonNegative(name + " damping time beta", "s", dampingS);
         this.p = p.clone();
         this.q = q.clone();
         Vec3 e1 = rest[1].minus(rest[0]);
@@ -98,6 +107,11 @@ public final class TriangleElement {
 
     public double poisson() {
         return poisson;
+    }
+
+    /** Stiffness-proportional damping time beta, s (0: undamped). */
+    public double dampingS() {
+        return dampingS;
     }
 
     /** {@code A t mu}, J (N m): the shear modulus times the element's volume. */

@@ -105,12 +105,14 @@ public final class ForceModel {
         }
         // A replacement spring pass (e.g. multi-threaded) covers springs only: the triangles are
         // added here, serially, for every integrator.
-        triangles(px, f);
+        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
+                px, s.triangleDamping ? pv : null, f);
     }
 
-    /** Membrane triangle forces only, added to f. */
+    /** Membrane triangle elastic forces only (no damping), added to f. */
     public void triangles(double[] px, double[] f) {
-        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triangleCount(), px, f);
+        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
+                px, null, f);
     }
 
     /** Elastic energy of the membrane triangles at positions px, J. */

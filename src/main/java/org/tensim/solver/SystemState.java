@@ -59,6 +59,8 @@ public final class SystemState {
     /** {@code A t mu} and {@code A t lambda} (plane stress) per element, J. */
     public final double[] triMu;
     public final double[] triLambda;
+    /** Kelvin-Voigt damping time beta per element, s (0: undamped). */
+    public final double[] triDamping;
 
     /** Rigid link end points (node ids). */
     public final int[] linkA;
@@ -82,6 +84,8 @@ public final class SystemState {
 
     /** True when at least one spring has axial damping (selects the force loop). */
     boolean axialDamping;
+    /** True when at least one membrane triangle is damped. */
+    boolean triangleDamping;
 
     double gx;
     double gy;
@@ -153,6 +157,7 @@ public final class SystemState {
         triRest = new double[4 * tris.size()];
         triMu = new double[tris.size()];
         triLambda = new double[tris.size()];
+        triDamping = new double[tris.size()];
         for (int e = 0; e < tris.size(); e++) {
             TriangleElement te = tris.get(e);
             for (int k = 0; k < 3; k++) {
@@ -166,6 +171,8 @@ public final class SystemState {
             }
             triMu[e] = te.muVolume();
             triLambda[e] = te.lambdaVolume();
+            triDamping[e] = te.dampingS();
+            triangleDamping |= te.dampingS() != 0;
         }
 
         List<RigidLink> l = t.rigidLinks();
@@ -252,7 +259,7 @@ public final class SystemState {
 
     /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
     public boolean velocityDependentForces() {
-        return axialDamping || viscousDamping != 0;
+        return axialDamping || triangleDamping || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -269,6 +276,26 @@ public final class SystemState {
     public void setSpringStiffness(int s, double k) {
         Check.index("spring", s, springK.length);
         springK[s] = Check.nonNegative("spring " + s + " stiffness", "N/m", k);
+        parameterVersion++;
+        criticalTimeStep = null;
+    }
+
+    /**
+     * Gives membrane triangle e the constants of {@code te} (moduli, thickness, damping; its corners
+     * and rest shape must be the same); takes effect at the next force pass.
+     */
+    public void setTriangleConstants(int e, TriangleElement te) {
+        Check.index("triangle", e, triMu.length);
+        for (int k = 0; k < 3; k++) {
+            if (te.p(k) != triP[3 * e + k] || te.q(k) != triQ[3 * e + k]) {
+                throw new IllegalArgumentException("triangle " + e + " has other corners in the new constants: only"
+                        + " constants may change, not the topology");
+            }
+        }
+        triMu[e] = te.muVolume();
+        triLambda[e] = te.lambdaVolume();
+        triDamping[e] = te.dampingS();
+        triangleDamping |= te.dampingS() != 0;
         parameterVersion++;
         criticalTimeStep = null;
     }

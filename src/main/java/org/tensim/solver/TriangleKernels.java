@@ -18,9 +18,14 @@ public final class TriangleKernels {
     private TriangleKernels() {
     }
 
-    /** Adds the elastic forces (N) of elements [0, count) at positions x (m) to f. */
-    public static void forces(int[] pp, int[] qq, double[] r, double[] mu, double[] la, int count, double[] x,
-            double[] f) {
+    /**
+     * Adds the forces (N) of elements [0, count) at positions x (m) to f: elastic, and when
+     * {@code v} is not null the Kelvin-Voigt damping of the elements whose {@code beta[e]} (s) is
+     * not 0, at velocities v (m/s): {@code S += beta (2 mu dE/dt + lambda tr(dE/dt) I)},
+     * {@code dE/dt = sym(F^T dF/dt)}.
+     */
+    public static void forces(int[] pp, int[] qq, double[] r, double[] mu, double[] la, double[] beta, int count,
+            double[] x, double[] v, double[] f) {
         for (int e = 0; e < count; e++) {
             final int o = 3 * e;
             final int p0 = pp[o];
@@ -47,12 +52,32 @@ public final class TriangleKernels {
             final double wy = ay * r01 + by * r11;
             final double wz = az * r01 + bz * r11;
             final double m2 = 2 * mu[e];
-            final double e00 = 0.5 * (ux * ux + uy * uy + uz * uz - 1);
-            final double e11 = 0.5 * (wx * wx + wy * wy + wz * wz - 1);
+            double e00 = 0.5 * (ux * ux + uy * uy + uz * uz - 1);
+            double e11 = 0.5 * (wx * wx + wy * wy + wz * wz - 1);
+            double e01 = 0.5 * (ux * wx + uy * wy + uz * wz);
+            final double b = v == null ? 0 : beta[e];
+            if (b != 0) {
+                // Strain rate from the corners' velocities, added as beta dE/dt (same moduli).
+                final double vax = 0.5 * (v[p1] + v[q1] - v[p0] - v[q0]);
+                final double vay = 0.5 * (v[p1 + 1] + v[q1 + 1] - v[p0 + 1] - v[q0 + 1]);
+                final double vaz = 0.5 * (v[p1 + 2] + v[q1 + 2] - v[p0 + 2] - v[q0 + 2]);
+                final double vbx = 0.5 * (v[p2] + v[q2] - v[p0] - v[q0]);
+                final double vby = 0.5 * (v[p2 + 1] + v[q2 + 1] - v[p0 + 1] - v[q0 + 1]);
+                final double vbz = 0.5 * (v[p2 + 2] + v[q2 + 2] - v[p0 + 2] - v[q0 + 2]);
+                final double dux = vax * r00 + vbx * r10;
+                final double duy = vay * r00 + vby * r10;
+                final double duz = vaz * r00 + vbz * r10;
+                final double dwx = vax * r01 + vbx * r11;
+                final double dwy = vay * r01 + vby * r11;
+                final double dwz = vaz * r01 + vbz * r11;
+                e00 += b * (ux * dux + uy * duy + uz * duz);
+                e11 += b * (wx * dwx + wy * dwy + wz * dwz);
+                e01 += b * 0.5 * (ux * dwx + uy * dwy + uz * dwz + wx * dux + wy * duy + wz * duz);
+            }
             final double tr = la[e] * (e00 + e11);
             final double s00 = m2 * e00 + tr;
             final double s11 = m2 * e11 + tr;
-            final double s01 = m2 * 0.5 * (ux * wx + uy * wy + uz * wz);
+            final double s01 = m2 * e01;
             // P = F S, then the gradient on the edges a, b: P R^T.
             final double c0x = ux * s00 + wx * s01;
             final double c0y = uy * s00 + wy * s01;

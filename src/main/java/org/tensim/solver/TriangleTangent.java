@@ -100,6 +100,15 @@ public final class TriangleTangent implements ExtraStiffness {
 
     /** out += scale K p, offsets as in {@link #multiplyAdd(double[], double[], int[])}. */
     public void multiplyAdd(double[] p, double[] out, int[] offset, double scale) {
+        multiplyAdd(p, out, offset, scale, 0);
+    }
+
+    /**
+     * out += (scale + dampingScale beta_e) K_e p summed over the elements (beta_e an element's
+     * damping time, s): the stiffness and damping terms of an implicit step's matrix, with the
+     * damping matrix taken as beta_e times the tangent.
+     */
+    public void multiplyAdd(double[] p, double[] out, int[] offset, double scale, double dampingScale) {
         final double[] dy = corner;
         final double[] g = cornerOut;
         for (int e = 0; e < s.triangleCount(); e++) {
@@ -116,15 +125,16 @@ public final class TriangleTangent implements ExtraStiffness {
                 continue;
             }
             cornerProduct(e, dy, g);
+            final double half = 0.5 * (scale + dampingScale * s.triDamping[e]);
             for (int k = 0; k < 3; k++) {
                 int op = dof(s.triP[3 * e + k], offset);
                 int oq = dof(s.triQ[3 * e + k], offset);
                 for (int d = 0; d < 3; d++) {
                     if (op >= 0) {
-                        out[op + d] += 0.5 * scale * g[3 * k + d];
+                        out[op + d] += half * g[3 * k + d];
                     }
                     if (oq >= 0) {
-                        out[oq + d] += 0.5 * scale * g[3 * k + d];
+                        out[oq + d] += half * g[3 * k + d];
                     }
                 }
             }
@@ -137,10 +147,10 @@ public final class TriangleTangent implements ExtraStiffness {
     }
 
     /**
-     * diag += scale times the diagonal of K (full layout, 3 per node), for a Jacobi preconditioner.
-     * Costs nine element products per element.
+     * diag += the diagonal of the sum of {@code (scale + dampingScale beta_e) K_e} (full layout, 3 per
+     * node), for a Jacobi preconditioner. Costs nine element products per element.
      */
-    public void addDiagonal(double[] diag, double scale) {
+    public void addDiagonal(double[] diag, double scale, double dampingScale) {
         final double[] dy = corner;
         final double[] g = cornerOut;
         for (int e = 0; e < s.triangleCount(); e++) {
@@ -160,7 +170,7 @@ public final class TriangleTangent implements ExtraStiffness {
                     for (int c = 0; c < 3; c++) {
                         sum += weight(e, c, n) * g[3 * c + d];
                     }
-                    diag[3 * n + d] += scale * sum;
+                    diag[3 * n + d] += (scale + dampingScale * s.triDamping[e]) * sum;
                 }
             }
         }

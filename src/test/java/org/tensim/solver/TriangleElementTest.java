@@ -35,7 +35,7 @@ class TriangleElementTest {
                 p[k] = 3 * k + rnd.nextInt(3);
                 q[k] = e % 2 == 0 ? p[k] : 3 * k + rnd.nextInt(3);
             }
-            t.addTriangle(p, q, T * (0.5 + rnd.nextDouble()), E * (0.5 + rnd.nextDouble()), nu);
+            t.addTriangle(p, q, T * (0.5 + rnd.nextDouble()), E * (0.5 + rnd.nextDouble()), nu, 0);
         }
         return t;
     }
@@ -120,6 +120,53 @@ class TriangleElementTest {
                 q += dir[k] * kd[k];
             }
             assertTrue(q >= -1e-9 * scale, "d.K d = " + q);
+        }
+    }
+
+    /** Kelvin-Voigt damping dissipates (f . v &lt; 0) and ignores rigid velocities (spin and drift). */
+    @Test
+    void dampingDissipatesAndIgnoresRigidMotions() {
+        Random rnd = new Random(21);
+        Topology t = randomElements(rnd, 0.4);
+        Topology damped = new Topology();
+        for (var n : t.nodes()) {
+            damped.addNode(n.position(), n.mass());
+        }
+        for (var e : t.triangles()) {
+            damped.addTriangle(new int[] {e.p(0), e.p(1), e.p(2)}, new int[] {e.q(0), e.q(1), e.q(2)},
+                    e.thicknessM(), e.youngPa(), e.poisson(), 0.01);
+        }
+        SystemState s = SystemState.compile(damped);
+        ForceModel fm = new ForceModel(s);
+        double[] x = s.x0.clone();
+        for (int k = 0; k < x.length; k++) {
+            x[k] += 0.05 * rnd.nextGaussian();
+        }
+        double[] elastic = new double[x.length];
+        fm.triangles(x, elastic);
+        double[] v = new double[x.length];
+        for (int trial = 0; trial < 20; trial++) {
+            for (int k = 0; k < v.length; k++) {
+                v[k] = rnd.nextGaussian();
+            }
+            double[] f = new double[x.length];
+            fm.computeForces(0, x, v, f);
+            double power = 0;
+            for (int k = 0; k < v.length; k++) {
+                power += (f[k] - elastic[k]) * v[k];
+            }
+            assertTrue(power < 0, "damping power " + power + " W");
+        }
+        // A rigid velocity: spin about z plus a drift.
+        for (int i = 0; i < s.nodeCount; i++) {
+            v[3 * i] = -x[3 * i + 1] + 0.3;
+            v[3 * i + 1] = x[3 * i] - 0.2;
+            v[3 * i + 2] = 0.5;
+        }
+        double[] f = new double[x.length];
+        fm.computeForces(0, x, v, f);
+        for (int k = 0; k < v.length; k++) {
+            assertEquals(elastic[k], f[k], 1e-9 * E * T, "component " + k);
         }
     }
 

@@ -305,7 +305,7 @@ public final class ImplicitEuler implements Integrator {
         }
         if (triangles != null) {
             triangles.linearise(px, true);
-            triangles.addDiagonal(dg, h2);
+            triangles.addDiagonal(dg, h2, h);
         }
         for (int k = 0; k < dg.length; k++) {
             dg[k] = free[k] / dg[k];
@@ -332,7 +332,7 @@ public final class ImplicitEuler implements Integrator {
         }
         addBlocks(blockA, pv, out);
         if (triangles != null) {
-            triangles.multiplyAdd(pv, out, null, h * h);
+            triangles.multiplyAdd(pv, out, null, h * h, h);
         }
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];

@@ -22,7 +22,7 @@ import org.tensim.solver.SystemState;
  * taken isotropically (k I instead of k u u^T), so A does not depend on the positions: it is
  * the exact Hessian of Liu et al.'s local/global energy, and a preconditioner of the true
  * Jacobian M + beta C + beta^2 K of the springs. A membrane triangle adds, likewise isotropically,
- * {@code beta^2 (2 mu + lambda) A t grad N_k . grad N_l} between its corners k, l (its scalar
+ * {@code (beta^2 + beta beta_e) (2 mu + lambda) A t grad N_k . grad N_l} between its corners k, l (its scalar
  * Laplacian at the stiffer of its moduli; a midpoint corner shares it equally between its two nodes).
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
@@ -191,7 +191,7 @@ final class PrefactoredMatrix {
             grad[5] = s.triRest[4 * e + 3];
             grad[0] = -grad[2] - grad[4];
             grad[1] = -grad[3] - grad[5];
-            double w = beta * beta * (2 * s.triMu[e] + s.triLambda[e]);
+            double w = (beta * beta + beta * s.triDamping[e]) * (2 * s.triMu[e] + s.triLambda[e]);
             for (int h = 0; h < 6; h++) {
                 int a = freeIndex[h < 3 ? s.triP[3 * e + h] : s.triQ[3 * e + h - 3]];
                 for (int g = 0; g < 6 && a >= 0; g++) {

@@ -18,7 +18,7 @@ import org.tensim.solver.TriangleTangent;
  * damping c_v adds {@code beta c_v I}. Springs to fixed and driven nodes act on the free end
  * only (those nodes are eliminated). Membrane triangles add {@code beta^2 K_T}, their tangent
  * stiffness with the compressive part of the stress dropped ({@link TriangleTangent}), which keeps
- * J positive definite in the same way.
+ * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -31,6 +31,7 @@ final class SpringJacobian {
     private final TriangleTangent triangles; // null without triangles
     private final int[] triangleOffset; // per node: 3 x compact index, -1 when not free
     private double triangleWeight; // beta^2
+    private double triangleDampingWeight; // beta
 
     SpringJacobian(SystemState s, int[] freeIndex, int[] freeNodes) {
         this.s = s;
@@ -63,6 +64,7 @@ final class SpringJacobian {
         final double b2 = beta * beta;
         diagonalTerm = beta * s.viscousDamping();
         triangleWeight = b2;
+        triangleDampingWeight = beta;
         if (triangles != null) {
             triangles.linearise(px, true);
         }
@@ -125,7 +127,7 @@ final class SpringJacobian {
             }
         }
         if (triangles != null) {
-            triangles.multiplyAdd(p, out, triangleOffset, triangleWeight);
+            triangles.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
     }
 }
