@@ -187,19 +187,13 @@ class TriangleElementTest {
         }
         double w = fm.triangleEnergy(x);
         assertTrue(w > 0);
-        // Rotation about a random axis (Rodrigues) and a translation.
-        double[] axis = {rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian()};
-        double n = Math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-        double angle = 1.1;
+        // Rotation about a random axis and a translation.
+        double[][] rot = rotation(rnd);
         double[] moved = new double[x.length];
         for (int i = 0; i < x.length / 3; i++) {
             double[] v = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
-            double[] k = {axis[0] / n, axis[1] / n, axis[2] / n};
-            double kv = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-            double[] kxv = {k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
             for (int d = 0; d < 3; d++) {
-                moved[3 * i + d] = v[d] * Math.cos(angle) + kxv[d] * Math.sin(angle) + k[d] * kv * (1 - Math.cos(angle))
-                        + 0.7 * (d + 1);
+                moved[3 * i + d] = dot(rot[d], v) + 0.7 * (d + 1);
             }
         }
         assertEquals(w, fm.triangleEnergy(moved), 1e-12 * w);

@@ -3,8 +3,16 @@ package org.tensim.scene.shell;
 /**
  * Identification of a two-surface shell: two triangle membranes (the faces) a distance s apart,
  * joined by through-thickness columns and by diagonals (the edges of the prisms between the
- * faces). It chooses how much of the membrane stiffness the faces carry so that both the
- * membrane and the bending rigidity are the material's.
+ * faces), and (with membrane triangles, {@link #ofElements}) a membrane on the mid-surface. It
+ * chooses how much of the membrane stiffness the faces, the mid-surface and the diagonals carry
+ * so that both the membrane and the bending rigidity are the material's.
+ *
+ * <p><b>With membrane triangles</b> ({@link org.tensim.model.TriangleElement}, the material model):
+ * the faces have the material's nu, so {@code c = t^2 / (6 s^2)}; the mid-surface triangle (corners
+ * at the midpoints of each upper node and its partner) carries {@code 1 - 2c - d} without bending
+ * stiffness (bending leaves the mid-surface unstretched to first order); the diagonals carry
+ * {@code d = }{@link #SHEAR_SHARE} for the transverse shear. The paragraphs below describe the
+ * edge-spring identification ({@link #of}, the springs model).
  *
  * <p><b>Bending.</b> Two faces each of membrane modulus {@code c E t} (a spring network, whose own
  * Poisson ratio is {@code nu_s = 1/3}) at {@code +/- s/2} from the mid-surface bend like a sandwich
