@@ -17,6 +17,7 @@ public final class ForceModel {
     private final int[] springB3;
     private long evaluations;
     private SpringForcePass springPass;
+    private TriangleForcePass trianglePass;
     private NodeLoops nodeLoops = NodeLoops.SERIAL;
 
     public ForceModel(SystemState state) {
@@ -103,10 +104,27 @@ public final class ForceModel {
         } else {
             springs(px, f);
         }
-        // A replacement spring pass (e.g. multi-threaded) covers springs only: the triangles are
-        // added here, serially, for every integrator.
-        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
-                px, s.triangleDamping ? pv : null, f);
+        // The spring pass covers springs only: the triangles have their own (serial unless replaced).
+        final double[] tv = s.triangleDamping ? pv : null;
+        if (trianglePass != null) {
+            trianglePass.addTriangleForces(px, tv, f);
+        } else {
+            TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping,
+                    s.triangleCount(), px, tv, f);
+        }
+    }
+
+    /**
+     * Replaces the serial loop over the membrane triangles by {@code pass} (null restores it),
+     * e.g. a multi-threaded pass; takes effect at the next force evaluation.
+     */
+    public void setTrianglePass(TriangleForcePass pass) {
+        trianglePass = pass;
+    }
+
+    /** The triangle pass in use, or null for the serial loop. */
+    public TriangleForcePass trianglePass() {
+        return trianglePass;
     }
 
     /** Membrane triangle elastic forces only (no damping), added to f. */

@@ -181,7 +181,16 @@ class TriangleSolversTest {
         double[] fp = new double[x.length];
         serial.forces().computeForces(0, x, v, fs);
         try (Parallelism p = Parallelism.install(parallel, 2, ParallelSpringPass.Order.AUTO, 1)) {
+            assertTrue(parallel.forces().trianglePass() != null, "a parallel triangle pass is installed");
             parallel.forces().computeForces(0, x, v, fp);
+        }
+        double[] one = new double[x.length];
+        try (Parallelism p = Parallelism.install(parallel, 1, ParallelSpringPass.Order.AUTO, 1)) {
+            parallel.forces().computeForces(0, x, v, one);
+        }
+        assertTrue(parallel.forces().trianglePass() == null, "closing restores the serial loop");
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(one[k], fp[k], 0, "the same bits with one thread or two, component " + k);
         }
         double scale = 0;
         for (double value : fs) {

@@ -5,7 +5,8 @@ import org.tensim.solver.SystemState;
 
 /**
  * Puts a {@link Simulation} on several threads, the same way for every integrator:
- * on one {@link WorkerPool}, its force model gets a {@link ParallelSpringPass} and
+ * on one {@link WorkerPool}, its force model gets a {@link ParallelSpringPass}, a
+ * {@link ParallelTrianglePass} when it has enough membrane triangles, and
  * {@link PooledNodeLoops} (which split the integrator's node loops, see
  * {@link org.tensim.solver.NodeLoops}), and, when there are rigid links, its
  * projection gets {@link ParallelLinkSweeps}. The integrator itself is not replaced.
@@ -25,6 +26,7 @@ public final class Parallelism implements AutoCloseable {
     private final Simulation sim;
     private final WorkerPool pool;
     private final ParallelSpringPass springs;
+    private final ParallelTrianglePass triangles;
     private final ParallelLinkSweeps links;
     private final PooledNodeLoops nodeLoops;
 
@@ -38,7 +40,10 @@ public final class Parallelism implements AutoCloseable {
         this.links = s.linkCount() == 0 ? null
                 : new ParallelLinkSweeps(s, pool, defaults ? ParallelLinkSweeps.MIN_PARALLEL_LINKS : minWork);
         this.nodeLoops = new PooledNodeLoops(pool, defaults ? PooledNodeLoops.MIN_PARALLEL_NODES : minWork);
+        this.triangles = s.triangleCount() < (defaults ? ParallelTrianglePass.MIN_PARALLEL_TRIANGLES : minWork) ? null
+                : new ParallelTrianglePass(s, pool);
         sim.forces().setSpringPass(springs);
+        sim.forces().setTrianglePass(triangles);
         sim.forces().setNodeLoops(nodeLoops);
         sim.projection().setSweeps(links);
     }
@@ -128,6 +133,9 @@ public final class Parallelism implements AutoCloseable {
     public void close() {
         if (sim.forces().springPass() == springs) {
             sim.forces().setSpringPass(null);
+        }
+        if (triangles != null && sim.forces().trianglePass() == triangles) {
+            sim.forces().setTrianglePass(null);
         }
         if (links != null && sim.projection().sweeps() == links) {
             sim.projection().setSweeps(null);

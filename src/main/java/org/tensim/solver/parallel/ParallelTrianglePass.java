@@ -1,0 +1,159 @@
+package org.tensim.solver.parallel;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.TriangleForcePass;
+import org.tensim.solver.TriangleKernels;
+
+/**
+ * The membrane triangles' forces ({@link TriangleKernels}) on a {@link WorkerPool}, without locks:
+ * the nodes the triangles use are cut into {@link #BLOCKS} slabs along x (equal counts, by rest
+ * position), a triangle whose nodes all lie in one slab belongs to it, and the slabs, whose node
+ * sets are disjoint, are shared among the workers; the triangles that straddle two slabs (a thin
+ * seam, a few percent) are then added by the calling thread. The partition does not depend on the
+ * thread count, so every node sums its triangles in the same order with one thread or several:
+ * the same bits (tested).
+ *
+ * <p>Each slab keeps its own compact copies of the compiled arrays (allocated once); the moduli and
+ * damping are copied again when the state's parameters change ({@link SystemState#parameterVersion()}).
+ */
+public final class ParallelTrianglePass implements TriangleForcePass {
+    /** Slabs of the partition (fixed: the summation order must not depend on the thread count). */
+    public static final int BLOCKS = 8;
+    /** Triangles from which the pass is worth a dispatch (below, the serial loop is used). */
+    public static final int MIN_PARALLEL_TRIANGLES = 2048;
+
+    private final SystemState s;
+    private final WorkerPool pool;
+    private final Block[] blocks;
+    private final Block seam;
+    private long version = -1;
+    private double[] px;
+    private double[] pv;
+    private double[] f;
+    private final WorkerPool.Task task;
+
+    /** One slab's triangles, as compact copies of the state's arrays. */
+    private static final class Block {
+        final int[] source;
+        final int[] p3;
+        final int[] q3;
+        final double[] rest;
+        final double[] mu;
+        final double[] lambda;
+        final double[] damping;
+
+        Block(SystemState s, List<Integer> elements) {
+            int n = elements.size();
+            source = new int[n];
+            p3 = new int[3 * n];
+            q3 = new int[3 * n];
+            rest = new double[4 * n];
+            mu = new double[n];
+            lambda = new double[n];
+            damping = new double[n];
+            for (int i = 0; i < n; i++) {
+                int e = elements.get(i);
+                source[i] = e;
+                System.arraycopy(s.triP3, 3 * e, p3, 3 * i, 3);
+                System.arraycopy(s.triQ3, 3 * e, q3, 3 * i, 3);
+                System.arraycopy(s.triRest, 4 * e, rest, 4 * i, 4);
+            }
+        }
+
+        void refresh(SystemState s) {
+            for (int i = 0; i < source.length; i++) {
+                mu[i] = s.triMu[source[i]];
+                lambda[i] = s.triLambda[source[i]];
+                damping[i] = s.triDamping[source[i]];
+            }
+        }
+
+        void add(double[] x, double[] v, double[] f) {
+            TriangleKernels.forces(p3, q3, rest, mu, lambda, damping, source.length, x, v, f);
+        }
+    }
+
+    public ParallelTrianglePass(SystemState state, WorkerPool pool) {
+        this.s = state;
+        this.pool = pool;
+        int[] slab = slabs(state);
+        List<List<Integer>> lists = new ArrayList<>();
+        for (int b = 0; b <= BLOCKS; b++) {
+            lists.add(new ArrayList<>());
+        }
+        for (int e = 0; e < state.triangleCount(); e++) {
+            int b = slab[state.triP[3 * e]];
+            for (int k = 0; k < 3; k++) {
+                if (slab[state.triP[3 * e + k]] != b || slab[state.triQ[3 * e + k]] != b) {
+                    b = BLOCKS; // the seam
+                }
+            }
+            lists.get(b).add(e);
+        }
+        blocks = new Block[BLOCKS];
+        for (int b = 0; b < BLOCKS; b++) {
+            blocks[b] = new Block(state, lists.get(b));
+        }
+        seam = new Block(state, lists.get(BLOCKS));
+        final int workers = pool.size();
+        task = w -> {
+            for (int b = w; b < BLOCKS; b += workers) {
+                blocks[b].add(px, pv, f);
+            }
+        };
+    }
+
+    /** Slab of each node used by a triangle (x-quantiles of the rest positions), -1 for the others. */
+    private static int[] slabs(SystemState s) {
+        int[] slab = new int[s.nodeCount];
+        Arrays.fill(slab, -1);
+        boolean[] used = new boolean[s.nodeCount];
+        int n = 0;
+        for (int k = 0; k < s.triP.length; k++) {
+            for (int node : new int[] {s.triP[k], s.triQ[k]}) {
+                if (!used[node]) {
+                    used[node] = true;
+                    n++;
+                }
+            }
+        }
+        Integer[] order = new Integer[n];
+        for (int i = 0, j = 0; i < s.nodeCount; i++) {
+            if (used[i]) {
+                order[j++] = i;
+            }
+        }
+        Arrays.sort(order, (a, b) -> Double.compare(s.x0[3 * a], s.x0[3 * b]));
+        for (int j = 0; j < n; j++) {
+            slab[order[j]] = (int) ((long) j * BLOCKS / n);
+        }
+        return slab;
+    }
+
+    /** Triangles on the seam (added by the calling thread after the slabs). */
+    public int seamTriangles() {
+        return seam.source.length;
+    }
+
+    @Override
+    public void addTriangleForces(double[] x, double[] v, double[] force) {
+        if (version != s.parameterVersion()) {
+            for (Block b : blocks) {
+                b.refresh(s);
+            }
+            seam.refresh(s);
+            version = s.parameterVersion();
+        }
+        px = x;
+        pv = v;
+        f = force;
+        pool.run(task);
+        seam.add(x, v, force);
+        px = null;
+        pv = null;
+        f = null;
+    }
+}
