@@ -21,13 +21,10 @@ sweep() { # out-dir, workers
   "$ROOT/tensim" sweep --spec "$SPEC" --workers "$2" --out "$1" >/dev/null 2>&1 \
     || { echo "sweep into $1 failed; rerun: $ROOT/tensim sweep --spec $SPEC --workers $2 --out $1" >&2; exit 1; }
 }
-field() { # dir, key
-  python3 -c "import json,sys; print(json.load(open(sys.argv[1] + '/sweep.json'))[sys.argv[2]])" "$1" "$2"
-}
-ratio() { python3 -c "import sys; print('%.2f' % (float(sys.argv[1]) / float(sys.argv[2])))" "$1" "$2"; }
 log "# bench/sweep-scaling.sh $SPEC $ROUNDS  $(date -u)  $(nproc) cores"
-log "# columns: round, UTC, load before, points/s with 1 worker, 2 workers, 2 JVMs x 1 worker (sum),"
-log "#          2-worker ratio, 2-JVM ratio, mean point wall s (1 worker / 2 workers), cores obtained by 2 workers"
+log "# per round: points/s with 1 worker, 2 workers, 2 JVMs x 1 worker (summed); their ratios to 1 worker;"
+log "# CPU s per point (1w / 2w / 2 JVMs: a growth with two at once is contention for the shared core"
+log "# resources); CPU s of the JVM besides the points (JIT compilers, GC, I/O) and the JIT's own time, 1w / 2w"
 for r in $(seq 1 "$ROUNDS"); do
   t=$(date -u +%H:%M:%S); l=$(load)
   sweep "$OUT/w1" 1
@@ -35,11 +32,19 @@ for r in $(seq 1 "$ROUNDS"); do
   sweep "$OUT/jvm-a" 1 & a=$!
   sweep "$OUT/jvm-b" 1 & b=$!
   wait $a; wait $b
-  p1=$(field "$OUT/w1" points_per_s); p2=$(field "$OUT/w2" points_per_s)
-  pj=$(python3 -c "import sys; print(round(float(sys.argv[1]) + float(sys.argv[2]), 4))" \
-    "$(field "$OUT/jvm-a" points_per_s)" "$(field "$OUT/jvm-b" points_per_s)")
-  log "round $r  $t  load $l  1w $p1  2w $p2  2jvm $pj  ratio-2w $(ratio "$p2" "$p1")  ratio-2jvm $(ratio "$pj" "$p1")" \
-    " point-wall $(field "$OUT/w1" mean_point_wall_s)/$(field "$OUT/w2" mean_point_wall_s)" \
-    " cores-2w $(field "$OUT/w2" cores_obtained)"
+  python3 - "$OUT" "$r" "$t" "$l" "$(load)" <<'PY' | tee -a "$OUT/log.txt"
+import json, sys
+out, r, t, l0, l1 = sys.argv[1:]
+d = {k: json.load(open(f"{out}/{k}/sweep.json")) for k in ("w1", "w2", "jvm-a", "jvm-b")}
+p1, p2 = d["w1"]["points_per_s"], d["w2"]["points_per_s"]
+pj = d["jvm-a"]["points_per_s"] + d["jvm-b"]["points_per_s"]
+cpu = lambda k: d[k]["sum_point_cpu_s"] / d[k]["ran"]
+other = lambda k: d[k]["process_cpu_s"] - d[k]["sum_point_cpu_s"]
+print(f"round {r} {t} load {l0} -> {l1}: points/s 1w {p1:.3f} 2w {p2:.3f} 2jvm {pj:.3f}; "
+      f"ratio 2w {p2 / p1:.2f} 2jvm {pj / p1:.2f}; cpu/point {cpu('w1'):.3f} / {cpu('w2'):.3f} / "
+      f"{(cpu('jvm-a') + cpu('jvm-b')) / 2:.3f} s; other cpu {other('w1'):.2f} / {other('w2'):.2f} s, "
+      f"jit {d['w1']['jit_compile_s']:.2f} / {d['w2']['jit_compile_s']:.2f} s; cores obtained 2w "
+      f"{d['w2']['cores_obtained']:.2f}")
+PY
 done
 log "# done $(date -u +%H:%M:%S), load $(load)"
