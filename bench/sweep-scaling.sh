@@ -3,18 +3,16 @@
 # each from the sweep's own timing (sweep.json: points_per_s, which leaves out the JVM's start-up),
 # beside the machine's own ceiling for the same work measured in the same round: two separate JVMs,
 # each running the whole spec with 1 worker at the same time. Two JVMs share nothing but the machine
-# (cores, caches, memory bandwidth), so their ratio is what any engine could get here; 2 workers
-# falling short of it would be the engine's, matching it the machine's.
+# (cores, caches, memory bandwidth), each paying its own JIT warm-up: 2 workers in one JVM falling
+# short of them would be the engine's, matching them the machine's (and the JIT's, which the sweep.json
+# figures printed here separate: CPU per point, and the JVM's CPU besides the points).
 # Usage: bench/sweep-scaling.sh [SPEC] [ROUNDS]   (default docs/examples/sweep-diaphragm-bench.json, 3)
-# Each round runs the spec four times (1 worker, 2 workers, 2 JVMs at once): about 4 x 16 x 0.8 s.
+# Each round runs the spec four times (1 worker, 2 workers, 2 JVMs at once): about 3 x 16 x 1.5 s.
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-SPEC=$(realpath "${1:-$ROOT/docs/examples/sweep-diaphragm-bench.json}")
-ROUNDS=${2:-3}
-OUT="$ROOT/out/perf/sweep-scaling"
-mkdir -p "$OUT"
+# shellcheck source=bench/sweep-lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/sweep-lib.sh"
+bench_setup docs/examples/sweep-diaphragm-bench.json 3 sweep-scaling "$@"
 "$ROOT/tensim" --help >/dev/null # builds once, outside the timed runs
-load() { cut -d' ' -f1-3 /proc/loadavg; }
 log() { echo "$*" | tee -a "$OUT/log.txt"; }
 sweep() { # out-dir, workers
   rm -rf "$1"
