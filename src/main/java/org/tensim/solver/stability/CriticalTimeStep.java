@@ -13,7 +13,9 @@ import java.util.Random;
  *
  * <p>Linearised at the rest positions {@code x0}: the stiffness of a spring of
  * stiffness k along unit vector u is {@code k u u^T} on the relative displacement
- * of its ends (the transverse term vanishes at rest length). Fixed and driven
+ * of its ends (the transverse term vanishes at rest length); other elements (membrane
+ * triangles) come in as an {@link ExtraStiffness}, their blocks in the Gershgorin sums and
+ * their products in the power iteration. Fixed and driven
  * nodes are clamped (their rows and columns dropped). Rigid links and damping are
  * ignored: links remove frequencies, damping only helps.
  *
