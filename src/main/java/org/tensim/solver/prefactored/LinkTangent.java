@@ -50,6 +50,7 @@ final class LinkTangent {
     private final double[] dir; // per link: n
     private final double[] target; // per link: (L - |d|) / beta, m/s
     private final double[] invMass; // per free node (compact), 1/kg
+    private final double[] shift; // compact scratch: the velocity change of constrain()
     private final boolean disjoint;
 
     LinkTangent(SystemState s, int[] freeIndex, int[] freeNodes) {
@@ -91,6 +92,7 @@ final class LinkTangent {
             j++;
         }
         disjoint = !shared;
+        shift = new double[3 * freeNodes.length];
         invMass = new double[freeNodes.length];
         for (int k = 0; k < freeNodes.length; k++) {
             invMass[k] = s.invMass[freeNodes[k]];
@@ -103,20 +105,19 @@ final class LinkTangent {
     }
 
     /**
-     * Linearises the links for a step: directions and targets from x^ (compact, free nodes) and the
-     * prescribed positions of the others in {@code full} (full layout, at t + h).
+     * Linearises the links at the positions {@code x} (full layout: free nodes at the iterate
+     * x^ + beta v, fixed and driven ones at t + h): directions, and targets that bring each link to
+     * its length to first order.
      *
      * @param beta the implicit scheme's weight of the new velocity in the positions, s
      */
-    void linearise(double[] xHat, double[] full, double beta) {
+    void linearise(double[] x, double beta) {
         for (int i = 0; i < count; i++) {
-            final int a = endA[i];
-            final int b = endB[i];
-            final int fa = 3 * nodeA[i];
-            final int fb = 3 * nodeB[i];
-            final double dx = (b >= 0 ? xHat[b] : full[fb]) - (a >= 0 ? xHat[a] : full[fa]);
-            final double dy = (b >= 0 ? xHat[b + 1] : full[fb + 1]) - (a >= 0 ? xHat[a + 1] : full[fa + 1]);
-            final double dz = (b >= 0 ? xHat[b + 2] : full[fb + 2]) - (a >= 0 ? xHat[a + 2] : full[fa + 2]);
+            final int a = 3 * nodeA[i];
+            final int b = 3 * nodeB[i];
+            final double dx = x[b] - x[a];
+            final double dy = x[b + 1] - x[a + 1];
+            final double dz = x[b + 2] - x[a + 2];
             final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
             final double inv = len > 0 ? 1 / len : 0; // coincident ends: no direction, left to stage 2
             dir[3 * i] = dx * inv;
@@ -126,9 +127,34 @@ final class LinkTangent {
         }
     }
 
-    /** Moves the compact velocities v onto the constraints (mass-weighted, as a projection). */
+    /**
+     * Shifts the free nodes' velocities v (full layout) by the mass-weighted change that meets the
+     * linearised constraints: {@code (dv_b - dv_a) . n = target}, the change of v, not v itself,
+     * since the positions the targets were measured at already hold v.
+     */
     void constrain(double[] v) {
-        sweep(v, true);
+        if (count == 0) {
+            return;
+        }
+        java.util.Arrays.fill(shift, 0);
+        sweep(shift, true);
+        for (int i = 0; i < count; i++) {
+            if (endA[i] >= 0) {
+                addShift(v, 3 * nodeA[i], endA[i]);
+            }
+            if (endB[i] >= 0) {
+                addShift(v, 3 * nodeB[i], endB[i]);
+            }
+        }
+    }
+
+    private void addShift(double[] v, int full, int compact) {
+        v[full] += shift[compact];
+        v[full + 1] += shift[compact + 1];
+        v[full + 2] += shift[compact + 2];
+        shift[compact] = 0; // a node in several links is shifted once
+        shift[compact + 1] = 0;
+        shift[compact + 2] = 0;
     }
 
     /** u = P u: the compact increment u into the constraints' tangent space. */

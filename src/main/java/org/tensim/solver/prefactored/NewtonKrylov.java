@@ -73,12 +73,16 @@ final class NewtonKrylov {
         System.arraycopy(s.x, 0, xIt, 0, n3);
         System.arraycopy(s.v, 0, vIt, 0, n3);
         s.applyMotions(t1, xIt, vIt, scratch);
-        links.linearise(xHat, xIt, beta);
-        links.constrain(guess);
         scatter(guess, vIt);
         lastKrylovIterations = 0;
         for (int it = 0; it < newtonIterations; it++) {
             positions(beta);
+            if (!links.isEmpty()) {
+                // Newton on the links' lengths too: each iteration starts on their linearisation.
+                links.linearise(xIt, beta);
+                links.constrain(vIt);
+                positions(beta);
+            }
             model.computeForces(t1, xIt, vIt, f);
             if (residual(beta) == 0) {
                 break;
