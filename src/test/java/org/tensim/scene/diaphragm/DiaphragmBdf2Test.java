@@ -44,9 +44,11 @@ class DiaphragmBdf2Test {
         return Math.sqrt(num / den);
     }
 
+    /** On the edge-spring shell ({@link TissueModel#SPRINGS}), the figures this test was written with. */
     @Test
     void agreesWithRk2AtSmallStepsAndConvergesToIt() throws Exception {
-        DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600);
+        DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600,
+                DiaphragmParameters.defaults().withTissueModel(TissueModel.SPRINGS));
         double[] rk2 = run(scene, null, 0);
         double e1 = relativeRms(run(scene, new PrefactoredBdf2(), 1e-3), rk2);
         double e2 = relativeRms(run(scene, new PrefactoredBdf2(), 2e-3), rk2);
@@ -57,5 +59,22 @@ class DiaphragmBdf2Test {
         assertTrue(e2 < 0.01, "relative RMS difference at 2 ms: " + e2);
         assertTrue(e8 < 0.05, "relative RMS difference at 8 ms: " + e8);
         assertTrue(e1 < e2 && e2 < e8, "the difference falls with the step: " + e8 + ", " + e2 + ", " + e1);
+    }
+
+    /**
+     * On the membrane triangles (the default material model) BDF2 is further from RK2 at the same
+     * steps, Newton converged or not (measured 2026-11-23: 3.4, 2.0, 0.91 % at 1, 0.5, 0.25 ms; 4.5 %
+     * at 1 ms with 8 Newton iterations): the difference is BDF2's truncation error on this model, and
+     * it still falls with the step.
+     */
+    @Test
+    void agreesWithRk2OnTheMembraneTrianglesAsTheStepFalls() throws Exception {
+        DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600);
+        double[] rk2 = run(scene, null, 0);
+        double e1 = relativeRms(run(scene, new PrefactoredBdf2(), 1e-3), rk2);
+        double eHalf = relativeRms(run(scene, new PrefactoredBdf2(), 5e-4), rk2);
+        assertTrue(e1 < 0.04, "relative RMS difference at 1 ms: " + e1);
+        assertTrue(eHalf < 0.025, "relative RMS difference at 0.5 ms: " + eHalf);
+        assertTrue(eHalf < e1 / 1.5, "halving the step: " + e1 + " -> " + eHalf);
     }
 }
