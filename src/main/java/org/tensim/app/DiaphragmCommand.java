@@ -96,9 +96,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "pressure (action-line traction integrated over the muscle's area), projected (the same"
-                    + " per unit of horizontal projection: the steep walls get little) or paper-nodes (the paper's"
-                    + " per-node forces) (default: ${DEFAULT-VALUE})")
+            description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
+                    + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
     String muscleLoad = "pressure";
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",

@@ -37,9 +37,9 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         /**
          * A band of elastic ties with a stiffness per unit area: each node within the threshold is tied
          * by a zero-length spring {@code k_b A_i / 2} (tapered at the band's edge) to its rest point carried
-         * by a rib (a driven anchor), to a fixed anchor (spine), or to the ends of a cartilage or sternum
-         * segment, shared among the segments within the threshold ({@link AttachmentBand}). The band's
-         * total stiffness is {@code k_b} times its area, whatever the mesh.
+         * by the nearest rib (a driven anchor), to a fixed anchor (spine), or to the ends of the nearest
+         * cartilage or sternum segment. The band's total stiffness is {@code k_b} times its area, whatever
+         * the mesh.
          */
         BAND
     }
@@ -53,13 +53,7 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
          * elements), integrated over each triangle with a 16-point rule and shared among its corners by
          * the linear shape functions (the consistent load vector of a linear element).
          */
-        PRESSURE,
-        /**
-         * As {@link #PRESSURE} per unit of the surface's horizontal projection: each triangle's share is
-         * scaled by {@code |n_z|}, so that the vertical traction hardly loads the steep walls it would
-         * run along and compress (see docs/diaphragm.md, "Why the field depends on the mesh").
-         */
-        PROJECTED
+        PRESSURE
     }
 
     public BoundaryConditions {

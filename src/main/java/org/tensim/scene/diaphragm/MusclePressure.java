@@ -18,10 +18,6 @@ import org.tensim.model.Vec3;
  * consistent load vector). The total force is {@code P s(t)} times the integral of w m over the
  * mid-surface whatever the mesh.
  *
- * <p>{@link BoundaryConditions.MuscleLoad#PROJECTED}: the same traction per unit of the horizontal
- * projection, each triangle's area scaled by {@code |n_z|}: the total is {@code P s(t)} times the
- * integral of w m over the footprint (twice, one per face), whatever the mesh.
- *
  * <p>{@link BoundaryConditions.MuscleLoad#PAPER_NODES}: the paper's per-node force, weight
  * {@code w(d_i) A_i / 2} on muscle nodes.
  */
@@ -53,13 +49,9 @@ final class MusclePressure {
             return w;
         }
         double[] h = new double[3];
-        double[] n = new double[3];
         double[][] poly = new double[4][];
         for (int t = 0; t < m.triangleCount(); t++) {
             int[] c = {m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)};
-            m.normal(t, n); // length twice the area: |n_z| / 2 is the horizontal projection's area
-            double halfArea = model == BoundaryConditions.MuscleLoad.PROJECTED ? 0.25 * Math.abs(n[2])
-                    : 0.5 * m.area(t);
             for (int k = 0; k < 3; k++) {
                 h[k] = normal.x() * m.coord(c[k], 0) + normal.y() * m.coord(c[k], 1) + normal.z() * m.coord(c[k], 2)
                         - cut;
@@ -80,7 +72,7 @@ final class MusclePressure {
                 }
             }
             for (int k = 1; k + 1 < np; k++) {
-                integrate(m, lines, c, halfArea, poly[0], poly[k], poly[k + 1], w);
+                integrate(m, lines, c, 0.5 * m.area(t), poly[0], poly[k], poly[k + 1], w);
             }
         }
         return w;

@@ -129,32 +129,6 @@ class BoundaryConditionsTest {
     }
 
     @Test
-    void theProjectedLoadIntegratesOverTheFootprintWhereThePressureIntegratesOverTheSlope() {
-        double r = 0.05;
-        ActionLines lines = new ActionLines(List.of(new ActionLines.Line(0.013, -0.007, r)), BreathingCycle.quiet(),
-                new DiaphragmControls(1, 1000));
-        double exact = Math.PI * r * r * (0.25 - 1 / (Math.PI * Math.PI)); // half per face, over the footprint
-        double slope = 0.75; // z = 0.75 x: the surface is 1.25 times its footprint
-        for (int n : new int[] {20, 40}) {
-            TriangleMesh flat = FlatMeshes.square(0.1, n);
-            double[] xyz = flat.coordinates();
-            for (int v = 0; v < flat.vertexCount(); v++) {
-                xyz[3 * v + 2] = slope * xyz[3 * v];
-            }
-            TriangleMesh m = new TriangleMesh(xyz, flat.triangles());
-            int[] labels = new int[m.vertexCount()];
-            double[] area = SurfaceGeometry.vertexAreas(m);
-            Vec3 up = new Vec3(0, 0, 1);
-            double projected = total(MusclePressure.weights(m, lines, BoundaryConditions.MuscleLoad.PROJECTED, up, 1,
-                    labels, area));
-            double pressure = total(MusclePressure.weights(m, lines, BoundaryConditions.MuscleLoad.PRESSURE, up, 1,
-                    labels, area));
-            assertEquals(exact, projected, 0.001 * exact, n + " x " + n + " projected");
-            assertEquals(exact * Math.hypot(1, slope), pressure, 0.001 * exact, n + " x " + n + " pressure");
-        }
-    }
-
-    @Test
     void outOfRangeParametersAreRefusedWithTheirNameAndUnit() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> BAND.withBandStiffness(-1));
