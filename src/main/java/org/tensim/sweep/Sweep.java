@@ -79,6 +79,7 @@ public final class Sweep {
                 log.println("resuming: " + skipped + " of " + points.size() + " points already in " + csv.path());
             }
             t0 = System.nanoTime();
+            JvmCosts c0 = JvmCosts.now();
             try (ProgressBar bar = progress && !todo.isEmpty() ? new ProgressBarBuilder().setTaskName("sweep")
                     .setInitialMax(todo.size()).setStyle(ProgressBarStyle.ASCII).setUnit(" points", 1)
                     .setConsumer(new ConsoleProgressBarConsumer(System.err)).build() : null) {
@@ -99,9 +100,11 @@ public final class Sweep {
                 });
             }
             double wall = (System.nanoTime() - t0) / 1e9;
+            JvmCosts c1 = JvmCosts.now();
             List<PointResult> all = new ArrayList<>(csv.done().values());
             all.sort(Comparator.comparingInt(PointResult::id));
             Map<String, Object> s = summary(spec, engine, points.size(), skipped, todo.size(), wall, busy, all);
+            c1.putSince(c0, s);
             List<Path> charts = SweepCharts.write(out.resolve("charts"), names, spec.outputs(), all);
             s.put("charts", charts.size());
             Json.write(out.resolve("sweep.json"), s);

@@ -76,12 +76,27 @@ public final class DiaphragmSetup {
     public static Built load(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
             List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p, BreathingCycle cycle,
             DiaphragmControls controls, BoundaryConditions bc) throws IOException, MeshFormatException {
-        MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
-        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(r.mesh(), meshFile, units, "diaphragm",
-                PLAUSIBLE_SIZE_M[0], PLAUSIBLE_SIZE_M[1]);
+        MeshCleaner.Result r = read(meshFile, units, cleaning);
         Surfaces s = surfaces(r.mesh(), offsetThicknessM);
         return new Built(DiaphragmScene.build(s.surfaces(), boxes(boxesFile), p, cycle, controls, lines, bc), r.report(),
                 s.mode(), meshFile + ", " + cage(boxesFile));
+    }
+
+    /**
+     * The two surfaces of a mesh file, read and cleaned with the default settings, as {@link #load} builds
+     * its scene on: for building many scenes from one reading ({@link DiaphragmScene#build}).
+     */
+    public static Surfaces loadSurfaces(Path meshFile, MeshUnits units, double offsetThicknessM)
+            throws IOException, MeshFormatException {
+        return surfaces(read(meshFile, units, MeshCleaner.Options.defaults()).mesh(), offsetThicknessM);
+    }
+
+    private static MeshCleaner.Result read(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning)
+            throws IOException, MeshFormatException {
+        MeshCleaner.Result r = MeshLoader.load(meshFile, units, cleaning);
+        org.tensim.io.mesh.MeshExtent.refuseImplausibleSize(r.mesh(), meshFile, units, "diaphragm",
+                PLAUSIBLE_SIZE_M[0], PLAUSIBLE_SIZE_M[1]);
+        return r;
     }
 
     /** A mesh's two boundary surfaces and how they were found. */
@@ -117,9 +132,13 @@ public final class DiaphragmSetup {
     /** As the overload above with the attachment and muscle-load models. */
     public static Built generated(int rings, List<ActionLines.Line> lines, Path boxesFile, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, BoundaryConditions bc) throws IOException {
-        TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings));
-        return new Built(DiaphragmScene.build(TwoSurfaces.split(m), boxes(boxesFile), p, cycle, controls, lines, bc),
+        return new Built(DiaphragmScene.build(generatedSurfaces(rings), boxes(boxesFile), p, cycle, controls, lines, bc),
                 null, SurfaceMode.SHELL, "generated double dome, " + rings + " rings, " + cage(boxesFile));
+    }
+
+    /** The two faces of the generated double dome at a resolution (rings per face), as {@link #generated} uses. */
+    public static TwoSurfaces generatedSurfaces(int rings) {
+        return TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings)));
     }
 
     /**

@@ -15,6 +15,7 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.model.Topology;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.RibCage;
+import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
@@ -132,7 +133,10 @@ public final class DiaphragmViewScene implements ViewScene {
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
         return new SceneFactory() {
-            private DiaphragmSetup.Built first;
+            // Read or generated once; every scene, the first included, is then built from these surfaces by
+            // the same call, outside the lock: the same values give the same scene whatever was built before,
+            // and parallel sweep workers do not queue for each other's scene building.
+            private TwoSurfaces surfaces;
 
             @Override
             public String name() {
@@ -144,20 +148,23 @@ public final class DiaphragmViewScene implements ViewScene {
                 return true;
             }
 
+            private synchronized TwoSurfaces surfaces() throws IOException, MeshFormatException {
+                if (surfaces == null) {
+                    surfaces = mesh == null ? DiaphragmSetup.generatedSurfaces(rings)
+                            : DiaphragmSetup.loadSurfaces(mesh, units, thicknessM).surfaces();
+                }
+                return surfaces;
+            }
+
             @Override
-            public synchronized ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
+            public ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
                 double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
                 BreathingCycle cycle = new BreathingCycle(period, EXPIRATION_RATIO);
                 DiaphragmControls controls = new DiaphragmControls(values.getOrDefault(RIB_AMPLITUDE, 1.0),
                         values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.DEFAULT_MUSCLE_PA));
                 try {
-                    if (first == null) {
-                        first = mesh == null ? DiaphragmSetup.generated(rings, boxes, P, cycle, controls)
-                                : DiaphragmSetup.load(mesh, units, thicknessM, boxes, P, cycle, controls);
-                        return new DiaphragmViewScene(first.scene(), tensegrityTendon);
-                    }
-                    DiaphragmScene s = DiaphragmScene.build(first.scene().surfaces(), DiaphragmSetup.boxes(boxes), P,
-                            cycle, controls, null);
+                    DiaphragmScene s = DiaphragmScene.build(surfaces(), DiaphragmSetup.boxes(boxes), P, cycle,
+                            controls, null);
                     return new DiaphragmViewScene(s, tensegrityTendon);
                 } catch (IOException e) {
                     throw new UncheckedIOException(e.getMessage(), e);
