@@ -52,7 +52,7 @@ final class LinkTangent {
     private final double[] dir; // per link: n
     private final double[] target; // per link: (L - |d|) / beta, m/s
     private final double[] invMass; // per free node (compact), 1/kg
-    private final double[] shift; // compact scratch: the velocity change of constrain()
+    private final double[] change; // compact scratch: the velocity change of constrain()
     private final double[] lambda; // links that share nodes: multipliers and their CG's vectors
     private final double[] res;
     private final double[] cgDir;
@@ -99,7 +99,7 @@ final class LinkTangent {
             j++;
         }
         disjoint = !shared;
-        shift = new double[3 * freeNodes.length];
+        change = new double[3 * freeNodes.length];
         int sharing = disjoint ? 0 : n;
         lambda = new double[sharing];
         res = new double[sharing];
@@ -149,25 +149,25 @@ final class LinkTangent {
         if (count == 0) {
             return;
         }
-        java.util.Arrays.fill(shift, 0);
-        sweep(shift, true);
+        java.util.Arrays.fill(change, 0);
+        sweep(change, true);
         for (int i = 0; i < count; i++) {
             if (endA[i] >= 0) {
-                addShift(v, 3 * nodeA[i], endA[i]);
+                addChange(v, 3 * nodeA[i], endA[i]);
             }
             if (endB[i] >= 0) {
-                addShift(v, 3 * nodeB[i], endB[i]);
+                addChange(v, 3 * nodeB[i], endB[i]);
             }
         }
     }
 
-    private void addShift(double[] v, int full, int compact) {
-        v[full] += shift[compact];
-        v[full + 1] += shift[compact + 1];
-        v[full + 2] += shift[compact + 2];
-        shift[compact] = 0; // a node in several links is shifted once
-        shift[compact + 1] = 0;
-        shift[compact + 2] = 0;
+    private void addChange(double[] v, int full, int compact) {
+        v[full] += change[compact];
+        v[full + 1] += change[compact + 1];
+        v[full + 2] += change[compact + 2];
+        change[compact] = 0; // a node in several links is shifted once
+        change[compact + 1] = 0;
+        change[compact + 2] = 0;
     }
 
     /** u = P u: the compact increment u into the constraints' tangent space. */
@@ -221,7 +221,7 @@ final class LinkTangent {
         final double stop = SOLVE_TOLERANCE * SOLVE_TOLERANCE * rr;
         for (int it = 0; it < 2 * count + 10 && rr > stop; it++) {
             java.util.Arrays.fill(temp, 0);
-            shift(temp, cgDir, 1);
+            shift(temp, cgDir);
             double pq = 0;
             for (int i = 0; i < count; i++) {
                 cgProduct[i] = -rate(temp, i); // (N^T M^-1 N) p, as shift() moves against N
@@ -243,23 +243,27 @@ final class LinkTangent {
                 cgDir[i] = res[i] + b * cgDir[i];
             }
         }
-        shift(u, lambda, 1);
+        shift(u, lambda);
     }
 
-    /** u -= s M^-1 N lambda: each link moves its ends along n, in inverse proportion to their masses. */
-    private void shift(double[] u, double[] lam, double sign) {
+    /** u -= M^-1 N lambda: each link moves its ends along n, in inverse proportion to their masses. */
+    private void shift(double[] u, double[] lam) {
         for (int i = 0; i < count; i++) {
-            final double l = sign * lam[i];
-            final int a = endA[i];
-            final int b = endB[i];
-            for (int c = 0; c < 3; c++) {
-                final double n = dir[3 * i + c];
-                if (a >= 0) {
-                    u[a + c] += wA[i] * l * n;
-                }
-                if (b >= 0) {
-                    u[b + c] -= wB[i] * l * n;
-                }
+            move(u, i, lam[i]);
+        }
+    }
+
+    /** u -= M^-1 N_i mu for link i alone: end a by +w_a mu n, end b by -w_b mu n. */
+    private void move(double[] u, int i, double mu) {
+        final int a = endA[i];
+        final int b = endB[i];
+        for (int c = 0; c < 3; c++) {
+            final double n = dir[3 * i + c];
+            if (a >= 0) {
+                u[a + c] += wA[i] * mu * n;
+            }
+            if (b >= 0) {
+                u[b + c] -= wB[i] * mu * n;
             }
         }
     }
@@ -281,18 +285,7 @@ final class LinkTangent {
         final double wsum = wA[i] + wB[i];
         final double violation = rate(u, i) - (affine ? target[i] : 0);
         if (wsum > 0 && violation != 0) {
-            final double mu = violation / wsum;
-            final int a = endA[i];
-            final int b = endB[i];
-            for (int c = 0; c < 3; c++) {
-                final double n = dir[3 * i + c];
-                if (a >= 0) {
-                    u[a + c] += wA[i] * mu * n;
-                }
-                if (b >= 0) {
-                    u[b + c] -= wB[i] * mu * n;
-                }
-            }
+            move(u, i, violation / wsum);
         }
     }
 }

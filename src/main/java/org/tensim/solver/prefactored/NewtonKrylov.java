@@ -8,9 +8,10 @@ import org.tensim.solver.SystemState;
  * {@code g(v) = M (v - v^) - beta f(t, x^ + beta v, v)} (free nodes only), each Newton system
  * {@code J dv = -g} solved by conjugate gradient preconditioned with a sparse Cholesky factor.
  * J is applied matrix-free by {@link SpringJacobian}, linearised once per Newton iteration.
- * The rigid links are kept to first order ({@link LinkTangent}): the first guess is moved onto
- * their linearised constraints and CG runs in their tangent space (on {@code P^T J P}, with the
- * preconditioner {@code P C^-1 P^T}; Baraff and Witkin 1998's filtered CG for pair constraints).
+ * The rigid links are kept within the step ({@link LinkTangent}): each Newton iterate's velocities
+ * are shifted onto the links' lengths linearised at that iterate, and CG runs in their tangent
+ * space (on {@code P^T J P}, with the preconditioner {@code P C^-1 P^T}; Baraff and Witkin 1998's
+ * filtered CG, here for pair constraints).
  * Scratch arrays are allocated once, here.
  */
 final class NewtonKrylov {
