@@ -65,9 +65,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double ribAmplitude = 1;
 
     @Option(names = "--muscle-force", paramLabel = "PA",
-            description = "peak muscle action (force per unit area of diaphragm), Pa, 0..20000"
-                    + " (default: ${DEFAULT-VALUE})")
-    double musclePa = DiaphragmSetup.DEFAULT_MUSCLE_PA;
+            description = "peak muscle action, Pa, 0..20000: force per unit area of diaphragm (--muscle-load"
+                    + " pressure, paper-nodes; default " + DiaphragmSetup.DEFAULT_MUSCLE_PA + ") or active fibre"
+                    + " stress (fibres; default " + DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA + ")")
+    Double musclePa;
 
     @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: ${DEFAULT-VALUE})")
     double period = 4;
@@ -96,8 +97,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
-                    + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
+            description = "pressure (action-line traction integrated over the muscle's area), paper-nodes (the"
+                    + " paper's per-node forces) or fibres (active tension along the fibres to the central tendon)"
+                    + " (default: ${DEFAULT-VALUE})")
     String muscleLoad = "pressure";
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
@@ -281,7 +283,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
         List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
-        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
+        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa != null ? musclePa
+                : DiaphragmSetup.defaultMusclePa(bc.muscleLoad()));
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final DiaphragmParameters params = p;
         if (realtimeStudy) {

@@ -3,7 +3,8 @@ package org.tensim.solver;
 /**
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
- * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one).
+ * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
+ * active fibre tensions ({@link FibreTension}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -107,6 +108,7 @@ public final class ForceModel {
         // added here, serially, for every integrator.
         TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
                 px, s.triangleDamping ? pv : null, f);
+        s.fibres.forces(t, px, f);
     }
 
     /** Membrane triangle elastic forces only (no damping), added to f. */
