@@ -162,7 +162,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
-            description = "--realtime-study only: ring counts, ascending (default: 10,14,20,28,43)")
+            description = "--realtime-study, --resolution-study: ring counts, ascending (default: 10,14,20,28,43;"
+                    + " given to the resolution study, the double domes only, the finest as reference, no pick)")
     int[] studyRings;
 
     @Option(names = "--study-configs", paramLabel = "REGEX",
@@ -291,7 +292,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
             return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
                 registerAll(run, REALTIME_OUTPUTS);
                 Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
-                        boxes, params, cycle, controls, seconds, out, System.out);
+                        boxes, params, bc, cycle, controls, seconds, out, System.out);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
@@ -313,6 +314,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 registerAll(run, RESOLUTION_OUTPUTS);
                 Map<String, Object> s = ownMesh
                         ? ResolutionStudy.runMesh(mesh, u, cleaning, thicknessMm * 1e-3, cellsMm, refine, rs, out)
+                        : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, out)
                         : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
