@@ -56,12 +56,15 @@ class MuscleFibresTest {
             assertEquals(t.fibres().size(), added);
             double volume = 0;
             double cx = 0; // the tendon's centre: the area-weighted mean of its vertices
+            double cy = 0;
             double w = 0;
             for (int v = 0; v < m.vertexCount(); v++) {
                 cx += tendon[v] ? area[v] * m.coord(v, 0) : 0;
+                cy += tendon[v] ? area[v] * m.coord(v, 1) : 0;
                 w += tendon[v] ? area[v] : 0;
             }
             cx /= w;
+            cy /= w;
             for (ActiveFibre f : t.fibres()) {
                 volume += f.volumeM3();
                 Vec3 d = direction(t, f);
@@ -69,7 +72,7 @@ class MuscleFibresTest {
                 assertEquals(0, d.z(), 1e-12, "in the sheet's plane");
                 Vec3 g = t.node(f.p(0)).position().plus(t.node(f.p(1)).position()).plus(t.node(f.p(2)).position())
                         .times(1.0 / 3);
-                Vec3 r = new Vec3(g.x() - cx, g.y(), 0).normalized();
+                Vec3 r = new Vec3(g.x() - cx, g.y() - cy, 0).normalized();
                 assertEquals(0, d.x() * r.y() - d.y() * r.x(), 1e-9, n + " squares: radial from the tendon's centre");
             }
             // half per face: t/2 times the muscle's area (x < cut), exactly, cut triangles included
