@@ -19,22 +19,14 @@ class FibreTensionTest {
     private static final double SIGMA = 20e3;
     private static final double T = 2.5e-3;
 
-    /** Random fibres on triangles among a few nodes; half of them with midpoint corners. */
+    /** Fibres in random directions on the random triangles of {@link TriangleElementTest} (half with midpoint corners). */
     private static Topology randomFibres(Random rnd, double sigma) {
-        Topology t = new Topology();
-        for (int i = 0; i < 9; i++) {
-            t.addNode(rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble(), 1);
-        }
-        for (int e = 0; e < 6; e++) {
-            int[] p = new int[3];
-            int[] q = new int[3];
-            for (int k = 0; k < 3; k++) {
-                p[k] = 3 * k + rnd.nextInt(3);
-                q[k] = e % 2 == 0 ? p[k] : 3 * k + rnd.nextInt(3);
-            }
+        Topology t = TriangleElementTest.randomElements(rnd, 0.3);
+        for (org.tensim.model.TriangleElement te : t.triangles()) {
+            int[] p = {te.p(0), te.p(1), te.p(2)};
+            int[] q = {te.q(0), te.q(1), te.q(2)};
             Vec3 dir = new Vec3(rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian());
-            double scale = 0.5 + rnd.nextDouble();
-            t.addFibre(p, q, dir, T * scale, time -> sigma * (1 + time));
+            t.addFibre(p, q, dir, T * (0.5 + rnd.nextDouble()), time -> sigma * (1 + time));
         }
         return t;
     }
