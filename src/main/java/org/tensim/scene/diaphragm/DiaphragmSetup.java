@@ -37,7 +37,7 @@ public final class DiaphragmSetup {
      * Default peak active fibre stress, Pa, for {@link BoundaryConditions.MuscleLoad#FIBRES} (docs/diaphragm.md,
      * "Active fibre tension": gives a quiet-breathing dome excursion on the default mesh).
      */
-    public static final double DEFAULT_FIBRE_STRESS_PA = 10_000;
+    public static final double DEFAULT_FIBRE_STRESS_PA = 15_000;
 
     /** The default muscle amplitude of a muscle-load model, Pa: an active stress for fibres, else a pressure. */
     public static double defaultMusclePa(BoundaryConditions.MuscleLoad model) {
