@@ -65,9 +65,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double ribAmplitude = 1;
 
     @Option(names = "--muscle-force", paramLabel = "PA",
-            description = "peak muscle action (force per unit area of diaphragm), Pa, 0..20000"
-                    + " (default: ${DEFAULT-VALUE})")
-    double musclePa = DiaphragmSetup.DEFAULT_MUSCLE_PA;
+            description = "peak muscle action, Pa, 0..20000: force per unit area of diaphragm (--muscle-load"
+                    + " pressure, paper-nodes; default " + DiaphragmSetup.DEFAULT_MUSCLE_PA + ") or active fibre"
+                    + " stress (fibres; default " + DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA + ")")
+    Double musclePa;
 
     @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: ${DEFAULT-VALUE})")
     double period = 4;
@@ -96,8 +97,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "pressure (action-line traction integrated over the muscle's area) or paper-nodes (the"
-                    + " paper's per-node forces) (default: ${DEFAULT-VALUE})")
+            description = "pressure (action-line traction integrated over the muscle's area), paper-nodes (the"
+                    + " paper's per-node forces) or fibres (active tension along the fibres to the central tendon)"
+                    + " (default: ${DEFAULT-VALUE})")
     String muscleLoad = "pressure";
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
@@ -160,7 +162,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
-            description = "--realtime-study only: ring counts, ascending (default: 10,14,20,28,43)")
+            description = "--realtime-study, --resolution-study: ring counts, ascending (default: 10,14,20,28,43;"
+                    + " given to the resolution study, the double domes only, the finest as reference, no pick)")
     int[] studyRings;
 
     @Option(names = "--study-configs", paramLabel = "REGEX",
@@ -281,14 +284,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
         MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
         List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
-        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa);
+        DiaphragmControls controls = new DiaphragmControls(ribAmplitude, musclePa != null ? musclePa
+                : DiaphragmSetup.defaultMusclePa(bc.muscleLoad()));
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final DiaphragmParameters params = p;
         if (realtimeStudy) {
             return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
                 registerAll(run, REALTIME_OUTPUTS);
                 Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
-                        boxes, params, cycle, controls, seconds, out, System.out);
+                        boxes, params, bc, cycle, controls, seconds, out, System.out);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
@@ -310,6 +314,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 registerAll(run, RESOLUTION_OUTPUTS);
                 Map<String, Object> s = ownMesh
                         ? ResolutionStudy.runMesh(mesh, u, cleaning, thicknessMm * 1e-3, cellsMm, refine, rs, out)
+                        : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, out)
                         : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });

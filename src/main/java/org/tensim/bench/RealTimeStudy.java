@@ -17,6 +17,7 @@ import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -139,6 +140,13 @@ public final class RealTimeStudy {
     public static Map<String, Object> run(int[] ringCounts, Pattern only, Path boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, double seconds, Path out, PrintStream log)
             throws IOException {
+        return run(ringCounts, only, boxes, p, BoundaryConditions.defaults(), cycle, controls, seconds, out, log);
+    }
+
+    /** As the overload above with the given attachment and muscle-load models. */
+    public static Map<String, Object> run(int[] ringCounts, Pattern only, Path boxes, DiaphragmParameters p,
+            BoundaryConditions bc, BreathingCycle cycle, DiaphragmControls controls, double seconds, Path out,
+            PrintStream log) throws IOException {
         Files.createDirectories(out);
         double runS = Math.min(seconds, cycle.periodS());
         List<Config> configs = new ArrayList<>();
@@ -157,13 +165,14 @@ public final class RealTimeStudy {
             // Finest first: the reference is the first run, and a long study can be read as it goes.
             for (int i = ringCounts.length - 1; i >= 0; i--) {
                 int rings = ringCounts[i];
-                DiaphragmScene scene = DiaphragmSetup.generated(rings, boxes, p, cycle, controls).scene();
-                DiaphragmScene scaledScene = DiaphragmSetup.generated(rings, boxes, scaled, cycle, controls).scene();
+                DiaphragmScene scene = DiaphragmSetup.generated(rings, null, boxes, p, cycle, controls, bc).scene();
+                DiaphragmScene scaledScene = DiaphragmSetup.generated(rings, null, boxes, scaled, cycle, controls, bc)
+                        .scene();
                 StudyRun own = null; // RK2 on two threads (the first configuration) at this resolution
                 for (Config c : configs) {
                     StudyRun r = c == configs.get(0)
                             ? StudyRun.reference(scene, rings, c, runS,
-                                    ReferenceCache.file(out, rings, scene, p, cycle, controls), log)
+                                    ReferenceCache.file(out, rings, scene, p, bc, cycle, controls), log)
                             : StudyRun.simulate(c.scaledSternum() ? scaledScene : scene, rings, c, runS);
                     reference = reference == null ? r.run() : reference;
                     own = own == null ? r : own;

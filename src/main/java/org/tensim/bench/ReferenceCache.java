@@ -20,6 +20,7 @@ import org.tensim.scene.diaphragm.DiaphragmScene;
  * paper's resolution RK2 needs 56,000 steps per simulated second, over an hour for one breathing cycle
  * on a shared two-core machine, so a study that is run again with other configurations reuses them.
  * The file is named by the scene's size, step, sample interval and a hash of the tissue parameters,
+ * the boundary conditions (attachment, muscle load),
  * the cycle and the controls, so that another scene never reads it. Format (big-endian): the diaphragm
  * node count and the apex node (ints), then per sample its time (s) and the 3 n displacements (m).
  */
@@ -28,9 +29,9 @@ final class ReferenceCache {
     }
 
     /** Where the samples of this scene's reference are kept. */
-    static Path file(Path out, int rings, DiaphragmScene scene, DiaphragmParameters p, BreathingCycle cycle,
-            DiaphragmControls controls) {
-        int key = java.util.Objects.hash(p.toString(), cycle.periodS(), cycle.expirationRatio(),
+    static Path file(Path out, int rings, DiaphragmScene scene, DiaphragmParameters p,
+            org.tensim.scene.diaphragm.BoundaryConditions bc, BreathingCycle cycle, DiaphragmControls controls) {
+        int key = java.util.Objects.hash(p.toString(), bc.toString(), cycle.periodS(), cycle.expirationRatio(),
                 controls.ribAmplitude(), controls.muscleAmplitudePa());
         return out.resolve(String.format(Locale.ROOT, "rk2-reference-%drings-%dnodes-%dsprings-dt%.6e-every%.3fs-%08x.bin",
                 rings, scene.topology().nodeCount(), scene.topology().springs().size(), scene.recommendedTimeStep(),

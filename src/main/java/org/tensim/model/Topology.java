@@ -22,6 +22,7 @@ public final class Topology {
     private final List<Spring> springs = new ArrayList<>();
     private final List<RigidLink> links = new ArrayList<>();
     private final List<TriangleElement> triangles = new ArrayList<>();
+    private final List<ActiveFibre> fibres = new ArrayList<>();
     private final List<NodalForce> forces = new ArrayList<>();
     private Vec3 gravity = Vec3.ZERO;
     private double viscousDamping;
@@ -108,6 +109,31 @@ public final class Topology {
         return e;
     }
 
+    /**
+     * Adds an active fibre tension on a triangle whose corner k is the midpoint of nodes {@code p[k]}
+     * and {@code q[k]}, at rest in their current positions; see {@link ActiveFibre}.
+     *
+     * @param direction  fibre direction (its in-plane part is used)
+     * @param thicknessM thickness of muscle the triangle stands for, m (&gt; 0)
+     * @param stressPa   active stress over time, Pa (allocation-free)
+     */
+    public ActiveFibre addFibre(int[] p, int[] q, Vec3 direction, double thicknessM,
+            java.util.function.DoubleUnaryOperator stressPa) {
+        if (p.length != 3 || q.length != 3) {
+            throw new IllegalArgumentException("an active fibre needs a triangle of 3 corners, got " + p.length
+                    + " and " + q.length + " node ids");
+        }
+        Vec3[] rest = new Vec3[3];
+        for (int k = 0; k < 3; k++) {
+            Check.index("fibre triangle corner node", p[k], nodes.size());
+            Check.index("fibre triangle corner node", q[k], nodes.size());
+            rest[k] = nodes.get(p[k]).position().plus(nodes.get(q[k]).position()).times(0.5);
+        }
+        ActiveFibre e = new ActiveFibre(p, q, rest, direction, thicknessM, stressPa);
+        fibres.add(e);
+        return e;
+    }
+
     /** Adds a rigid link whose length is the nodes' current distance (must be > 0). */
     public RigidLink addRigidLink(Node a, Node b) {
         own(a);
@@ -175,6 +201,11 @@ public final class Topology {
     /** The membrane triangles, in the order added. */
     public List<TriangleElement> triangles() {
         return Collections.unmodifiableList(triangles);
+    }
+
+    /** The active fibre tensions, in the order added. */
+    public List<ActiveFibre> fibres() {
+        return Collections.unmodifiableList(fibres);
     }
 
     public List<RigidLink> rigidLinks() {

@@ -3,7 +3,8 @@ package org.tensim.solver;
 /**
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
- * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one).
+ * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
+ * active fibre tensions ({@link FibreTension}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -112,6 +113,8 @@ public final class ForceModel {
             TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping,
                     s.triangleCount(), px, tv, f);
         }
+        // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
+        s.fibres.forces(t, px, f);
     }
 
     /**

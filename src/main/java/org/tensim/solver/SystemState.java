@@ -70,6 +70,9 @@ public final class SystemState {
     /** Ids of the nodes that belong to at least one rigid link, each once. */
     public final int[] linkNodes;
 
+    /** Active fibre tensions ({@link FibreTension}; count 0 when the topology has none). */
+    public final FibreTension fibres;
+
     /** Nodes that carry external forces, and the laws (parallel arrays). */
     public final int[] forceNode;
     public final ForceLaw[] forceLaw;
@@ -174,6 +177,8 @@ public final class SystemState {
             triDamping[e] = te.dampingS();
             triangleDamping |= te.dampingS() != 0;
         }
+
+        fibres = new FibreTension(t.fibres());
 
         List<RigidLink> l = t.rigidLinks();
         linkA = new int[l.size()];

@@ -22,7 +22,7 @@ class TriangleElementTest {
     private static final double T = 2e-3;
 
     /** Random triangles among a few nodes; half of them with midpoint corners. */
-    private static Topology randomElements(Random rnd, double nu) {
+    static Topology randomElements(Random rnd, double nu) {
         Topology t = new Topology();
         int n = 9;
         for (int i = 0; i < n; i++) {

@@ -147,6 +147,21 @@ public final class ResolutionStudy {
     }
 
     /**
+     * The double dome family at the given ring counts only (ascending; the finest is the reference), for
+     * a quicker study than {@link #run}: no BodyParts3D family and no pick written (a pick needs the
+     * default 43-ring reference). Writes resolution.csv/json/png to {@code out}.
+     */
+    public static Map<String, Object> runRings(Setup s, int[] rings, Path out) throws IOException {
+        Files.createDirectories(out);
+        List<Run> family = new ArrayList<>();
+        for (int r : rings) {
+            TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(r));
+            family.add(simulate("double dome", r + " rings", TwoSurfaces.split(m), s));
+        }
+        return report(List.of(family), s, out);
+    }
+
+    /**
      * The study on a given mesh: decimated at {@code cellsMm} (empty: 4, 2.8 and 2 times its mean
      * edge length), as given, and refined {@code refineLevels} times by midpoint subdivision.
      */

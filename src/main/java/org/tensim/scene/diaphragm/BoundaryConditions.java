@@ -14,7 +14,8 @@ import org.tensim.model.Check;
  *                            each node in the band gets {@code k_i = k_b A_i / 2 * taper(d_i)} (half per face)
  * @param bandTaperM          band: width over which the tie's stiffness falls smoothly to zero at the band's outer
  *                            edge (the attachment threshold), m; in [0, threshold]
- * @param muscleLoad          {@link MuscleLoad#PRESSURE} (default) or the paper's {@link MuscleLoad#PAPER_NODES}
+ * @param muscleLoad          {@link MuscleLoad#PRESSURE} (default), the paper's {@link MuscleLoad#PAPER_NODES} or
+ *                            active fibre tension {@link MuscleLoad#FIBRES}
  * @param costalOriginsOnly   band: attach only to the diaphragm's anatomical origins (ribs 7-12 and their
  *                            cartilages, the xiphoid, the spine) rather than to any cage segment
  */
@@ -53,13 +54,19 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
          * elements), integrated over each triangle with a 16-point rule and shared among its corners by
          * the linear shape functions (the consistent load vector of a linear element).
          */
-        PRESSURE
+        PRESSURE,
+        /**
+         * Active fibre tension: a membrane tension {@code T = P s(t) t} (P read as an active stress, Pa; t the
+         * thickness) along the meridians to the central tendon on every muscle triangle, which pulls the tendon
+         * down by tensing the walls instead of pushing on them ({@link MuscleFibres}).
+         */
+        FIBRES
     }
 
     public BoundaryConditions {
         if (attachment == null || muscleLoad == null) {
             throw new IllegalArgumentException("attachment model and muscle load model must be given"
-                    + " (band or paper-threshold; pressure or paper-nodes)");
+                    + " (band or paper-threshold; pressure, paper-nodes or fibres)");
         }
         Check.positive("attachment band stiffness", "Pa/m", bandStiffnessPaPerM);
         Check.nonNegative("attachment band taper", "m", bandTaperM);
@@ -94,7 +101,7 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, muscleLoad, only);
     }
 
-    /** Parses a model name as given on the command line: "band", "paper-threshold", "pressure", "paper-nodes". */
+    /** Parses a model name as given on the command line: "band", "paper-threshold", "pressure", "paper-nodes", "fibres". */
     public static <E extends Enum<E>> E parse(Class<E> type, String name) {
         for (E e : type.getEnumConstants()) {
             if (e.name().toLowerCase(Locale.ROOT).replace('_', '-').equals(name)) {

@@ -19,7 +19,7 @@ import org.tensim.solver.stability.ModalBounds;
  * thickness columns, muscle, abdominal support, damping) on private state, and hands everything
  * the scene holds back as one {@link Parts} record. The formulas are documented on
  * DiaphragmScene, the attachment band on {@link AttachmentBand}, the muscle's load on
- * {@link MusclePressure}. The few fields left package-visible are the attachment strategies'
+ * {@link MusclePressure} or {@link MuscleFibres}. The few fields left package-visible are the attachment strategies'
  * view of the build ({@link AttachmentBand}, {@link ThresholdAttachment}): the mesh, the
  * topology and springs being built, the node areas and the cage, and what they record.
  */
@@ -279,6 +279,14 @@ final class DiaphragmSceneBuilder {
 
     private void muscle(List<ActionLines.Line> l) {
         lines = new ActionLines(l, cycle, controls);
+        if (bc.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
+            boolean[] tendon = new boolean[nv];
+            for (int v = 0; v < nv; v++) {
+                tendon[v] = labels[v] == DiaphragmScene.TENDON;
+            }
+            MuscleFibres.add(t, mesh, p.tendonNormal(), tendonCut, tendon, area, thickness, lines);
+            return;
+        }
         double[] w = MusclePressure.weights(mesh, lines, bc.muscleLoad(), p.tendonNormal(), tendonCut, labels, area);
         for (int v = 0; v < nv; v++) {
             if (w[v] > 0 && !t.node(v).isDriven() && !t.node(v).isFixed()) {

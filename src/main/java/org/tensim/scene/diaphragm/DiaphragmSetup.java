@@ -33,6 +33,16 @@ public final class DiaphragmSetup {
             "rib-sternum-bounds-mm.json");
     /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
     public static final double DEFAULT_MUSCLE_PA = 2600;
+    /**
+     * Default peak active fibre stress, Pa, for {@link BoundaryConditions.MuscleLoad#FIBRES} (docs/diaphragm.md,
+     * "Active fibre tension": gives a quiet-breathing dome excursion on the default mesh).
+     */
+    public static final double DEFAULT_FIBRE_STRESS_PA = 15_000;
+
+    /** The default muscle amplitude of a muscle-load model, Pa: an active stress for fibres, else a pressure. */
+    public static double defaultMusclePa(BoundaryConditions.MuscleLoad model) {
+        return model == BoundaryConditions.MuscleLoad.FIBRES ? DEFAULT_FIBRE_STRESS_PA : DEFAULT_MUSCLE_PA;
+    }
 
     /** How the two boundary surfaces were obtained. */
     public enum SurfaceMode { SHELL, OFFSET }

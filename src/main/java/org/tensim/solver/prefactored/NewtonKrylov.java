@@ -88,7 +88,7 @@ final class NewtonKrylov {
             if (residual(beta) == 0) {
                 break;
             }
-            jacobian.linearise(xIt, beta);
+            jacobian.linearise(t1, xIt, beta);
             conjugateGradient(precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {
                 for (int c = 0; c < 3; c++) {

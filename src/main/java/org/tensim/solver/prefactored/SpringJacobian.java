@@ -19,6 +19,8 @@ import org.tensim.solver.TriangleTangent;
  * only (those nodes are eliminated). Membrane triangles add {@code beta^2 K_T}, their tangent
  * stiffness with the compressive part of the stress dropped ({@link TriangleTangent}), which keeps
  * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
+ * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
+ * semi-definite), at the new step's time.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -54,8 +56,8 @@ final class SpringJacobian {
         }
     }
 
-    /** Linearises at the positions px (full layout) for the step weight beta (s). */
-    void linearise(double[] px, double beta) {
+    /** Linearises at time t (s) and positions px (full layout) for the step weight beta (s). */
+    void linearise(double t, double[] px, double beta) {
         final int[] sa = s.springA;
         final int[] sb = s.springB;
         final double[] kk = s.springK;
@@ -68,6 +70,7 @@ final class SpringJacobian {
         if (triangles != null) {
             triangles.linearise(px, true);
         }
+        s.fibres.linearise(t, px);
         for (int i = 0; i < sa.length; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
@@ -129,5 +132,6 @@ final class SpringJacobian {
         if (triangles != null) {
             triangles.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
+        s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
     }
 }

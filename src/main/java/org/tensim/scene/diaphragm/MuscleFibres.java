@@ -1,0 +1,120 @@
+package org.tensim.scene.diaphragm;
+
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+
+/**
+ * The muscle's action as active fibre tension ({@link BoundaryConditions.MuscleLoad#FIBRES};
+ * package-private): every triangle of the shell's two faces on the muscle's side of the tendon plane
+ * gets an {@link org.tensim.model.ActiveFibre} of thickness t/2 (half per face, as the pressure's
+ * load) and active stress {@code sigma_a(t) = P s(t)}, P the live muscle amplitude of
+ * {@link DiaphragmControls} read as an active stress (Pa) and s(t) the breathing level. The tension
+ * {@code T = sigma_a t} (N/m) is the same on every muscle triangle: along one fibre the tension of a
+ * contracting muscle does not vary, so no weighting by the action lines applies. A triangle cut by
+ * the tendon plane counts with its muscle area fraction (exact for a plane cutting a linear triangle).
+ *
+ * <p>Fibre direction: the meridian towards the tendon. The diaphragm's costal, sternal and crural
+ * fibres run from their origins on the ribs, the xiphoid and the spine up the zone of apposition
+ * and over the domes, converging radially on the central tendon (Gray's Anatomy, 41st ed., ch. 63;
+ * De Troyer and Boriek 2011, Compr. Physiol. 1:1273, "Mechanics of the respiratory muscles"). With
+ * c the centre of the tendon (the area-weighted mean of its vertices) and r the horizontal direction
+ * from c to the triangle's centroid, the circumferential direction is {@code e_z x r} and the fibre
+ * {@code f = n x (e_z x r)} (n the triangle's unit normal): in the triangle's plane, perpendicular to
+ * the circle around the tendon's centre, so horizontal and radial on flat parts and vertical on the
+ * steep walls of the zone of apposition. Where the plane holds the circumferential direction (a
+ * radial, vertical wall: |f| &lt; 0.05) the meridian is not defined and the triangle gets no fibre.
+ */
+final class MuscleFibres {
+    /** Smallest accepted |n x (e_z x r)| for a triangle to carry a fibre. */
+    static final double MIN_MERIDIAN = 0.05;
+
+    private MuscleFibres() {
+    }
+
+    /**
+     * Adds the fibres to t (node ids = mesh vertex ids) and returns how many were added.
+     *
+     * @param normal  the tendon plane's normal (unit); points with {@code normal . x >= cut} are tendon
+     * @param cut     the plane's offset, m
+     * @param tendon  per vertex: tendon (true) or muscle
+     * @param area    vertex area shares, m^2 (weights of the tendon's centre)
+     * @param thicknessM the diaphragm's thickness t, m
+     */
+    static int add(Topology t, TriangleMesh m, Vec3 normal, double cut, boolean[] tendon, double[] area,
+            double thicknessM, ActionLines lines) {
+        double cx = 0;
+        double cy = 0;
+        double w = 0;
+        for (int v = 0; v < m.vertexCount(); v++) {
+            if (tendon[v]) {
+                cx += area[v] * m.coord(v, 0);
+                cy += area[v] * m.coord(v, 1);
+                w += area[v];
+            }
+        }
+        if (!(w > 0)) {
+            throw new IllegalArgumentException("muscle load 'fibres' needs a central tendon to direct the fibres to,"
+                    + " and the tendon plane leaves none; expected a tendon fraction above 0");
+        }
+        cx /= w;
+        cy /= w;
+        int added = 0;
+        double[] h = new double[3];
+        for (int tr = 0; tr < m.triangleCount(); tr++) {
+            int[] c = {m.corner(tr, 0), m.corner(tr, 1), m.corner(tr, 2)};
+            Vec3[] y = new Vec3[3];
+            for (int k = 0; k < 3; k++) {
+                y[k] = new Vec3(m.coord(c[k], 0), m.coord(c[k], 1), m.coord(c[k], 2));
+                h[k] = normal.dot(y[k]) - cut;
+            }
+            double fraction = muscleFraction(h);
+            if (fraction == 0) {
+                continue;
+            }
+            Vec3 g = y[0].plus(y[1]).plus(y[2]).times(1.0 / 3);
+            Vec3 n = cross(y[1].minus(y[0]), y[2].minus(y[0])).normalized();
+            Vec3 r = new Vec3(g.x() - cx, g.y() - cy, 0);
+            if (!(r.norm() > 0)) {
+                continue;
+            }
+            Vec3 f = cross(n, cross(new Vec3(0, 0, 1), r.normalized()));
+            if (f.norm() < MIN_MERIDIAN) {
+                continue;
+            }
+            t.addFibre(c, c, f, 0.5 * thicknessM * fraction, lines::pressurePa);
+            added++;
+        }
+        return added;
+    }
+
+    /**
+     * The share of a linear triangle's area on the muscle side (h &lt; 0) of a plane, from its corners'
+     * signed heights h: 1 or 0 when all are on one side, else the corner triangle cut off by the
+     * plane, {@code h_k^2 / ((h_k - h_l) (h_k - h_m))} for the corner k alone on its side.
+     */
+    static double muscleFraction(double[] h) {
+        int below = 0;
+        for (double v : h) {
+            below += v < 0 ? 1 : 0;
+        }
+        if (below == 0 || below == 3) {
+            return below == 3 ? 1 : 0;
+        }
+        for (int k = 0; k < 3; k++) {
+            boolean alone = (h[k] < 0) == (below == 1);
+            if (alone) {
+                double hk = h[k];
+                double hl = h[(k + 1) % 3];
+                double hm = h[(k + 2) % 3];
+                double corner = hk * hk / ((hk - hl) * (hk - hm));
+                return below == 1 ? corner : 1 - corner;
+            }
+        }
+        throw new IllegalStateException("unreachable: a cut triangle has a corner alone on its side");
+    }
+
+    private static Vec3 cross(Vec3 a, Vec3 b) {
+        return new Vec3(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(), a.x() * b.y() - a.y() * b.x());
+    }
+}
