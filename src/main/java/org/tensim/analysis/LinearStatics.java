@@ -9,12 +9,15 @@ import org.hipparchus.linear.RealVector;
 import org.hipparchus.util.IterationManager;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.TriangleTangent;
 
 /**
  * Small-displacement statics of a spring network about its rest state: solves {@code K u = f}
  * with Hipparchus' conjugate gradients (Jacobi preconditioner), K applied spring by spring,
  * {@code K_ij = -k n n^T} for a spring of stiffness k along the unit vector n between its nodes
- * (no prestress: every spring at its rest length). Fixed degrees of freedom have u = 0.
+ * (no prestress: every spring at its rest length), and the membrane triangles' linear
+ * constant-strain stiffness ({@link TriangleTangent} at rest). Fixed degrees of freedom have u = 0.
  * Rigid links (disjoint) are kept to first order, {@code n . (u_b - u_a) = 0}, by tying the
  * component of u_b along the link's direction n to u_a's: CG runs on {@code T^T K T} with
  * {@code u = T z}.
@@ -64,6 +67,10 @@ public final class LinearStatics {
                 diag[3 * b[s] + i] += kii;
             }
         }
+        TriangleTangent triangles = t.triangles().isEmpty() ? null : new TriangleTangent(SystemState.compile(t));
+        if (triangles != null) {
+            triangles.addDiagonal(diag, 1, 0);
+        }
         for (int i = 0; i < n; i++) {
             if (fixed[i] || diag[i] == 0) {
                 diag[i] = 1;
@@ -99,6 +106,12 @@ public final class LinearStatics {
                     y[3 * b[s]] += fx;
                     y[3 * b[s] + 1] += fy;
                     y[3 * b[s] + 2] += fz;
+                }
+                if (triangles != null) {
+                    for (int i = 0; i < n; i++) {
+                        x[i] = fixed[i] ? 0 : x[i];
+                    }
+                    triangles.multiplyAdd(x, y, null);
                 }
                 ties.reduce(y, z);
                 for (int i = 0; i < n; i++) {

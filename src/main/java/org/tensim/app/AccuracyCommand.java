@@ -55,7 +55,7 @@ public final class AccuracyCommand implements Callable<Integer> {
     Integer rungs;
 
     @Option(names = "--shell", paramLabel = "MODEL",
-            description = "tissue model of the shell statics section: material, paper or none (default: ${DEFAULT-VALUE})")
+            description = "tissue model of the shell statics section: material, springs, paper or none (default: ${DEFAULT-VALUE})")
     String shell = "material";
 
     @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]",

@@ -124,9 +124,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double tendonFraction = DiaphragmParameters.defaults().tendonAreaFraction();
 
     @Option(names = "--tissue-model", paramLabel = "NAME",
-            description = "how the springs come from the tissue: material (identified from E, nu and t: Kirchhoff"
-                    + " bending, rigid columns) or paper (the model the paper's figures were reproduced with)"
-                    + " (default: ${DEFAULT-VALUE}; docs/diaphragm.md)")
+            description = "how the shell comes from the tissue: material (identified from E, nu and t: membrane"
+                    + " triangles, Kirchhoff bending, rigid columns), springs (the same with edge springs only) or"
+                    + " paper (the model the paper's figures were reproduced with) (default: ${DEFAULT-VALUE};"
+                    + " docs/diaphragm.md)")
     String tissueModel = DiaphragmParameters.defaults().tissueModel().name().toLowerCase();
 
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,

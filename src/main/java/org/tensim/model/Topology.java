@@ -5,8 +5,9 @@ import java.util.Collections;
 import java.util.List;
 
 /**
- * How a scene is authored: nodes (mass points), springs, rigid links, external
- * nodal forces, gravity and global viscous damping. A topology is compiled into a
+ * How a scene is authored: nodes (mass points), springs, membrane triangles
+ * ({@link TriangleElement}), rigid links, external nodal forces, gravity and global
+ * viscous damping. A topology is compiled into a
  * flat simulation state by the solver ({@code org.tensim.solver.SystemState});
  * authoring objects are never touched while a simulation runs.
  *
@@ -20,6 +21,7 @@ public final class Topology {
     private final List<Node> nodes = new ArrayList<>();
     private final List<Spring> springs = new ArrayList<>();
     private final List<RigidLink> links = new ArrayList<>();
+    private final List<TriangleElement> triangles = new ArrayList<>();
     private final List<NodalForce> forces = new ArrayList<>();
     private Vec3 gravity = Vec3.ZERO;
     private double viscousDamping;
@@ -66,6 +68,44 @@ public final class Topology {
         Spring s = new Spring(a, b, stiffness, restLength, damping);
         springs.add(s);
         return s;
+    }
+
+    /**
+     * Adds a membrane triangle on three nodes, at rest in their current positions.
+     *
+     * @param thicknessM t, m (&gt; 0)
+     * @param youngPa    Young's modulus E, Pa (&gt; 0)
+     * @param poisson    Poisson's ratio nu, in (-1, 0.5]
+     */
+    public TriangleElement addTriangle(int a, int b, int c, double thicknessM, double youngPa, double poisson) {
+        int[] corners = {a, b, c};
+        return addTriangle(corners, corners, thicknessM, youngPa, poisson, 0);
+    }
+
+    /**
+     * Adds a membrane triangle whose corner k is the midpoint of nodes {@code p[k]} and {@code q[k]}
+     * (equal for a plain corner), at rest in their current positions; see {@link TriangleElement}.
+     *
+     * @param thicknessM t, m (&gt; 0)
+     * @param youngPa    Young's modulus E, Pa (&gt; 0)
+     * @param poisson    Poisson's ratio nu, in (-1, 0.5]
+     * @param dampingS   stiffness-proportional (Kelvin-Voigt) damping time beta, s (&gt;= 0; 0 undamped)
+     */
+    public TriangleElement addTriangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson,
+            double dampingS) {
+        if (p.length != 3 || q.length != 3) {
+            throw new IllegalArgumentException("a triangle element needs 3 corners, got " + p.length + " and "
+                    + q.length + " node ids");
+        }
+        Vec3[] rest = new Vec3[3];
+        for (int k = 0; k < 3; k++) {
+            Check.index("triangle corner node", p[k], nodes.size());
+            Check.index("triangle corner node", q[k], nodes.size());
+            rest[k] = nodes.get(p[k]).position().plus(nodes.get(q[k]).position()).times(0.5);
+        }
+        TriangleElement e = new TriangleElement(p, q, rest, thicknessM, youngPa, poisson, dampingS);
+        triangles.add(e);
+        return e;
     }
 
     /** Adds a rigid link whose length is the nodes' current distance (must be > 0). */
@@ -132,6 +172,11 @@ public final class Topology {
         return Collections.unmodifiableList(springs);
     }
 
+    /** The membrane triangles, in the order added. */
+    public List<TriangleElement> triangles() {
+        return Collections.unmodifiableList(triangles);
+    }
+
     public List<RigidLink> rigidLinks() {
         return Collections.unmodifiableList(links);
     }
@@ -164,7 +209,8 @@ public final class Topology {
 
     @Override
     public String toString() {
-        return "Topology[" + nodes.size() + " nodes, " + springs.size() + " springs, " + links.size()
+        return "Topology[" + nodes.size() + " nodes, " + springs.size() + " springs, " + triangles.size()
+                + " triangles, " + links.size()
                 + " rigid links, " + forces.size() + " forces]";
     }
 }

@@ -108,14 +108,14 @@ final class DivergenceMonitor {
             // First step: the energy the run starts with (e.g. a released stretch) is the first reference.
             floor = floor(s);
             gravity0 = forces.gravityEnergy();
-            lastEnergy = forces.kineticEnergy() + forces.springEnergy(x);
+            lastEnergy = forces.kineticEnergy() + forces.elasticEnergy(x);
             return;
         }
         if (step % interval != 0) {
             return;
         }
         double kinetic = forces.kineticEnergy();
-        double spring = forces.springEnergy(x);
+        double spring = forces.elasticEnergy(x);
         double dGravity = forces.gravityEnergy() - gravity0;
         double e = kinetic + spring + dGravity;
         double exchanged = kinetic + spring + Math.abs(dGravity);
@@ -178,6 +178,10 @@ final class DivergenceMonitor {
         for (int i = 0; i < s.springCount(); i++) {
             double d = FLOOR_STRAIN * s.springL[i];
             e += 0.5 * s.springK[i] * d * d;
+        }
+        for (int i = 0; i < s.triangleCount(); i++) {
+            // Energy of a triangle stretched by the same strain along one axis: (mu + lambda / 2) eps^2.
+            e += (s.triMu[i] + 0.5 * s.triLambda[i]) * FLOOR_STRAIN * FLOOR_STRAIN;
         }
         return e > 0 ? e : Double.MIN_NORMAL;
     }

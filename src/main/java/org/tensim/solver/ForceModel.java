@@ -2,7 +2,8 @@ package org.tensim.solver;
 
 /**
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
- * viscous damping, external nodal forces, and linear springs with axial damping.
+ * viscous damping, external nodal forces, linear springs with axial damping, and the
+ * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -102,6 +103,26 @@ public final class ForceModel {
         } else {
             springs(px, f);
         }
+        // A replacement spring pass (e.g. multi-threaded) covers springs only: the triangles are
+        // added here, serially, for every integrator.
+        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
+                px, s.triangleDamping ? pv : null, f);
+    }
+
+    /** Membrane triangle elastic forces only (no damping), added to f. */
+    public void triangles(double[] px, double[] f) {
+        TriangleKernels.forces(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triDamping, s.triangleCount(),
+                px, null, f);
+    }
+
+    /** Elastic energy of the membrane triangles at positions px, J. */
+    public double triangleEnergy(double[] px) {
+        return TriangleKernels.energy(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triangleCount(), px);
+    }
+
+    /** Elastic energy of springs and membrane triangles at positions px, J. */
+    public double elasticEnergy(double[] px) {
+        return springEnergy(px) + triangleEnergy(px);
     }
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */
@@ -155,8 +176,8 @@ public final class ForceModel {
         return e;
     }
 
-    /** Kinetic + spring + gravity energy of the current state, J (external forces excluded). */
+    /** Kinetic + elastic (springs, triangles) + gravity energy of the current state, J (external forces excluded). */
     public double totalEnergy() {
-        return kineticEnergy() + springEnergy(s.x) + gravityEnergy();
+        return kineticEnergy() + elasticEnergy(s.x) + gravityEnergy();
     }
 }

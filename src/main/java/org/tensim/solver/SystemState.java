@@ -8,6 +8,7 @@ import org.tensim.model.Node;
 import org.tensim.model.RigidLink;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
+import org.tensim.model.TriangleElement;
 import org.tensim.model.Vec3;
 import org.tensim.solver.stability.CriticalTimeStep;
 
@@ -44,6 +45,23 @@ public final class SystemState {
     /** Spring axial damping, N s/m. */
     public final double[] springC;
 
+    /**
+     * Membrane triangles ({@link TriangleElement}, {@link TriangleKernels}): corner k of element e is
+     * the midpoint of nodes {@code triP[3e+k]} and {@code triQ[3e+k]}; triP3, triQ3 the same as array
+     * offsets (3 x node id).
+     */
+    public final int[] triP;
+    public final int[] triQ;
+    public final int[] triP3;
+    public final int[] triQ3;
+    /** Rest-frame inverse {@code D_m^-1} per element, row-major, 1/m (4 per element). */
+    public final double[] triRest;
+    /** {@code A t mu} and {@code A t lambda} (plane stress) per element, J. */
+    public final double[] triMu;
+    public final double[] triLambda;
+    /** Kelvin-Voigt damping time beta per element, s (0: undamped). */
+    public final double[] triDamping;
+
     /** Rigid link end points (node ids). */
     public final int[] linkA;
     public final int[] linkB;
@@ -66,6 +84,8 @@ public final class SystemState {
 
     /** True when at least one spring has axial damping (selects the force loop). */
     boolean axialDamping;
+    /** True when at least one membrane triangle is damped. */
+    boolean triangleDamping;
 
     double gx;
     double gy;
@@ -129,6 +149,32 @@ public final class SystemState {
             axialDamping |= sp.damping() != 0;
         }
 
+        List<TriangleElement> tris = t.triangles();
+        triP = new int[3 * tris.size()];
+        triQ = new int[3 * tris.size()];
+        triP3 = new int[3 * tris.size()];
+        triQ3 = new int[3 * tris.size()];
+        triRest = new double[4 * tris.size()];
+        triMu = new double[tris.size()];
+        triLambda = new double[tris.size()];
+        triDamping = new double[tris.size()];
+        for (int e = 0; e < tris.size(); e++) {
+            TriangleElement te = tris.get(e);
+            for (int k = 0; k < 3; k++) {
+                triP[3 * e + k] = te.p(k);
+                triQ[3 * e + k] = te.q(k);
+                triP3[3 * e + k] = 3 * te.p(k);
+                triQ3[3 * e + k] = 3 * te.q(k);
+            }
+            for (int k = 0; k < 4; k++) {
+                triRest[4 * e + k] = te.restInverse(k);
+            }
+            triMu[e] = te.muVolume();
+            triLambda[e] = te.lambdaVolume();
+            triDamping[e] = te.dampingS();
+            triangleDamping |= te.dampingS() != 0;
+        }
+
         List<RigidLink> l = t.rigidLinks();
         linkA = new int[l.size()];
         linkB = new int[l.size()];
@@ -176,6 +222,11 @@ public final class SystemState {
         return springA.length;
     }
 
+    /** Number of membrane triangles. */
+    public int triangleCount() {
+        return triMu.length;
+    }
+
     public int linkCount() {
         return linkA.length;
     }
@@ -208,7 +259,7 @@ public final class SystemState {
 
     /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
     public boolean velocityDependentForces() {
-        return axialDamping || viscousDamping != 0;
+        return axialDamping || triangleDamping || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -225,6 +276,26 @@ public final class SystemState {
     public void setSpringStiffness(int s, double k) {
         Check.index("spring", s, springK.length);
         springK[s] = Check.nonNegative("spring " + s + " stiffness", "N/m", k);
+        parameterVersion++;
+        criticalTimeStep = null;
+    }
+
+    /**
+     * Gives membrane triangle e the constants of {@code te} (moduli, thickness, damping; its corners
+     * and rest shape must be the same); takes effect at the next force pass.
+     */
+    public void setTriangleConstants(int e, TriangleElement te) {
+        Check.index("triangle", e, triMu.length);
+        for (int k = 0; k < 3; k++) {
+            if (te.p(k) != triP[3 * e + k] || te.q(k) != triQ[3 * e + k]) {
+                throw new IllegalArgumentException("triangle " + e + " has other corners in the new constants: only"
+                        + " constants may change, not the topology");
+            }
+        }
+        triMu[e] = te.muVolume();
+        triLambda[e] = te.lambdaVolume();
+        triDamping[e] = te.dampingS();
+        triangleDamping |= te.dampingS() != 0;
         parameterVersion++;
         criticalTimeStep = null;
     }
@@ -254,9 +325,18 @@ public final class SystemState {
      */
     public CriticalTimeStep criticalTimeStep() {
         if (criticalTimeStep == null) {
-            criticalTimeStep = CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0);
+            criticalTimeStep = estimateCriticalTimeStep();
         }
         return criticalTimeStep;
+    }
+
+    /**
+     * A new critical time step estimate (springs and membrane triangles, at the rest positions),
+     * not cached: for a thread other than the simulation's.
+     */
+    public CriticalTimeStep estimateCriticalTimeStep() {
+        return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0,
+                triangleCount() == 0 ? org.tensim.solver.stability.ExtraStiffness.NONE : new TriangleTangent(this));
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

@@ -18,29 +18,37 @@ class ShellStaticsTest {
     private static final ShellMaterial MUSCLE = new ShellMaterial(40e3, 1.0 / 3, 0.0025, 1060);
 
     @Test
-    void patchTestGivesTheUniformStretchOnRegularMeshesOfEverySize() {
-        for (FlatMeshes.Pattern p : List.of(FlatMeshes.Pattern.EQUILATERAL, FlatMeshes.Pattern.RIGHT)) {
-            for (int cells : new int[] {6, 10}) {
-                ShellStatics.Case c = ShellStatics.patch(MUSCLE, TissueModel.MATERIAL, p, cells, 0.1, 0.05, 100);
-                assertTrue(c.relativeError() < 0.01, p + " " + cells + " cells: stretch " + c.measured()
-                        + " against sigma / E = " + c.exact());
+    void patchTestGivesTheUniformStretchOnEveryMeshAndEveryPoissonRatio() {
+        for (double nu : new double[] {1.0 / 3, 0.45}) {
+            for (FlatMeshes.Pattern p : FlatMeshes.Pattern.values()) {
+                for (int cells : new int[] {6, 10}) {
+                    ShellStatics.Case c = ShellStatics.patch(MUSCLE.withPoisson(nu), TissueModel.MATERIAL, p, cells,
+                            0.1, 0.05, 100);
+                    assertTrue(c.relativeError() < 0.01, "nu " + nu + ", " + p + " " + cells + " cells: stretch "
+                            + c.measured() + " against sigma / E = " + c.exact());
+                }
             }
         }
+        // Edge springs alone (Van Gelder) are not exact on distorted triangles.
+        ShellStatics.Case springs = ShellStatics.patch(MUSCLE, TissueModel.SPRINGS, FlatMeshes.Pattern.JITTERED, 10,
+                0.1, 0.05, 100);
+        assertTrue(springs.relativeError() > 0.03, "edge springs on a jittered mesh: " + springs.relativeError());
     }
 
     @Test
-    void clampedPlateApproachesKirchhoffAndConvergesWithRefinement() {
+    void clampedPlateApproachesKirchhoffAtSecondOrder() {
         List<ShellStatics.Case> cases = new ArrayList<>();
-        for (int rings : new int[] {4, 6, 9}) {
-            cases.add(ShellStatics.plate(MUSCLE, TissueModel.MATERIAL, rings, 0.06, 1));
+        for (int rings : new int[] {10, 14, 20}) {
+            cases.add(ShellStatics.plate(MUSCLE, TissueModel.MATERIAL, rings, ShellStudy.PLATE_RADIUS_M, 1));
         }
-        for (ShellStatics.Case c : cases) {
-            assertEquals(c.exact(), c.measured(), 0.1 * c.exact(), "h = " + c.elementSizeM() + " m");
+        for (int i = 1; i < cases.size(); i++) {
+            assertTrue(cases.get(i).relativeError() < cases.get(i - 1).relativeError(), "error falls with h: "
+                    + cases.get(i - 1).relativeError() + " then " + cases.get(i).relativeError());
         }
-        // Successive refinements change the deflection less and less (a converging sequence).
-        double d1 = Math.abs(cases.get(1).measured() - cases.get(0).measured());
-        double d2 = Math.abs(cases.get(2).measured() - cases.get(1).measured());
-        assertTrue(d2 < d1, "changes " + d1 + " then " + d2);
+        // The coarse plates are too soft by the diagonals' transverse shear, which falls as h^2.
+        double order = ShellStatics.order(cases);
+        assertTrue(order > 1.5 && order < 2.6, "order " + order);
+        assertEquals(cases.get(2).exact(), cases.get(2).measured(), 0.2 * cases.get(2).exact(), "20 rings");
         // The paper's two faces, each with half the membrane, plus its folding springs: far too stiff in bending.
         ShellStatics.Case paper = ShellStatics.plate(MUSCLE, TissueModel.PAPER, 6, 0.06, 1);
         assertTrue(paper.measured() < 0.4 * paper.exact(), "paper model: w0 = " + paper.measured()

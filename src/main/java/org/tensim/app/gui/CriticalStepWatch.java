@@ -79,8 +79,7 @@ final class CriticalStepWatch {
                 for (int i = 0; i < states.size(); i++) {
                     SystemState st = states.get(i);
                     Integrator in = integrators.get(i);
-                    CriticalTimeStep e = CriticalTimeStep.estimate(st.nodeCount, st.springA, st.springB, st.springK,
-                            st.mass, st.invMass, st.x0);
+                    CriticalTimeStep e = st.estimateCriticalTimeStep();
                     c = Math.min(c, e.forMethod(in.explicit(), in.undampedStabilityLimit()));
                 }
                 if (gen == generation) {

@@ -225,6 +225,7 @@ public final class DiaphragmReport {
         summary.put("diaphragm_nodes", scene.diaphragmNodes());
         summary.put("anchor_nodes", scene.anchorNodes());
         summary.put("springs", scene.topology().springs().size());
+        summary.put("membrane_triangles", scene.topology().triangles().size());
         summary.put("rigid_links", scene.topology().rigidLinks().size());
         summary.put("attached_nodes", scene.attachedNodes());
         summary.put("attached_to_ribs", scene.attachedToRibs());

@@ -70,7 +70,7 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
                     + poissonRatio);
         }
         if (tissueModel == null) {
-            throw new IllegalArgumentException("tissue model must be paper or material, got null");
+            throw new IllegalArgumentException("tissue model must be material, springs or paper, got null");
         }
     }
 

@@ -138,8 +138,8 @@ public final class DiaphragmScene {
     }
 
     /**
-     * Gives the state of a running simulation the spring stiffnesses, spring damping and viscous
-     * damping of topology {@code to}: that of a scene rebuilt from the running one with other
+     * Gives the state of a running simulation the spring stiffnesses, spring damping, membrane
+     * triangles' constants and viscous damping of topology {@code to}: that of a scene rebuilt from the running one with other
      * constants ({@link #rebuiltWith}), or a copy of it made the same way as the running topology
      * (e.g. with the rigid links as springs). Positions, velocities and time are kept.
      *
@@ -159,6 +159,13 @@ public final class DiaphragmScene {
             }
             state.setSpringStiffness(i, sp.stiffness());
             state.setSpringDamping(i, sp.damping());
+        }
+        if (to.triangles().size() != state.triangleCount()) {
+            throw new IllegalArgumentException("the rebuilt scene has " + to.triangles().size() + " membrane triangles,"
+                    + " the running simulation " + state.triangleCount() + ": only constants may change");
+        }
+        for (int i = 0; i < to.triangles().size(); i++) {
+            state.setTriangleConstants(i, to.triangles().get(i));
         }
         state.setViscousDamping(to.viscousDamping());
     }

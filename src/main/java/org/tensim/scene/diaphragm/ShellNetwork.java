@@ -13,16 +13,24 @@ import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.scene.shell.TriangleMembrane;
 
 /**
- * The springs of a two-surface shell ({@link TwoSurfaces}) for a {@link TissueModel}: the faces'
- * membrane springs, and the columns and diagonals across the thickness. Used by the diaphragm and
- * by the flat shells of the accuracy scenes, so both are built by the same rules.
+ * The springs and membrane triangles of a two-surface shell ({@link TwoSurfaces}) for a
+ * {@link TissueModel}: the faces' membrane, the mid-surface's (material model), and the columns and
+ * diagonals across the thickness. Used by the diaphragm and by the flat shells of the accuracy
+ * scenes, so both are built by the same rules.
  */
 public final class ShellNetwork {
-    /** Where springs go (N/m; the first spring on a node pair wins). */
+    /** Where springs (N/m; the first spring on a node pair wins) and membrane triangles go. */
     public interface Sink {
         boolean add(int i, int j, double stiffness);
 
         boolean contains(int i, int j);
+
+        /**
+         * A membrane triangle ({@link org.tensim.model.TriangleElement}) whose corner k is the midpoint of
+         * nodes p[k] and q[k], of thickness {@code thicknessM} (m), Young's modulus {@code youngPa} (Pa)
+         * and Poisson's ratio {@code poisson}.
+         */
+        void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson);
     }
 
     /** Young's modulus of the tissue along an edge (i, j), Pa. */
@@ -40,6 +48,7 @@ public final class ShellNetwork {
     private final ShellMaterial material;
     private final double bendingFactor;
     private final double thickness;
+    private final double shearShare = SandwichShell.SHEAR_SHARE;
     private final Map<Long, double[]> edgeArea = new HashMap<>();
     private final List<List<Integer>> neighbours = new ArrayList<>();
 
@@ -94,11 +103,15 @@ public final class ShellNetwork {
         return s.isUpper(mesh.corner(tr, 1)) == u && s.isUpper(mesh.corner(tr, 2)) == u;
     }
 
-    /** The faces' springs (and, in the paper's model, the folding springs). */
+    /** The faces' springs (and, in the paper's model, the folding springs), or the material model's triangles. */
     public void membrane(Sink springs) {
+        if (model == TissueModel.MATERIAL) {
+            triangles(springs);
+            return;
+        }
         List<Long> keys = new ArrayList<>(edgeArea.keySet());
         Collections.sort(keys); // deterministic order
-        SandwichShell sandwich = model == TissueModel.MATERIAL ? SandwichShell.of(material, thickness) : null;
+        SandwichShell sandwich = model == TissueModel.SPRINGS ? SandwichShell.of(material, thickness) : null;
         for (long e : keys) {
             int i = (int) (e >>> 32);
             int j = (int) e;
@@ -116,6 +129,54 @@ public final class ShellNetwork {
     }
 
     /**
+     * The material model's membrane: every face triangle with the face share c of the thickness, and
+     * for every upper triangle whose corners have partners (at most 3 thicknesses away) a mid-surface
+     * triangle on the midpoints of each corner and its partner, with the mid share. A triangle's
+     * modulus is the mean of its edges' (muscle, tendon).
+     */
+    private void triangles(Sink sink) {
+        SandwichShell sandwich = SandwichShell.ofElements(material, thickness, shearShare);
+        double nu = material.poisson();
+        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
+            if (!onOneFace(tr)) {
+                continue;
+            }
+            int[] c = {mesh.corner(tr, 0), mesh.corner(tr, 1), mesh.corner(tr, 2)};
+            double e = (young.youngPa(c[0], c[1]) + young.youngPa(c[1], c[2]) + young.youngPa(c[2], c[0])) / 3;
+            sink.triangle(c, c, sandwich.faceShare() * thickness, e, nu);
+            int[] q = new int[3];
+            boolean paired = s.isUpper(c[0]);
+            for (int k = 0; k < 3 && paired; k++) {
+                q[k] = s.partner(c[k]);
+                paired = q[k] >= 0 && TwoSurfaces.distance(mesh, c[k], q[k]) <= 3 * thickness;
+            }
+            if (paired && sandwich.midShare() > 0 && midArea(c, q) > 1e-3 * mesh.area(tr)) {
+                sink.triangle(c, q, sandwich.midShare() * thickness, e, nu);
+            }
+        }
+    }
+
+    /** Area of the triangle on the midpoints of p[k] and q[k], m^2. */
+    private double midArea(int[] p, int[] q) {
+        double[] m = new double[9];
+        for (int k = 0; k < 3; k++) {
+            for (int d = 0; d < 3; d++) {
+                m[3 * k + d] = 0.5 * (mesh.coord(p[k], d) + mesh.coord(q[k], d));
+            }
+        }
+        double ax = m[3] - m[0];
+        double ay = m[4] - m[1];
+        double az = m[5] - m[2];
+        double bx = m[6] - m[0];
+        double by = m[7] - m[1];
+        double bz = m[8] - m[2];
+        double cx = ay * bz - az * by;
+        double cy = az * bx - ax * bz;
+        double cz = ax * by - ay * bx;
+        return 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
+    }
+
+    /**
      * The springs across the thickness: none along a rigid link ({@code linkPairs}, keys as
      * {@link #key}); {@code linked[v]} marks the nodes that carry one.
      */
@@ -124,7 +185,8 @@ public final class ShellNetwork {
             PaperShellSprings.thickness(s, area, columnYoungPa, neighbours, springs, linkPairs, linked);
             return;
         }
-        SandwichShell sandwich = SandwichShell.of(material, thickness);
+        SandwichShell sandwich = model == TissueModel.MATERIAL
+                ? SandwichShell.ofElements(material, thickness, shearShare) : SandwichShell.of(material, thickness);
         int nv = mesh.vertexCount();
         boolean[] columnDone = new boolean[nv];
         for (int u = 0; u < nv; u++) {
@@ -165,8 +227,8 @@ public final class ShellNetwork {
 
     /**
      * A shell on its own, one material throughout: node v is vertex v, of mass
-     * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs
-     * (rest length the current distance, undamped) and, in the material model, its rigid columns.
+     * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs and triangles
+     * (at rest in the current positions, undamped) and, in the material models, its rigid columns.
      * For the accuracy scenes.
      */
     public static Topology standalone(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
@@ -191,6 +253,11 @@ public final class ShellNetwork {
             @Override
             public boolean contains(int i, int j) {
                 return pairs.contains(key(i, j));
+            }
+
+            @Override
+            public void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
+                t.addTriangle(p, q, thicknessM, youngPa, poisson, 0);
             }
         };
         ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);

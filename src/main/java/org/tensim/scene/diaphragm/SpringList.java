@@ -4,13 +4,16 @@ import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import org.tensim.model.Topology;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.TriangleTangent;
 import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.solver.stability.ExtraStiffness;
 
 /**
- * Springs collected before they are added to the topology (package-private): the
- * axial damping of every spring depends on the highest frequency of the whole
- * network, known only once all springs are there. Duplicate node pairs are refused
- * silently (the first one wins).
+ * Springs and membrane triangles collected before they are added to the topology
+ * (package-private): the damping of every spring and triangle depends on the highest
+ * frequency of the whole network, known only once all of them are there. Duplicate
+ * spring node pairs are refused silently (the first one wins).
  */
 final class SpringList implements ShellNetwork.Sink {
     private int[] a = new int[1024];
@@ -18,6 +21,20 @@ final class SpringList implements ShellNetwork.Sink {
     private double[] k = new double[1024];
     private int n;
     private final Set<Long> pairs = new HashSet<>();
+    private final java.util.List<Triangle> triangles = new java.util.ArrayList<>();
+
+    /** A membrane triangle waiting for its damping. */
+    private record Triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
+    }
+
+    @Override
+    public void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
+        triangles.add(new Triangle(p.clone(), q.clone(), thicknessM, youngPa, poisson));
+    }
+
+    int triangleCount() {
+        return triangles.size();
+    }
 
     /** Adds a spring of stiffness k (N/m) between nodes i and j; returns false for a duplicate. */
     @Override
@@ -51,9 +68,10 @@ final class SpringList implements ShellNetwork.Sink {
     }
 
     /**
-     * Gershgorin bound on the highest angular frequency of these springs and the
-     * extra ones, rad/s: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} over the free
-     * nodes ({@link CriticalTimeStep#gershgorin}, rows form; PHYSICS.md).
+     * Gershgorin bound on the highest angular frequency of these springs, triangles and the
+     * extra springs, rad/s: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} over the free
+     * nodes ({@link CriticalTimeStep#gershgorin}, rows form; PHYSICS.md), a triangle's
+     * 3 x 3 node blocks counted by their norms.
      */
     double omegaMaxBound(Topology t, java.util.List<int[]> extraPairs, java.util.List<Double> extraK) {
         int total = n + extraPairs.size();
@@ -72,13 +90,37 @@ final class SpringList implements ShellNetwork.Sink {
             mass[i] = node.mass();
             free[i] = !node.isFixed() && !node.isDriven();
         }
-        return CriticalTimeStep.gershgorin(mass.length, sa, sb, sk, total, mass, free, CriticalTimeStep.Form.ROWS);
+        return CriticalTimeStep.gershgorin(mass.length, sa, sb, sk, total, mass, free, CriticalTimeStep.Form.ROWS,
+                triangleStiffness(t));
     }
 
-    /** Adds every spring to t, rest length = current distance, axial damping beta * k (N s/m). */
+    /** The triangles' stiffness at rest, on a copy of t's nodes (their own topology, compiled). */
+    private ExtraStiffness triangleStiffness(Topology t) {
+        if (triangles.isEmpty()) {
+            return ExtraStiffness.NONE;
+        }
+        Topology copy = new Topology();
+        for (var node : t.nodes()) {
+            copy.addNode(node.position(), node.mass());
+        }
+        addTriangles(copy, 0);
+        return new TriangleTangent(SystemState.compile(copy));
+    }
+
+    private void addTriangles(Topology t, double betaS) {
+        for (Triangle tr : triangles) {
+            t.addTriangle(tr.p, tr.q, tr.thicknessM, tr.youngPa, tr.poisson, betaS);
+        }
+    }
+
+    /**
+     * Adds every spring to t, rest length = current distance, axial damping beta * k (N s/m), and
+     * every triangle with the Kelvin-Voigt damping time beta (s).
+     */
     void addTo(Topology t, double betaS) {
         for (int s = 0; s < n; s++) {
             t.addSpring(t.node(a[s]), t.node(b[s]), k[s], betaS * k[s]);
         }
+        addTriangles(t, betaS);
     }
 }

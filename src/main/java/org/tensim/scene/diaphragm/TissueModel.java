@@ -13,18 +13,28 @@ public enum TissueModel {
      */
     PAPER,
     /**
-     * Springs identified element by element from E, nu and t ({@link org.tensim.scene.shell.SandwichShell}):
-     * faces sized for Kirchhoff's bending rigidity, the rest of the membrane on the prisms'
-     * diagonals; no folding springs. Every node's column across the thickness is a rigid link
-     * (Kirchhoff-Love: the normal keeps its length), so that the diagonals' pull across the
-     * thickness cannot thin the shell and take their membrane stiffness away where elements are
-     * as short as the shell is thick; the tendon differs from the muscle by its modulus.
+     * Identified element by element from E, nu and t ({@link org.tensim.scene.shell.SandwichShell#ofElements}):
+     * the membrane as St Venant-Kirchhoff triangles ({@link org.tensim.model.TriangleElement}), exact
+     * for a uniform strain on any mesh and any nu. Each face carries the share {@code c = t^2 / (6 s^2)}
+     * that gives Kirchhoff's bending rigidity; the rest of the membrane, but for a few percent, is a
+     * triangle on the mid-surface (the midpoints of each upper node and its partner), which bending
+     * does not stretch; the remaining few percent are the prisms' diagonal springs, which resist the
+     * faces sliding over each other (transverse shear). Every column across the thickness is a rigid
+     * link (Kirchhoff-Love); no folding springs. The default.
      */
-    MATERIAL;
+    MATERIAL,
+    /**
+     * The same identification with edge springs only (Van Gelder 1998, {@link
+     * org.tensim.scene.shell.TriangleMembrane}): faces sized for Kirchhoff's bending rigidity (for the
+     * network's own nu = 1/3), the rest of the membrane on the prisms' diagonals, rigid columns. Exact
+     * on equilateral triangles at nu = 1/3 only (patch test 8-10 % off on distorted meshes); kept for
+     * comparison.
+     */
+    SPRINGS;
 
     /** Whether every column across the thickness is a rigid link (else only the tendon's). */
     public boolean rigidColumns() {
-        return this == MATERIAL;
+        return this != PAPER;
     }
 
     /** The model of that name (case-insensitive), with the known names in the error. */
@@ -34,6 +44,7 @@ public enum TissueModel {
                 return m;
             }
         }
-        throw new IllegalArgumentException("unknown tissue model '" + name + "': expected paper or material");
+        throw new IllegalArgumentException("unknown tissue model '" + name + "': expected one of "
+                + java.util.Arrays.stream(values()).map(m -> m.name().toLowerCase()).toList());
     }
 }

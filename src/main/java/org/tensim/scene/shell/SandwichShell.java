@@ -3,8 +3,16 @@ package org.tensim.scene.shell;
 /**
  * Identification of a two-surface shell: two triangle membranes (the faces) a distance s apart,
  * joined by through-thickness columns and by diagonals (the edges of the prisms between the
- * faces). It chooses how much of the membrane stiffness the faces carry so that both the
- * membrane and the bending rigidity are the material's.
+ * faces), and (with membrane triangles, {@link #ofElements}) a membrane on the mid-surface. It
+ * chooses how much of the membrane stiffness the faces, the mid-surface and the diagonals carry
+ * so that both the membrane and the bending rigidity are the material's.
+ *
+ * <p><b>With membrane triangles</b> ({@link org.tensim.model.TriangleElement}, the material model):
+ * the faces have the material's nu, so {@code c = t^2 / (6 s^2)}; the mid-surface triangle (corners
+ * at the midpoints of each upper node and its partner) carries {@code 1 - 2c - d} without bending
+ * stiffness (bending leaves the mid-surface unstretched to first order); the diagonals carry
+ * {@code d = }{@link #SHEAR_SHARE} for the transverse shear. The paragraphs below describe the
+ * edge-spring identification ({@link #of}, the springs model).
  *
  * <p><b>Bending.</b> Two faces each of membrane modulus {@code c E t} (a spring network, whose own
  * Poisson ratio is {@code nu_s = 1/3}) at {@code +/- s/2} from the mid-surface bend like a sandwich
@@ -29,11 +37,20 @@ package org.tensim.scene.shell;
  * 15 % too soft at h = 1.25 t, 55 % at 0.64 t; stiffer columns cost the explicit step), so the
  * material model holds the columns rigid (Kirchhoff-Love's inextensible normal).
  */
-public record SandwichShell(double faceShare, double diagonalShare) {
+public record SandwichShell(double faceShare, double midShare, double diagonalShare) {
+    /**
+     * Share of the membrane on the prisms' diagonals in {@link #ofElements}: enough to resist the
+     * faces' sliding (transverse shear), small enough that the diagonals' own inexact membrane
+     * (Van Gelder's springs, up to 10 % off on distorted triangles) moves the patch test by well
+     * under 1 %. Measured on the clamped plate: docs/diaphragm.md, "Resolution study".
+     */
+    public static final double SHEAR_SHARE = 0.03;
+
     public SandwichShell {
-        if (!(faceShare > 0 && faceShare <= 0.5) || Math.abs(faceShare * 2 + diagonalShare - 1) > 1e-12) {
-            throw new IllegalArgumentException("face share must be in (0, 0.5] and the shares must add to 1, got "
-                    + faceShare + " and " + diagonalShare);
+        if (!(faceShare > 0 && faceShare <= 0.5) || !(midShare >= 0) || !(diagonalShare >= 0)
+                || Math.abs(faceShare * 2 + midShare + diagonalShare - 1) > 1e-12) {
+            throw new IllegalArgumentException("face share must be in (0, 0.5], the others >= 0 and the shares must"
+                    + " add to 1, got " + faceShare + " (x2), " + midShare + " and " + diagonalShare);
         }
     }
 
@@ -51,7 +68,28 @@ public record SandwichShell(double faceShare, double diagonalShare) {
             throw new IllegalArgumentException("faces " + separationM + " m apart cannot carry the bending of a "
                     + t + " m shell with nu = " + m.poisson() + ": face share " + c + ", expected <= 0.5");
         }
-        return new SandwichShell(c, 1 - 2 * c);
+        return new SandwichShell(c, 0, 1 - 2 * c);
+    }
+
+    /**
+     * The shares for membrane triangles ({@link org.tensim.model.TriangleElement}, exact for any nu):
+     * faces {@code c = t^2 / (6 s^2)} each (two membranes of modulus {@code c E t / (1 - nu^2)} at
+     * {@code +/- s/2} give {@code D = E t^3 / (12 (1 - nu^2))}), the diagonals {@code shearShare},
+     * the mid-surface the rest.
+     *
+     * @param shearShare the diagonals' share, in [0, 1 - 2c)
+     * @throws IllegalArgumentException when the faces are so far apart that they alone need more
+     *         than half the membrane, or nothing would be left for the mid-surface
+     */
+    public static SandwichShell ofElements(ShellMaterial m, double separationM, double shearShare) {
+        double t = m.thicknessM();
+        double c = t * t / (6 * separationM * separationM);
+        if (!(c > 0 && c <= 0.5) || !(shearShare >= 0 && shearShare < 1 - 2 * c)) {
+            throw new IllegalArgumentException("faces " + separationM + " m apart cannot carry the bending of a "
+                    + t + " m shell with a shear share " + shearShare + ": face share " + c
+                    + ", expected <= 0.5 and 2 x face share + shear share < 1");
+        }
+        return new SandwichShell(c, 1 - 2 * c - shearShare, shearShare);
     }
 
     /** Stiffness of one face edge spring, N/m, from the edge's membrane spring for the whole thickness, N/m. */

@@ -41,6 +41,11 @@ public record ShellMaterial(double youngPa, double poisson, double thicknessM, d
         return new ShellMaterial(pa, poisson, thicknessM, densityKgPerM3);
     }
 
+    /** The same material with another Poisson's ratio. */
+    public ShellMaterial withPoisson(double nu) {
+        return new ShellMaterial(youngPa, nu, thicknessM, densityKgPerM3);
+    }
+
     /** The same material with another thickness, m. */
     public ShellMaterial withThickness(double m) {
         return new ShellMaterial(youngPa, poisson, m, densityKgPerM3);

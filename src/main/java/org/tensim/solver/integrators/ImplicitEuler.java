@@ -5,6 +5,7 @@ import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.SolverSettings;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.TriangleTangent;
 import org.tensim.solver.stability.LinearStability;
 
 /**
@@ -25,6 +26,8 @@ import org.tensim.solver.stability.LinearStability;
  * stiffness block is {@code k (u u^T + max(0, 1 - L/l) (I - u u^T))}: the
  * transverse term of a compressed spring (l &lt; L) is negative and is clamped to
  * zero, which keeps the matrix symmetric positive definite so that CG applies.
+ * Membrane triangles add their tangent stiffness with the compressive stress dropped
+ * ({@link TriangleTangent}), positive semi-definite likewise.
  * Axial damping c adds {@code c u u^T} to C, viscous damping c_v adds c_v I. An
  * approximate Jacobian leaves the order at 1 (a linearly implicit Euler step is
  * first order with any Jacobian); only the stability depends on it.
@@ -71,6 +74,7 @@ public final class ImplicitEuler implements Integrator {
     private double[] blockA; // per spring: alpha, beta of its block of A (see linearise)
     private double[] blockS; // per spring: the same for the stiffness S alone: k (1 - g), k g
     private final double[] scratch = new double[6];
+    private TriangleTangent triangles; // null without membrane triangles
     private SystemState s;
     private double h;
 
@@ -299,6 +303,10 @@ public final class ImplicitEuler implements Integrator {
             dg[b + 1] += ddy;
             dg[b + 2] += ddz;
         }
+        if (triangles != null) {
+            triangles.linearise(px, true);
+            triangles.addDiagonal(dg, h2, h);
+        }
         for (int k = 0; k < dg.length; k++) {
             dg[k] = free[k] / dg[k];
         }
@@ -308,6 +316,9 @@ public final class ImplicitEuler implements Integrator {
     private void applyStiffness(double[] pv, double[] out) {
         java.util.Arrays.fill(out, 0);
         addBlocks(blockS, pv, out);
+        if (triangles != null) {
+            triangles.multiplyAdd(pv, out, null);
+        }
     }
 
     /** out = (M + h C + h^2 S) p on free nodes, 0 on the others. */
@@ -320,6 +331,9 @@ public final class ImplicitEuler implements Integrator {
             out[k] = mt[k] * pv[k];
         }
         addBlocks(blockA, pv, out);
+        if (triangles != null) {
+            triangles.multiplyAdd(pv, out, null, h * h, h);
+        }
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];
         }
@@ -382,6 +396,11 @@ public final class ImplicitEuler implements Integrator {
             dir = new double[3 * ns];
             blockA = new double[2 * ns];
             blockS = new double[2 * ns];
+        }
+        if (st.triangleCount() == 0) {
+            triangles = null;
+        } else if (triangles == null || triangles.state() != st) {
+            triangles = new TriangleTangent(st);
         }
     }
 }

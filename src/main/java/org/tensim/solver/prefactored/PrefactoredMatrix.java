@@ -21,7 +21,9 @@ import org.tensim.solver.SystemState;
  * scheme's weight of the new step (s; h for implicit Euler, 2h/3 for BDF2). Each spring is
  * taken isotropically (k I instead of k u u^T), so A does not depend on the positions: it is
  * the exact Hessian of Liu et al.'s local/global energy, and a preconditioner of the true
- * Jacobian M + beta C + beta^2 K of the springs.
+ * Jacobian M + beta C + beta^2 K of the springs. A membrane triangle adds, likewise isotropically,
+ * {@code (beta^2 + beta beta_e) (2 mu + lambda) A t grad N_k . grad N_l} between its corners k, l (its scalar
+ * Laplacian at the stiffer of its moduli; a midpoint corner shares it equally between its two nodes).
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
@@ -161,7 +163,7 @@ final class PrefactoredMatrix {
     private Triplets assemble(double beta, double[] k, double[] c, double cv) {
         int nf = freeNodes.length;
         int ns = s.springCount();
-        Triplets t = new Triplets(nf + 4 * ns);
+        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount());
         for (int j = 0; j < nf; j++) {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
         }
@@ -178,6 +180,28 @@ final class PrefactoredMatrix {
             if (a >= 0 && b >= 0) {
                 t.add(a, b, -w);
                 t.add(b, a, -w);
+            }
+        }
+        double[] grad = new double[6];
+        for (int e = 0; e < s.triangleCount(); e++) {
+            // Gradients of the corners' shape functions in the rest frame: rows of D_m^-1, and minus their sum.
+            grad[2] = s.triRest[4 * e];
+            grad[3] = s.triRest[4 * e + 1];
+            grad[4] = s.triRest[4 * e + 2];
+            grad[5] = s.triRest[4 * e + 3];
+            grad[0] = -grad[2] - grad[4];
+            grad[1] = -grad[3] - grad[5];
+            double w = (beta * beta + beta * s.triDamping[e]) * (2 * s.triMu[e] + s.triLambda[e]);
+            for (int h = 0; h < 6; h++) {
+                int a = freeIndex[h < 3 ? s.triP[3 * e + h] : s.triQ[3 * e + h - 3]];
+                for (int g = 0; g < 6 && a >= 0; g++) {
+                    int b = freeIndex[g < 3 ? s.triP[3 * e + g] : s.triQ[3 * e + g - 3]];
+                    int ck = h % 3;
+                    int cl = g % 3;
+                    if (b >= 0) {
+                        t.add(a, b, 0.25 * w * (grad[2 * ck] * grad[2 * cl] + grad[2 * ck + 1] * grad[2 * cl + 1]));
+                    }
+                }
             }
         }
         return t;

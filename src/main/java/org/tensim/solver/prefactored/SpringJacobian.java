@@ -1,6 +1,7 @@
 package org.tensim.solver.prefactored;
 
 import org.tensim.solver.SystemState;
+import org.tensim.solver.TriangleTangent;
 
 /**
  * The Jacobian of an implicit step, {@code J = M + beta C + beta^2 K}, on the free nodes
@@ -15,7 +16,9 @@ import org.tensim.solver.SystemState;
  * is clamped to zero, which keeps J symmetric positive definite so that conjugate gradient
  * applies, and keeps Newton's iteration from following a buckling branch; the global viscous
  * damping c_v adds {@code beta c_v I}. Springs to fixed and driven nodes act on the free end
- * only (those nodes are eliminated).
+ * only (those nodes are eliminated). Membrane triangles add {@code beta^2 K_T}, their tangent
+ * stiffness with the compressive part of the stress dropped ({@link TriangleTangent}), which keeps
+ * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -25,6 +28,10 @@ final class SpringJacobian {
     private final double[] dir; // per spring: u_x, u_y, u_z
     private final double[] coef; // per spring: alpha, beta of alpha u u^T + beta I
     private double diagonalTerm; // beta c_v
+    private final TriangleTangent triangles; // null without triangles
+    private final int[] triangleOffset; // per node: 3 x compact index, -1 when not free
+    private double triangleWeight; // beta^2
+    private double triangleDampingWeight; // beta
 
     SpringJacobian(SystemState s, int[] freeIndex, int[] freeNodes) {
         this.s = s;
@@ -40,6 +47,11 @@ final class SpringJacobian {
         }
         dir = new double[3 * ns];
         coef = new double[2 * ns];
+        triangles = s.triangleCount() == 0 ? null : new TriangleTangent(s);
+        triangleOffset = new int[s.nodeCount];
+        for (int i = 0; i < s.nodeCount; i++) {
+            triangleOffset[i] = freeIndex[i] < 0 ? -1 : 3 * freeIndex[i];
+        }
     }
 
     /** Linearises at the positions px (full layout) for the step weight beta (s). */
@@ -51,6 +63,11 @@ final class SpringJacobian {
         final double[] rl = s.springL;
         final double b2 = beta * beta;
         diagonalTerm = beta * s.viscousDamping();
+        triangleWeight = b2;
+        triangleDampingWeight = beta;
+        if (triangles != null) {
+            triangles.linearise(px, true);
+        }
         for (int i = 0; i < sa.length; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
@@ -108,6 +125,9 @@ final class SpringJacobian {
                 out[b + 1] += ay;
                 out[b + 2] += az;
             }
+        }
+        if (triangles != null) {
+            triangles.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
     }
 }

@@ -97,7 +97,14 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
      */
     public static double gershgorin(int n, int[] springA, int[] springB, double[] springK, int springs, double[] mass,
             boolean[] free, Form form) {
+        return gershgorin(n, springA, springB, springK, springs, mass, free, form, ExtraStiffness.NONE);
+    }
+
+    /** The Gershgorin bound of the springs and an {@link ExtraStiffness} together, rad/s. */
+    public static double gershgorin(int n, int[] springA, int[] springB, double[] springK, int springs, double[] mass,
+            boolean[] free, Form form, ExtraStiffness extra) {
         double[] row = new double[n];
+        extra.addGershgorinRows(mass, free, form, row);
         for (int i = 0; i < springs; i++) {
             int a = springA[i];
             int b = springB[i];
@@ -129,7 +136,14 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
     /** Estimates with the default iteration cap and tolerance (arrays as in {@link #estimate(int, int[], int[], double[], double[], double[], double[], int, double)}). */
     public static CriticalTimeStep estimate(int n, int[] springA, int[] springB, double[] springK, double[] mass,
             double[] invMass, double[] x0) {
-        return estimate(n, springA, springB, springK, mass, invMass, x0, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE);
+        return estimate(n, springA, springB, springK, mass, invMass, x0, ExtraStiffness.NONE);
+    }
+
+    /** Estimates with the default cap and tolerance, the springs and {@code extra} together. */
+    public static CriticalTimeStep estimate(int n, int[] springA, int[] springB, double[] springK, double[] mass,
+            double[] invMass, double[] x0, ExtraStiffness extra) {
+        return estimate(n, springA, springB, springK, mass, invMass, x0, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE,
+                extra);
     }
 
     /**
@@ -147,13 +161,19 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
      */
     public static CriticalTimeStep estimate(int n, int[] springA, int[] springB, double[] springK, double[] mass,
             double[] invMass, double[] x0, int maxIterations, double tolerance) {
+        return estimate(n, springA, springB, springK, mass, invMass, x0, maxIterations, tolerance, ExtraStiffness.NONE);
+    }
+
+    /** As {@link #estimate(int, int[], int[], double[], double[], double[], double[], int, double)}, plus {@code extra}. */
+    public static CriticalTimeStep estimate(int n, int[] springA, int[] springB, double[] springK, double[] mass,
+            double[] invMass, double[] x0, int maxIterations, double tolerance, ExtraStiffness extra) {
         final double[] im = invMass;
         boolean[] free = new boolean[n];
         for (int i = 0; i < n; i++) {
             free[i] = im[i] != 0;
         }
-        double gersh = gershgorin(n, springA, springB, springK, springA.length, mass, free, Form.SYMMETRIC);
-        Springs s = new Springs(springA, springB, springK, invMass);
+        double gersh = gershgorin(n, springA, springB, springK, springA.length, mass, free, Form.SYMMETRIC, extra);
+        Springs s = new Springs(springA, springB, springK, invMass, extra, new double[3 * n], new double[3 * n]);
 
         // Power iteration on A = M^-1/2 K M^-1/2 over free coordinates.
         double[] u = unitDirections(s, x0);
@@ -188,7 +208,8 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
     }
 
     /** The network as the power iteration reads it. */
-    private record Springs(int[] springA, int[] springB, double[] springK, double[] invMass) {
+    private record Springs(int[] springA, int[] springB, double[] springK, double[] invMass, ExtraStiffness extra,
+            double[] scaled, double[] product) {
         int springCount() {
             return springA.length;
         }
@@ -234,6 +255,16 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
             y[3 * b] += sb * g * ux;
             y[3 * b + 1] += sb * g * uy;
             y[3 * b + 2] += sb * g * uz;
+        }
+        if (s.extra != ExtraStiffness.NONE) {
+            for (int k = 0; k < z.length; k++) {
+                s.scaled[k] = Math.sqrt(im[k / 3]) * z[k];
+            }
+            java.util.Arrays.fill(s.product, 0);
+            s.extra.multiplyAdd(s.scaled, s.product);
+            for (int k = 0; k < z.length; k++) {
+                y[k] += Math.sqrt(im[k / 3]) * s.product[k];
+            }
         }
     }
 

@@ -90,7 +90,7 @@ class DiaphragmSceneTest {
         double pa = 2000;
         DiaphragmScene s = SceneFixture.coarse(12, 1, pa, BoundaryConditions.paper());
         SystemState st = SystemState.compile(s.topology());
-        // Only the external laws: no springs stretched at rest, so forces at rest are the muscle's alone.
+        // Only the external laws: no spring or triangle strained at rest, so forces at rest are the muscle's alone.
         ForceModel fm = new ForceModel(st);
         double[] f = new double[3 * st.nodeCount];
         double ti = s.cycle().inspirationS();
@@ -112,7 +112,8 @@ class DiaphragmSceneTest {
         for (int v = 0; v < s.diaphragmNodes(); v++) {
             atRest += Math.abs(f[3 * v + 2]);
         }
-        assertEquals(0, atRest, 1e-12, "no force at end-expiration");
+        // Zero up to the round-off of the membrane triangles' forces at rest.
+        assertEquals(0, atRest, 1e-12 * expected, "no force at end-expiration");
         // Live control: halving the amplitude halves the force at the next pass.
         s.controls().setMuscleAmplitudePa(pa / 2);
         fm.computeForces(ti + s.cycle().periodS(), st.x, st.v, f);

@@ -11,21 +11,22 @@ import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.SystemState;
 
-/** The shell's spring network is objective: rigid motions change neither its energy nor its balance. */
+/** The shell's springs and triangles are objective: rigid motions change neither its energy nor its balance. */
 class ShellNetworkTest {
     @ParameterizedTest
     @EnumSource(TissueModel.class)
     void energyIsInvariantUnderRigidMotionsAndForcesBalance(TissueModel model) {
         TwoSurfaces s = TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(5)));
         Topology t = ShellNetwork.standalone(s, new ShellMaterial(40e3, 0.45, s.thicknessM(), 1060), model, 1);
-        assertTrue(t.springs().size() > 3 * s.mesh().vertexCount(), "a connected network: " + t.springs().size());
+        assertTrue(t.springs().size() + t.triangles().size() > 3 * s.mesh().vertexCount(), "a connected network: "
+                + t.springs().size() + " springs, " + t.triangles().size() + " triangles");
         ForceModel fm = new ForceModel(SystemState.compile(t));
         double[] x = SystemState.compile(t).x.clone();
         Random rnd = new Random(7);
         for (int k = 0; k < x.length; k++) {
             x[k] += 0.3 * s.thicknessM() * rnd.nextGaussian();
         }
-        double e = fm.springEnergy(x);
+        double e = fm.elasticEnergy(x);
         assertTrue(e > 0, "a deformed shell stores energy");
         // A rotation of 0.9 rad about an oblique axis through an arbitrary point, then a translation.
         double[] axis = {0.3, -0.5, 0.81};
@@ -42,10 +43,11 @@ class ShellNetworkTest {
                 y[3 * v + d] = p[d] * c + cr[d] * sn + a[d] * dot * (1 - c) + 0.05 * (d + 1);
             }
         }
-        assertEquals(e, fm.springEnergy(y), 1e-9 * e, "energy after a rigid motion");
+        assertEquals(e, fm.elasticEnergy(y), 1e-9 * e, "energy after a rigid motion");
         // Internal forces: no net force and no net torque (linear and angular momentum kept).
         double[] f = new double[x.length];
         fm.springs(y, f);
+        fm.triangles(y, f);
         double[] sum = new double[3];
         double[] torque = new double[3];
         double scale = 0;
