@@ -20,6 +20,7 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
+import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
@@ -227,7 +228,12 @@ public final class ResolutionStudy {
     }
 
     static Run simulate(String family, String label, TwoSurfaces surf, Setup s) {
-        DiaphragmScene scene = DiaphragmScene.build(surf, s.boxes(), s.p(), s.cycle(), s.controls(), null, s.bc());
+        return simulate(family, label, surf, s, null);
+    }
+
+    /** As {@link #simulate(String, String, TwoSurfaces, Setup)} with the given action lines (null: the default). */
+    static Run simulate(String family, String label, TwoSurfaces surf, Setup s, List<ActionLines.Line> lines) {
+        DiaphragmScene scene = DiaphragmScene.build(surf, s.boxes(), s.p(), s.cycle(), s.controls(), lines, s.bc());
         Simulation sim = scene.newSimulation();
         double dt = scene.recommendedTimeStep();
         long t0 = System.nanoTime();

@@ -37,9 +37,9 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         /**
          * A band of elastic ties with a stiffness per unit area: each node within the threshold is tied
          * by a zero-length spring {@code k_b A_i / 2} (tapered at the band's edge) to its rest point carried
-         * by the nearest rib (a driven anchor), to a fixed anchor (spine), or to the ends of the nearest
-         * cartilage or sternum segment. The band's total stiffness is {@code k_b} times its area, whatever
-         * the mesh.
+         * by a rib (a driven anchor), to a fixed anchor (spine), or to the ends of a cartilage or sternum
+         * segment, shared among the segments within the threshold ({@link AttachmentBand}). The band's
+         * total stiffness is {@code k_b} times its area, whatever the mesh.
          */
         BAND
     }

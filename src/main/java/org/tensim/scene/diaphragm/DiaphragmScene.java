@@ -173,27 +173,18 @@ public final class DiaphragmScene {
     /**
      * Two action lines through the highest points of the right and left halves of the
      * upper surface (the domes), each with a radius of action of 0.3 times the
-     * mesh's transverse width.
+     * mesh's transverse width. The highest points are taken on a quadratic fitted to the
+     * surface around the highest vertices ({@link DomeTops}), not at the vertices, whose place on
+     * a flat top changes with the mesh.
      */
     public static List<ActionLines.Line> defaultActionLines(TwoSurfaces s) {
-        TriangleMesh m = s.mesh();
-        double[] bounds = m.bounds();
+        double[] bounds = s.mesh().bounds();
         double cx = 0.5 * (bounds[0] + bounds[3]);
         double radius = 0.3 * (bounds[3] - bounds[0]);
-        int[] top = {-1, -1};
-        for (int v = 0; v < m.vertexCount(); v++) {
-            if (!s.isUpper(v)) {
-                continue;
-            }
-            int side = m.coord(v, 0) < cx ? 0 : 1;
-            if (top[side] < 0 || m.coord(v, 2) > m.coord(top[side], 2)) {
-                top[side] = v;
-            }
-        }
         List<ActionLines.Line> l = new ArrayList<>();
-        for (int v : top) {
-            if (v >= 0) {
-                l.add(new ActionLines.Line(m.coord(v, 0), m.coord(v, 1), radius));
+        for (double[] top : DomeTops.tops(s, cx)) {
+            if (top != null) {
+                l.add(new ActionLines.Line(top[0], top[1], radius));
             }
         }
         return l;

@@ -8,6 +8,9 @@ import org.tensim.solver.SystemState;
  * {@code g(v) = M (v - v^) - beta f(t, x^ + beta v, v)} (free nodes only), each Newton system
  * {@code J dv = -g} solved by conjugate gradient preconditioned with a sparse Cholesky factor.
  * J is applied matrix-free by {@link SpringJacobian}, linearised once per Newton iteration.
+ * The rigid links are kept to first order ({@link LinkTangent}): the first guess is moved onto
+ * their linearised constraints and CG runs in their tangent space (on {@code P^T J P}, with the
+ * preconditioner {@code P C^-1 P^T}; Baraff and Witkin 1998's filtered CG for pair constraints).
  * Scratch arrays are allocated once, here.
  */
 final class NewtonKrylov {
@@ -22,6 +25,7 @@ final class NewtonKrylov {
     final double[] vIt;
     private final double[] f;
     private final SpringJacobian jacobian;
+    private final LinkTangent links;
     private final double[] g;
     private final double[] r;
     private final double[] z;
@@ -46,6 +50,7 @@ final class NewtonKrylov {
         vIt = new double[n3];
         f = new double[n3];
         jacobian = new SpringJacobian(s, freeIndex, freeNodes);
+        links = new LinkTangent(s, freeIndex, freeNodes);
         g = new double[nf3];
         r = new double[nf3];
         z = new double[nf3];
@@ -72,6 +77,12 @@ final class NewtonKrylov {
         lastKrylovIterations = 0;
         for (int it = 0; it < newtonIterations; it++) {
             positions(beta);
+            if (!links.isEmpty()) {
+                // Newton on the links' lengths too: each iteration starts on their linearisation.
+                links.linearise(xIt, beta);
+                links.constrain(vIt);
+                positions(beta);
+            }
             model.computeForces(t1, xIt, vIt, f);
             if (residual(beta) == 0) {
                 break;
@@ -123,9 +134,11 @@ final class NewtonKrylov {
         for (int k = 0; k < nf3; k++) {
             dv[k] = 0;
             r[k] = -g[k];
-            z[k] = r[k];
         }
+        links.projectDual(r);
+        System.arraycopy(r, 0, z, 0, nf3);
         precond.solve3(z, work);
+        links.project(z);
         double rz = dot(r, z);
         final double rz0 = rz;
         System.arraycopy(z, 0, p, 0, nf3);
@@ -134,6 +147,7 @@ final class NewtonKrylov {
         while (it < maxIterations && rz0 > 0) {
             products++;
             jacobian.multiply(p, q);
+            links.projectDual(q);
             double pq = dot(p, q);
             if (!(pq > 0)) {
                 break; // only p = 0 gets here: J is positive definite (clamped transverse stiffness)
@@ -149,6 +163,7 @@ final class NewtonKrylov {
             }
             System.arraycopy(r, 0, z, 0, nf3);
             precond.solve3(z, work);
+            links.project(z);
             double rzNew = dot(r, z);
             relative = Math.sqrt(Math.max(0, rzNew) / rz0);
             if (relative <= tolerance) {
