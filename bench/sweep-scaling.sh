@@ -7,7 +7,7 @@
 # short of them would be the engine's, matching them the machine's (and the JIT's, which the sweep.json
 # figures printed here separate: CPU per point, and the JVM's CPU besides the points).
 # Usage: bench/sweep-scaling.sh [SPEC] [ROUNDS]   (default docs/examples/sweep-diaphragm-bench.json, 3)
-# Each round runs the spec four times (1 worker, 2 workers, 2 JVMs at once): about 3 x 16 x 1.5 s.
+# Each round runs the spec four times (1 worker, 2 workers, 2 JVMs at once): about 3 x 16 x 2.7 s of CPU.
 set -euo pipefail
 # shellcheck source=bench/sweep-lib.sh
 . "$(dirname "${BASH_SOURCE[0]}")/sweep-lib.sh"
