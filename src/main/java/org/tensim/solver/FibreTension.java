@@ -69,8 +69,14 @@ public final class FibreTension {
     /** Adds the fibres' forces (N) at time t (s) and positions x (m) to f. Allocation-free. */
     public void forces(double t, double[] x, double[] f) {
         final double[] a = scratch;
+        // Fibres usually share one law: evaluate it once per pass, not once per fibre.
+        DoubleUnaryOperator law = null;
+        double s = 0;
         for (int e = 0; e < volume.length; e++) {
-            final double s = stress[e].applyAsDouble(t);
+            if (stress[e] != law) {
+                law = stress[e];
+                s = law.applyAsDouble(t);
+            }
             if (s == 0) {
                 continue;
             }

@@ -1,5 +1,6 @@
 package org.tensim.scene.diaphragm;
 
+import java.util.function.DoubleUnaryOperator;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
@@ -61,6 +62,8 @@ final class MuscleFibres {
         cy /= w;
         int added = 0;
         double[] h = new double[3];
+        // One law shared by every fibre, so that the force pass evaluates it once.
+        DoubleUnaryOperator stress = lines::pressurePa;
         for (int tr = 0; tr < m.triangleCount(); tr++) {
             int[] c = {m.corner(tr, 0), m.corner(tr, 1), m.corner(tr, 2)};
             Vec3[] y = new Vec3[3];
@@ -82,7 +85,7 @@ final class MuscleFibres {
             if (f.norm() < MIN_MERIDIAN) {
                 continue;
             }
-            t.addFibre(c, c, f, 0.5 * thicknessM * fraction, lines::pressurePa);
+            t.addFibre(c, c, f, 0.5 * thicknessM * fraction, stress);
             added++;
         }
         return added;
