@@ -4,7 +4,7 @@ package org.tensim.solver;
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
  * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
- * active fibre tensions ({@link FibreTension}).
+ * active fibre tensions ({@link FibreTension}) and the transverse shear elements ({@link ShearElements}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -115,6 +115,8 @@ public final class ForceModel {
         }
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
+        // The two-surface shell's transverse shear (none unless the scene has shear elements).
+        s.shears.forces(px, f);
     }
 
     /**
@@ -141,9 +143,9 @@ public final class ForceModel {
         return TriangleKernels.energy(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triangleCount(), px);
     }
 
-    /** Elastic energy of springs and membrane triangles at positions px, J. */
+    /** Elastic energy of springs, membrane triangles and transverse shear elements at positions px, J. */
     public double elasticEnergy(double[] px) {
-        return springEnergy(px) + triangleEnergy(px);
+        return springEnergy(px) + triangleEnergy(px) + s.shears.energy(px);
     }
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */
