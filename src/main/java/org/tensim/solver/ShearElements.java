@@ -51,11 +51,14 @@ public final class ShearElements implements ExtraStiffness {
                 node[6 * e + a] = ts.node(a);
             }
             for (int c = 0; c < 3; c++) {
-                g0[3 * e + c] = ts.restG(c);
                 for (int l = 0; l < 3; l++) {
                     k[9 * e + 3 * c + l] = ts.stiffness(c, l);
                 }
             }
+            // g0 by the kernel's own arithmetic on the compiled positions (ts.restG(c) up to round-off):
+            // the rest state is then free of force to the last bit.
+            edges(e, x0);
+            System.arraycopy(dg, 0, g0, 3 * e, 3);
         }
         linearise(x0, false);
     }
@@ -75,6 +78,25 @@ public final class ShearElements implements ExtraStiffness {
      */
     public ShearElements tangentAt(double[] px) {
         return new ShearElements(this, px);
+    }
+
+    /** Gives element e the stiffness K of {@code ts}, whose nodes must be e's. */
+    void setConstants(int e, TransverseShear ts) {
+        org.tensim.model.Check.index("shear element", e, count());
+        for (int a = 0; a < 6; a++) {
+            if (ts.node(a) != node[6 * e + a]) {
+                throw new IllegalArgumentException("shear element " + e + " has other nodes in the new constants: only"
+                        + " constants may change, not the topology");
+            }
+        }
+        for (int c = 0; c < 9; c++) {
+            k[9 * e + c] = ts.stiffness(c / 3, c % 3);
+        }
+    }
+
+    /** {@code K_kl} of element e (edges k, l in 0..2), J/m^4. */
+    public double stiffness(int e, int k, int l) {
+        return this.k[9 * e + 3 * k + l];
     }
 
     /** Number of elements. */

@@ -310,6 +310,13 @@ public final class SystemState {
         criticalTimeStep = null;
     }
 
+    /** Gives shear element e the stiffness of {@code ts} (the same nodes); takes effect at the next force pass. */
+    public void setShearConstants(int e, org.tensim.model.TransverseShear ts) {
+        shears.setConstants(e, ts);
+        parameterVersion++;
+        criticalTimeStep = null;
+    }
+
     /** Sets the axial damping (N s/m, >= 0) of spring s. */
     public void setSpringDamping(int s, double c) {
         Check.index("spring", s, springC.length);

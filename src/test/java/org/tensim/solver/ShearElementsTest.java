@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.Topology;
+import org.tensim.solver.integrators.ImplicitEuler;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
  * The transverse shear element ({@link org.tensim.model.TransverseShear}, {@link ShearElements}) as
@@ -244,5 +246,54 @@ class ShearElementsTest {
         assertTrue(ex.getMessage().contains("twice"), ex.getMessage());
         ex = assertThrows(IllegalArgumentException.class, () -> t.addShear(new int[] {0, 1, 2, 3}, low, KAPPA_G, T));
         assertTrue(ex.getMessage().contains("3 upper corners"), ex.getMessage());
+    }
+
+    /**
+     * A clamped shell of the material model (triangles, shear elements, rigid columns) under a load
+     * steps without allocating once warm: explicit RK2, BDF2 with its Jacobian, implicit Euler.
+     */
+    @Test
+    void stepsWithShearElementsAllocateNothing() {
+        java.lang.management.ThreadMXBean bean = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
+                "no allocation counters");
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
+        mx.setThreadAllocatedMemoryEnabled(true);
+        long id = Thread.currentThread().getId();
+        for (Integrator in : new Integrator[] {new MidpointRK2(), new PrefactoredBdf2(), new ImplicitEuler()}) {
+            var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
+            var s = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(3, 0.03), T);
+            Topology t = org.tensim.scene.diaphragm.ShellNetwork.standalone(s, m,
+                    org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
+            int half = s.mesh().vertexCount() / 2;
+            for (int v = 0; v < half; v++) {
+                if (Math.hypot(t.node(v).position().x(), t.node(v).position().y()) > 0.0299) {
+                    t.node(v).fix();
+                    t.node(v + half).fix();
+                } else {
+                    t.applyForce(t.node(v), org.tensim.model.ForceLaw.constant(new org.tensim.model.Vec3(0, 0, -1e-3)));
+                }
+            }
+            t.setViscousDamping(1e-3);
+            Simulation sim = new Simulation(SystemState.compile(t), in);
+            assertTrue(sim.state().shears.count() > 0, "shear elements in the shell");
+            double h = in.explicit() ? 0.3 * sim.criticalTimeStep().stepSeconds() : 1e-3;
+            for (int i = 0; i < 3000; i++) {
+                sim.step(h);
+            }
+            long bytes = 0;
+            for (int attempt = 0; attempt < 2; attempt++) {
+                long before = mx.getThreadAllocatedBytes(id);
+                for (int i = 0; i < 300; i++) {
+                    sim.step(h);
+                }
+                bytes = mx.getThreadAllocatedBytes(id) - before;
+                if (bytes == 0) {
+                    break;
+                }
+            }
+            assertEquals(0, bytes, in.name() + ": bytes allocated by 300 steps");
+        }
     }
 }
