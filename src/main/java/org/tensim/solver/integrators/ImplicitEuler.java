@@ -6,6 +6,7 @@ import org.tensim.solver.Integrator;
 import org.tensim.solver.SolverSettings;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleTangent;
+import org.tensim.solver.links.LinkTangent;
 import org.tensim.solver.stability.LinearStability;
 
 /**
@@ -32,6 +33,21 @@ import org.tensim.solver.stability.LinearStability;
  * Axial damping c adds {@code c u u^T} to C, viscous damping c_v adds c_v I. An
  * approximate Jacobian leaves the order at 1 (a linearly implicit Euler step is
  * first order with any Jacobian); only the stability depends on it.
+ *
+ * <p>The rigid links are kept within the step ({@link LinkTangent}, as in BDF2): linearised at the
+ * start-of-step positions predicted to the end of the step, {@code x + h v} (driven nodes at t + h),
+ * each link asks {@code (dv_b - dv_a) . n = (L - |d|) / h} of the velocity change; the first guess is
+ * shifted onto these constraints (mass-weighted) and CG runs in their tangent space with the
+ * M-orthogonal projector P (on {@code P^T A P}, preconditioner {@code P D^-1 P^T}, residual
+ * {@code P^T r}: the force along a link is the link's, not the CG's), stopped at the tolerance
+ * times |b| as without links ({@code |P^T b|} vanishes at a constrained rest). Without
+ * them a step far beyond the stiff elements' periods let the shell relax across the material
+ * model's rigid columns before stage 2 put them back, and the run came to rest off the constrained
+ * equilibrium by an amount that did not fall with h (docs/diaphragm.md). One linearisation, as
+ * for the springs: at x + h v, not at x, because a link that turns over the step then asks for its
+ * length where it will be; measured on the pendulum and the coarse diaphragm
+ * ({@code ImplicitEulerLinksTest}, {@code ImplicitEulerDiaphragmTest}), the second-order
+ * remainder is left to stage 2.
  *
  * <p>Global error O(h); one force evaluation per step plus the CG iterations, each
  * one matrix-vector product about as costly as a spring force pass ({@link
@@ -71,7 +87,10 @@ public final class ImplicitEuler implements Integrator {
     private double[] invDiag; // per degree of freedom: 1 / A_kk on free nodes, 0 elsewhere
     private double[] free; // per degree of freedom: 1 on free nodes, 0 on fixed and driven ones
     private double[] massTerm; // per degree of freedom: (m + h c_v) on free nodes, 0 elsewhere
+    private double[] xp; // positions the links are linearised at: x + h v (free), at t + h (driven)
     private SpringBlocks springs;
+    private LinkTangent links; // null without rigid links
+    private SystemState linksState;
     private final double[] scratch = new double[6];
     private TriangleTangent triangles; // null without membrane triangles
     private SystemState s;
@@ -171,17 +190,21 @@ public final class ImplicitEuler implements Integrator {
         // b = h (f - h S v), on free nodes only; r = b - A dv with dv from the last step as the first guess.
         applyStiffness(vs, ap);
         final double[] fr = free;
-        double bNorm2 = 0;
         for (int k = 0; k < n3; k++) {
             // Selected, not multiplied by the 0/1 mask: a fixed node's force may be anything.
-            double b = fr[k] == 0 ? 0 : step * (f[k] - step * ap[k]);
-            r[k] = b;
-            bNorm2 += b * b;
+            r[k] = fr[k] == 0 ? 0 : step * (f[k] - step * ap[k]);
             if (fr[k] == 0) {
                 dv[k] = 0;
             }
         }
-        solve(bNorm2);
+        if (links != null) {
+            for (int k = 0; k < n3; k++) {
+                xp[k] = fr[k] == 0 ? xs[k] : xs[k] + step * vs[k];
+            }
+            links.linearise(xp, step);
+            links.constrainIncrement(dv);
+        }
+        solve(dot(r, r));
 
         for (int k = 0; k < n3; k++) {
             if (fr[k] != 0) {
@@ -192,46 +215,48 @@ public final class ImplicitEuler implements Integrator {
         st.applyMotions(t + step, x, v, scratch);
     }
 
-    /** Preconditioned CG on A dv = b, with r holding b on entry. */
+    /**
+     * Preconditioned CG on A dv = b, with r holding b on entry; with links, projected CG on
+     * {@code P^T A P} from a first guess that meets the linearised links. z, p and dv stay 0 on
+     * fixed and driven nodes (the preconditioner is 0 there).
+     */
     private void solve(double bNorm2) {
         final int n3 = r.length;
-        final double[] id = invDiag; // 0 on fixed and driven nodes: z, p and dv stay 0 there
         multiply(dv, ap);
         for (int k = 0; k < n3; k++) {
             r[k] -= ap[k];
+        }
+        if (links != null) {
+            links.projectDual(r);
         }
         double stop2 = tolerance * tolerance * bNorm2;
         double rr = dot(r, r);
         int it = 0;
         if (rr > stop2) {
-            double rz = 0;
-            for (int k = 0; k < n3; k++) {
-                z[k] = r[k] * id[k];
-                p[k] = z[k];
-                rz += r[k] * z[k];
-            }
+            double rz = precondition();
+            System.arraycopy(z, 0, p, 0, n3);
             while (it < maxIterations) {
                 multiply(p, ap);
+                if (links != null) {
+                    links.projectDual(ap);
+                }
                 double pap = dot(p, ap);
                 if (!(pap > 0)) {
                     break; // breakdown: A is positive definite on free nodes, so only p = 0 gets here
                 }
                 double alpha = rz / pap;
                 rr = 0;
-                double rzNew = 0;
                 for (int k = 0; k < n3; k++) {
                     dv[k] += alpha * p[k];
                     final double rk = r[k] - alpha * ap[k];
                     r[k] = rk;
                     rr += rk * rk;
-                    final double zk = rk * id[k];
-                    z[k] = zk;
-                    rzNew += rk * zk;
                 }
                 it++;
                 if (rr <= stop2) {
                     break;
                 }
+                double rzNew = precondition();
                 double beta = rzNew / rz;
                 rz = rzNew;
                 for (int k = 0; k < n3; k++) {
@@ -244,6 +269,18 @@ public final class ImplicitEuler implements Integrator {
         if (rr > stop2) {
             unconvergedSolves++;
         }
+    }
+
+    /** z = D^-1 r (Jacobi), kept in the links' tangent space (P D^-1 P^T: r is already P^T r); returns r . z. */
+    private double precondition() {
+        final double[] id = invDiag;
+        for (int k = 0; k < r.length; k++) {
+            z[k] = r[k] * id[k];
+        }
+        if (links != null) {
+            links.project(z);
+        }
+        return dot(r, z);
     }
 
     /**
@@ -329,7 +366,15 @@ public final class ImplicitEuler implements Integrator {
             invDiag = new double[n3];
             free = new double[n3];
             massTerm = new double[n3];
+            xp = new double[n3];
             springs = new SpringBlocks(ns);
+        }
+        if (st != linksState) {
+            linksState = st;
+            links = st.linkCount() == 0 ? null : LinkTangent.fullLayout(st);
+            if (links != null && links.isEmpty()) {
+                links = null;
+            }
         }
         if (st.triangleCount() == 0) {
             triangles = null;

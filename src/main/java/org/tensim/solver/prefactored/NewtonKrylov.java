@@ -2,6 +2,7 @@ package org.tensim.solver.prefactored;
 
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.SystemState;
+import org.tensim.solver.links.LinkTangent;
 
 /**
  * Newton's method on the implicit step's residual
@@ -51,7 +52,7 @@ final class NewtonKrylov {
         vIt = new double[n3];
         f = new double[n3];
         jacobian = new SpringJacobian(s, freeIndex, freeNodes);
-        links = new LinkTangent(s, freeIndex, freeNodes);
+        links = new LinkTangent(s, freeIndex, freeNodes.length);
         g = new double[nf3];
         r = new double[nf3];
         z = new double[nf3];

@@ -22,9 +22,10 @@ import org.tensim.solver.SystemState;
  * The first step, and every step after a change of h or a jump in time, is backward Euler
  * (x^ = x_n, v^ = v_n, beta = h): the history is that of the state after stages 2 and 3, so
  * the rigid links and the velocity update enter it as for every integrator. Within the step the
- * rigid links are kept to first order ({@link LinkTangent}): a step many times longer than the
- * stiff springs' periods that ignored them would let those springs relax across the links before
- * stage 2 puts them back, and come to rest off the constrained equilibrium. BDF2 is L-stable:
+ * rigid links are kept to first order ({@link org.tensim.solver.links.LinkTangent}): a step many
+ * times longer than the stiff springs' periods that ignored them would let those springs relax
+ * across the links before stage 2 puts them back, and come to rest off the constrained
+ * equilibrium. BDF2 is L-stable:
  * it damps the unresolved stiff modes (the through-thickness springs at 10-40 ms) instead of
  * letting them ring, and its error falls as h^2 (backward Euler's as h).
  *

@@ -1,11 +1,13 @@
-package org.tensim.solver.prefactored;
+package org.tensim.solver.links;
 
 import org.tensim.solver.SystemState;
 
 /**
- * The rigid links as the implicit step of stage 1 sees them: each link (a, b) of length L keeps,
+ * The rigid links as an implicit step of stage 1 sees them: each link (a, b) of length L keeps,
  * to first order over the step, the length it will have, so that the step moves the nodes along
- * the links' tangents only and the projection of stage 2 corrects a second-order remainder.
+ * the links' tangents only and the projection of stage 2 corrects a second-order remainder. Used by
+ * BDF2 ({@code org.tensim.solver.prefactored}, at every Newton iterate) and implicit Euler
+ * ({@code org.tensim.solver.integrators}, once per step).
  *
  * <p>Why: with steps far beyond the stiff springs' periods (h w &gt;&gt; 1), an implicit step that
  * ignores the links lets those springs relax completely across them (the prisms' diagonals thin
@@ -16,7 +18,8 @@ import org.tensim.solver.SystemState;
  * links' ends by little each step, so its projection does not have this bias.
  *
  * <p>With the new velocity v as unknown and the positions {@code x = x^ + beta v} (the implicit
- * scheme's), each link's length {@code |x_b - x_a| = L} is linearised at every Newton iterate:
+ * scheme's), each link's length {@code |x_b - x_a| = L} is linearised at positions x the caller
+ * chooses (BDF2: every Newton iterate; implicit Euler: the start of the step predicted to its end):
  *
  * <pre>
  *   (dv_b - dv_a) . n = (L - |d|) / beta,   d = x_b - x_a,   n = d / |d|
@@ -24,7 +27,8 @@ import org.tensim.solver.SystemState;
  *
  * with x at the iterate for a free end and at its prescribed position at t + h for a fixed or
  * driven one (whose dv is 0). The iterate's velocities are first shifted onto these constraints
- * (mass-weighted, {@link #constrain}), and the Newton increment is then kept in their tangent space
+ * (mass-weighted, {@link #constrain}, or {@link #constrainIncrement} for an increment), and the
+ * solver's increments are then kept in their tangent space
  * by the mass-weighted (M-orthogonal) projector {@code P = I - M^-1 N (N^T M^-1 N)^-1 N^T}, N
  * holding the constraints' gradients: a link's correction moves its ends along n in inverse
  * proportion to their masses, as stage 2 does, so it keeps the momentum. The residual enters as
@@ -35,14 +39,21 @@ import org.tensim.solver.SystemState;
  * 0.23 ms on a 14-ring diaphragm). Disjoint links (each node in at most one, as the diaphragm's
  * columns) are projected exactly in one sweep of the links; for links that share nodes the
  * multipliers are solved for by conjugate gradient on the links' Schur complement.
+ *
+ * <p>Vectors: positions and velocities ({@link #linearise}, {@link #constrain}) are in the full
+ * layout (3 per node, node order); the solver's vectors ({@link #project}, {@link #projectDual},
+ * {@link #constrainIncrement}) are in its own layout, given by a slot per node: node i's
+ * components at {@code 3 slot[i] .. 3 slot[i] + 2}, slot -1 for a node that does not move within
+ * the step (fixed or driven). BDF2 uses compact free-node vectors, implicit Euler the full layout
+ * ({@link #fullLayout}), where the slots of fixed and driven nodes are left untouched.
  * Allocation-free after construction.
  */
-final class LinkTangent {
+public final class LinkTangent {
     /** Relative residual of the multipliers' CG when links share nodes. */
     private static final double SOLVE_TOLERANCE = 1e-14;
 
     private final int count; // links with at least one free end
-    private final int[] endA; // per link: 3 x compact index of end a, -1 when fixed or driven
+    private final int[] endA; // per link: 3 x slot of end a, -1 when fixed or driven
     private final int[] endB;
     private final int[] nodeA; // per link: node ids
     private final int[] nodeB;
@@ -51,19 +62,42 @@ final class LinkTangent {
     private final double[] wB;
     private final double[] dir; // per link: n
     private final double[] target; // per link: (L - |d|) / beta, m/s
-    private final double[] invMass; // per free node (compact), 1/kg
-    private final double[] change; // compact scratch: the velocity change of constrain()
+    private final double[] invMass; // per slot, 1/kg; 0 for a slot of no free node
+    private final double[] change; // solver layout scratch: the velocity change of constrain()
     private final double[] lambda; // links that share nodes: multipliers and their CG's vectors
     private final double[] res;
     private final double[] cgDir;
     private final double[] cgProduct;
-    private final double[] temp; // compact
+    private final double[] temp; // solver layout
     private final boolean disjoint;
 
-    LinkTangent(SystemState s, int[] freeIndex, int[] freeNodes) {
+    /**
+     * The links with at least one free end (a node of nonzero inverse mass that has a slot).
+     *
+     * @param s     the compiled system (links, masses)
+     * @param slot  per node: its place in the solver's vectors (in nodes, 3 components each), or -1
+     *              for a node the step does not move (fixed or driven)
+     * @param slots the solver's vectors' length in nodes (their arrays hold 3 x slots values)
+     * @throws IllegalArgumentException if slot does not have one entry per node, or a slot is out of range
+     */
+    public LinkTangent(SystemState s, int[] slot, int slots) {
+        if (slot.length != s.nodeCount) {
+            throw new IllegalArgumentException("link tangent: " + slot.length + " slots given for "
+                    + s.nodeCount + " nodes (expected one per node)");
+        }
+        invMass = new double[slots];
+        for (int i = 0; i < s.nodeCount; i++) {
+            if (slot[i] >= slots || slot[i] < -1) {
+                throw new IllegalArgumentException("link tangent: node " + i + " has slot " + slot[i]
+                        + " (expected -1 or 0.." + (slots - 1) + ")");
+            }
+            if (slot[i] >= 0) {
+                invMass[slot[i]] = s.invMass[i];
+            }
+        }
         int n = 0;
         for (int i = 0; i < s.linkCount(); i++) {
-            if (freeIndex[s.linkA[i]] >= 0 || freeIndex[s.linkB[i]] >= 0) {
+            if (moves(s, slot, s.linkA[i]) || moves(s, slot, s.linkB[i])) {
                 n++;
             }
         }
@@ -83,15 +117,17 @@ final class LinkTangent {
         for (int i = 0; i < s.linkCount(); i++) {
             int a = s.linkA[i];
             int b = s.linkB[i];
-            if (freeIndex[a] < 0 && freeIndex[b] < 0) {
+            boolean ma = moves(s, slot, a);
+            boolean mb = moves(s, slot, b);
+            if (!ma && !mb) {
                 continue;
             }
             nodeA[j] = a;
             nodeB[j] = b;
-            endA[j] = freeIndex[a] < 0 ? -1 : 3 * freeIndex[a];
-            endB[j] = freeIndex[b] < 0 ? -1 : 3 * freeIndex[b];
-            wA[j] = freeIndex[a] < 0 ? 0 : s.invMass[a];
-            wB[j] = freeIndex[b] < 0 ? 0 : s.invMass[b];
+            endA[j] = ma ? 3 * slot[a] : -1;
+            endB[j] = mb ? 3 * slot[b] : -1;
+            wA[j] = ma ? s.invMass[a] : 0;
+            wB[j] = mb ? s.invMass[b] : 0;
             length[j] = s.linkL[i];
             uses[a]++;
             uses[b]++;
@@ -99,21 +135,30 @@ final class LinkTangent {
             j++;
         }
         disjoint = !shared;
-        change = new double[3 * freeNodes.length];
+        change = new double[3 * slots];
         int sharing = disjoint ? 0 : n;
         lambda = new double[sharing];
         res = new double[sharing];
         cgDir = new double[sharing];
         cgProduct = new double[sharing];
-        temp = new double[disjoint ? 0 : 3 * freeNodes.length];
-        invMass = new double[freeNodes.length];
-        for (int k = 0; k < freeNodes.length; k++) {
-            invMass[k] = s.invMass[freeNodes[k]];
+        temp = new double[disjoint ? 0 : 3 * slots];
+    }
+
+    /** The links of s for solver vectors in the full layout (slot = node; fixed and driven nodes have none). */
+    public static LinkTangent fullLayout(SystemState s) {
+        int[] slot = new int[s.nodeCount];
+        for (int i = 0; i < s.nodeCount; i++) {
+            slot[i] = s.invMass[i] != 0 ? i : -1;
         }
+        return new LinkTangent(s, slot, s.nodeCount);
+    }
+
+    private static boolean moves(SystemState s, int[] slot, int node) {
+        return slot[node] >= 0 && s.invMass[node] != 0;
     }
 
     /** Whether there is any link to keep. */
-    boolean isEmpty() {
+    public boolean isEmpty() {
         return count == 0;
     }
 
@@ -122,9 +167,10 @@ final class LinkTangent {
      * x^ + beta v, fixed and driven ones at t + h): directions, and targets that bring each link to
      * its length to first order.
      *
-     * @param beta the implicit scheme's weight of the new velocity in the positions, s
+     * @param x    positions, m, full layout (3 per node)
+     * @param beta the implicit scheme's weight of the new velocity in the positions, s (&gt; 0)
      */
-    void linearise(double[] x, double beta) {
+    public void linearise(double[] x, double beta) {
         for (int i = 0; i < count; i++) {
             final int a = 3 * nodeA[i];
             final int b = 3 * nodeB[i];
@@ -145,7 +191,7 @@ final class LinkTangent {
      * linearised constraints: {@code (dv_b - dv_a) . n = target}, the change of v, not v itself,
      * since the positions the targets were measured at already hold v.
      */
-    void constrain(double[] v) {
+    public void constrain(double[] v) {
         if (count == 0) {
             return;
         }
@@ -170,28 +216,50 @@ final class LinkTangent {
         change[compact + 2] = 0;
     }
 
-    /** u = P u: the compact increment u into the constraints' tangent space. */
-    void project(double[] u) {
-        sweep(u, false);
+    /**
+     * u &lt;- the M-nearest velocity change that meets the linearised constraints
+     * {@code (u_b - u_a) . n = target} (solver layout, m/s): u's component normal to them replaced,
+     * its tangential part kept. For a solver whose unknown is the velocity change over the step,
+     * linearised at the positions that change is measured from (implicit Euler's x + h v).
+     */
+    public void constrainIncrement(double[] u) {
+        if (count > 0) {
+            sweep(u, true);
+        }
     }
 
-    /** r = P^T r = M P M^-1 r: a compact force-like vector (a residual) seen in the tangent space. */
-    void projectDual(double[] r) {
+    /** u = P u: the increment u (solver layout) into the constraints' tangent space. */
+    public void project(double[] u) {
+        if (count > 0) {
+            sweep(u, false);
+        }
+    }
+
+    /**
+     * r = P^T r = M P M^-1 r: a force-like vector (a residual, solver layout) seen in the tangent
+     * space; slots of no free node are left as they are (P is the identity there).
+     */
+    public void projectDual(double[] r) {
         if (count == 0) {
             return;
         }
         for (int k = 0; k < invMass.length; k++) {
             final double w = invMass[k];
-            r[3 * k] *= w;
-            r[3 * k + 1] *= w;
-            r[3 * k + 2] *= w;
+            if (w != 0) {
+                r[3 * k] *= w;
+                r[3 * k + 1] *= w;
+                r[3 * k + 2] *= w;
+            }
         }
         sweep(r, false);
         for (int k = 0; k < invMass.length; k++) {
-            final double m = 1 / invMass[k];
-            r[3 * k] *= m;
-            r[3 * k + 1] *= m;
-            r[3 * k + 2] *= m;
+            final double w = invMass[k];
+            if (w != 0) {
+                final double m = 1 / w;
+                r[3 * k] *= m;
+                r[3 * k + 1] *= m;
+                r[3 * k + 2] *= m;
+            }
         }
     }
 
