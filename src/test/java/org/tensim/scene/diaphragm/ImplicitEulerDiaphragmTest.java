@@ -10,47 +10,57 @@ import org.tensim.solver.integrators.ImplicitEuler;
 
 /**
  * Implicit Euler on the whole diaphragm scene (ribs driven, action lines, tendon links,
- * abdominal support) follows the paper's RK2 solution: at the end of one inspiration of a
- * coarse model its displacement field approaches RK2's from 1 to 0.5 ms, then stays within the
- * bias of its rigid columns (below).
- * (docs/diaphragm.md: at steps of 2.5 ms and more this coarse model ends on another
- * state, 3 mm higher; the real-time study shows it.)
+ * abdominal support, the material model's rigid columns) converges to the paper's RK2 solution
+ * over one inspiration of a coarse model: at 0.5 s, while the dome is still moving, its error
+ * falls as the step (first order) from 1 to 0.5 to 0.25 ms, and at the end of inspiration it ends
+ * on RK2's state. It does since the rigid links are kept within its step
+ * ({@link org.tensim.solver.links.LinkTangent}); before, stage 1 let the shell relax across the
+ * columns and the error stopped falling with the step (docs/diaphragm.md).
+ *
+ * <p>The reference is RK2 at half its policy step: RK2 at its policy step is itself 13 % (0.5 s)
+ * and 4.6 % (end of inspiration) from RK2 at half of it, which is 0.015 % and 0.009 % from RK2 at
+ * a quarter (measured 2026-11-23 17:34 UTC); implicit Euler and BDF2 both end within 0.02 % of
+ * the half-step solution.
  */
 class ImplicitEulerDiaphragmTest {
+    static final double MOVING = 0.5; // s, mid-inspiration
+
     @Test
-    void followsTheRk2SolutionUpToTheRigidColumnsBias() throws IOException {
+    void convergesToTheRk2Solution() throws IOException {
         DiaphragmScene scene = SceneFixture.coarse(10, 1, 2600);
         double ti = scene.cycle().inspirationS();
-        double[] rk2 = endOfInspiration(scene, null, scene.recommendedTimeStep(), ti);
-        double[] coarseStep = endOfInspiration(scene, new ImplicitEuler().setTolerance(1e-8), 1e-3, ti);
-        double[] fineStep = endOfInspiration(scene, new ImplicitEuler().setTolerance(1e-8), 5e-4, ti);
-        double[] finestStep = endOfInspiration(scene, new ImplicitEuler().setTolerance(1e-8), 2.5e-4, ti);
-        double[] rest = scene.newSimulation().state().x0;
-        double eCoarse = relativeRms(rest, rk2, coarseStep, scene.diaphragmNodes());
-        double eFine = relativeRms(rest, rk2, fineStep, scene.diaphragmNodes());
-        double eFinest = relativeRms(rest, rk2, finestStep, scene.diaphragmNodes());
-        String errors = eCoarse + " at 1 ms, " + eFine + " at 0.5 ms, " + eFinest + " at 0.25 ms";
-        // At 1 ms the coarse model still ends on another branch of the late snap-through
-        // (docs/diaphragm.md). Below 0.5 ms the error no longer falls with the step: a bias from
-        // stage 1 advancing the shell without the rigid columns, the cause found and fixed in bdf2
-        // (LinkTangent) and not yet in implicit Euler (docs/diaphragm.md, "Limitations"). Measured
-        // before the transverse shear elements: 0.285, 0.0315, 0.0271 at 1, 0.5, 0.25 ms; with them
-        // (which tie the columns' tilt to the faces, so that the columns' absence from stage 1 costs
-        // more): 0.105, 0.0215, 0.0452 (2026-11-23 17:18 UTC), the apex within 0.07 mm of RK2's.
-        assertTrue(eFine < eCoarse, "error falls from 1 to 0.5 ms: " + errors);
-        assertTrue(eFine < 0.03 && eFinest < 0.06, "within 3 % of RK2 at 0.5 ms, 6 % at 0.25 ms: " + errors);
-        int apex = scene.apexNode();
-        assertEquals(rk2[3 * apex + 2], finestStep[3 * apex + 2], 0.5e-3, "apex height, m");
-    }
-
-    private static double[] endOfInspiration(DiaphragmScene scene, ImplicitEuler integrator, double dt, double t) {
-        Simulation sim = scene.newSimulation();
-        if (integrator != null) {
-            sim.setIntegrator(integrator);
+        double[] steps = {1e-3, 5e-4, 2.5e-4};
+        Simulation rk2 = scene.newSimulation();
+        Simulation[] ie = new Simulation[steps.length];
+        for (int i = 0; i < steps.length; i++) {
+            ie[i] = scene.newSimulation();
+            ie[i].setIntegrator(new ImplicitEuler().setTolerance(1e-8));
         }
-        sim.runUntil(t, dt);
-        assertEquals(t, sim.time(), 0.5 * dt);
-        return sim.state().x.clone();
+        double[] rest = rk2.state().x0;
+        int nodes = scene.diaphragmNodes();
+        double[][] errors = new double[2][steps.length];
+        double[] times = {MOVING, ti};
+        for (int j = 0; j < times.length; j++) {
+            rk2.runUntil(times[j], scene.recommendedTimeStep() / 2);
+            for (int i = 0; i < steps.length; i++) {
+                ie[i].runUntil(times[j], steps[i]);
+                assertEquals(times[j], ie[i].time(), 0.5 * steps[i]);
+                errors[j][i] = relativeRms(rest, rk2.state().x, ie[i].state().x, nodes);
+            }
+        }
+        String moving = errors[0][0] + ", " + errors[0][1] + ", " + errors[0][2] + " at 1, 0.5, 0.25 ms";
+        String end = errors[1][0] + ", " + errors[1][1] + ", " + errors[1][2] + " at 1, 0.5, 0.25 ms";
+        // Measured 2026-11-23 17:34 UTC: 0.297 %, 0.149 %, 0.075 % at 0.5 s (order 1.0), 0.020 %,
+        // 0.019 %, 0.018 % at the end of inspiration (RK2's own floor); before the links entered the
+        // step: see docs/diaphragm.md, "Limitations".
+        assertTrue(errors[0][1] < 0.6 * errors[0][0] && errors[0][2] < 0.6 * errors[0][1],
+                "error at 0.5 s falls as the step (first order): " + moving);
+        assertTrue(errors[0][2] < 0.002, "within 0.2 % of RK2 at 0.5 s with 0.25 ms: " + moving);
+        for (double e : errors[1]) {
+            assertTrue(e < 0.001, "within 0.1 % of RK2 at the end of inspiration: " + end);
+        }
+        int apex = scene.apexNode();
+        assertEquals(rk2.state().x[3 * apex + 2], ie[2].state().x[3 * apex + 2], 0.05e-3, "apex height, m");
     }
 
     /** sqrt(sum |u - u_ref|^2 / sum |u_ref|^2) over the diaphragm nodes, u = x - rest. */
