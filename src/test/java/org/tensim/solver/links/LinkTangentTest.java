@@ -54,8 +54,13 @@ class LinkTangentTest {
         return u;
     }
 
-    /** The constraints' values (v_b - v_a) . n of compact u, free nodes 1..5 at compact 0..4. */
+    /** The constraints' values (v_b - v_a) . n of compact u at the scene's positions. */
     static double[] rates(SystemState s, double[] u) {
+        return rates(s, s.x, u);
+    }
+
+    /** The constraints' values (v_b - v_a) . n of compact u at positions x, free nodes 1..5 at compact 0..4. */
+    static double[] rates(SystemState s, double[] x, double[] u) {
         double[] out = new double[s.linkCount()];
         for (int i = 0; i < s.linkCount(); i++) {
             int a = s.linkA[i];
@@ -63,7 +68,7 @@ class LinkTangentTest {
             double[] n = new double[3];
             double len = 0;
             for (int c = 0; c < 3; c++) {
-                n[c] = s.x[3 * b + c] - s.x[3 * a + c];
+                n[c] = x[3 * b + c] - x[3 * a + c];
                 len += n[c] * n[c];
             }
             len = Math.sqrt(len);
@@ -160,21 +165,13 @@ class LinkTangentTest {
         double[] u = random(r, 15);
         double[] cu = u.clone();
         lt.constrainIncrement(cu);
+        double[] rate = rates(s, x, cu);
         for (int i = 0; i < s.linkCount(); i++) {
-            int a = s.linkA[i];
-            int b = s.linkB[i];
-            double len = 0;
-            double rate = 0;
-            for (int c = 0; c < 3; c++) {
-                double d = x[3 * b + c] - x[3 * a + c];
-                len += d * d;
-            }
-            len = Math.sqrt(len);
-            for (int c = 0; c < 3; c++) {
-                double n = (x[3 * b + c] - x[3 * a + c]) / len;
-                rate += ((b == 0 ? 0 : cu[3 * (b - 1) + c]) - (a == 0 ? 0 : cu[3 * (a - 1) + c])) * n;
-            }
-            assertEquals((s.linkL[i] - len) / beta, rate, 1e-10, "link " + i + " reaches its length to first order");
+            int a = 3 * s.linkA[i];
+            int b = 3 * s.linkB[i];
+            double len = Math.sqrt(Math.pow(x[b] - x[a], 2) + Math.pow(x[b + 1] - x[a + 1], 2)
+                    + Math.pow(x[b + 2] - x[a + 2], 2));
+            assertEquals((s.linkL[i] - len) / beta, rate[i], 1e-10, "link " + i + " reaches its length to first order");
         }
         double[] pu = u.clone();
         double[] pcu = cu.clone();
