@@ -243,6 +243,12 @@ public final class LinkTangent {
         if (count == 0) {
             return;
         }
+        if (disjoint) {
+            for (int i = 0; i < count; i++) {
+                correctDual(r, i);
+            }
+            return;
+        }
         for (int k = 0; k < invMass.length; k++) {
             final double w = invMass[k];
             if (w != 0) {
@@ -346,6 +352,33 @@ public final class LinkTangent {
             r += ((b >= 0 ? u[b + c] : 0) - (a >= 0 ? u[a + c] : 0)) * n;
         }
         return r;
+    }
+
+    /**
+     * One link's part of {@code P^T r = M P M^-1 r} (links that share no node): with u = M^-1 r its
+     * correction moves u_a by {@code w_a mu n} and u_b by {@code -w_b mu n}, so r_a by {@code mu n} and
+     * r_b by {@code -mu n}; only the link's ends are touched (no pass over every node).
+     */
+    private void correctDual(double[] r, int i) {
+        final double wsum = wA[i] + wB[i];
+        final int a = endA[i];
+        final int b = endB[i];
+        double rate = 0;
+        for (int c = 0; c < 3; c++) {
+            rate += ((b >= 0 ? wB[i] * r[b + c] : 0) - (a >= 0 ? wA[i] * r[a + c] : 0)) * dir[3 * i + c];
+        }
+        if (wsum > 0 && rate != 0) {
+            final double mu = rate / wsum;
+            for (int c = 0; c < 3; c++) {
+                final double n = dir[3 * i + c];
+                if (a >= 0) {
+                    r[a + c] += mu * n;
+                }
+                if (b >= 0) {
+                    r[b + c] -= mu * n;
+                }
+            }
+        }
     }
 
     /** One link's M-orthogonal correction of u (exact when no other link shares its nodes). */

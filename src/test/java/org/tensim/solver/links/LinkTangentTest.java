@@ -89,9 +89,32 @@ class LinkTangentTest {
         return sum;
     }
 
+    /** The scene without the triangle's links a-b, b-c, c-a: every node in at most one link (one sweep). */
+    static SystemState disjointScene() {
+        Topology t = new Topology();
+        Node top = t.addNode(0, 0, 0, 1).fix();
+        Node a = t.addNode(0.01, 0.002, -0.1, 0.3);
+        Node b = t.addNode(0.09, -0.01, -0.15, 0.7);
+        Node c = t.addNode(-0.05, 0.03, -0.17, 1.9);
+        Node d = t.addNode(0.3, 0, 0, 0.2);
+        Node e = t.addNode(0.32, 0.05, -0.04, 0.5);
+        t.addRigidLink(top, a);
+        t.addRigidLink(b, c);
+        t.addRigidLink(d, e);
+        return SystemState.compile(t);
+    }
+
+    @Test
+    void isTheMassWeightedProjectorForDisjointLinksToo() {
+        projectorProperties(disjointScene());
+    }
+
     @Test
     void isTheMassWeightedProjectorOntoTheLinearisedConstraints() {
-        SystemState s = scene();
+        projectorProperties(scene());
+    }
+
+    private static void projectorProperties(SystemState s) {
         LinkTangent lt = tangent(s);
         Random r = new Random(7);
         for (int trial = 0; trial < 5; trial++) {
