@@ -116,7 +116,7 @@ public final class ForceModel {
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
         // The two-surface shell's transverse shear (none unless the scene has shear elements).
-        s.shears.forces(px, f);
+        s.shears.forces(px, s.shears.damped() ? pv : null, f);
     }
 
     /**
