@@ -115,8 +115,11 @@ public final class ForceModel {
         }
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
-        // The two-surface shell's transverse shear (none unless the scene has shear elements).
-        s.shears.forces(px, f);
+        // The two-surface shell's transverse shear (none unless the scene has shear elements), unless
+        // the triangle pass adds it.
+        if (trianglePass == null || !trianglePass.addsShearForces()) {
+            s.shears.forces(px, f);
+        }
     }
 
     /**
