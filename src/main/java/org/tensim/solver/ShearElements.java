@@ -94,6 +94,47 @@ public final class ShearElements implements ExtraStiffness {
         return new ShearElements(this, px);
     }
 
+    /**
+     * The elements {@code elements} (indices into this set) as a set of their own, with their own
+     * arrays and scratch (for a thread of a parallel pass); {@link #copyStiffness} refreshes their K.
+     */
+    public ShearElements subset(int[] elements) {
+        return new ShearElements(this, elements);
+    }
+
+    private ShearElements(ShearElements other, int[] elements) {
+        int n = elements.length;
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        grad = new double[54 * n];
+        rho = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
+            System.arraycopy(other.g0, 3 * elements[i], g0, 3 * i, 3);
+        }
+        copyStiffness(other, elements);
+    }
+
+    /**
+     * Copies K and the damping time of {@code source}'s elements {@code elements} into this subset's (made by
+     * {@link #subset}).
+     */
+    public void copyStiffness(ShearElements source, int[] elements) {
+        damped = false;
+        for (int i = 0; i < elements.length; i++) {
+            System.arraycopy(source.k, 9 * elements[i], k, 9 * i, 9);
+            beta[i] = source.beta[elements[i]];
+            damped |= beta[i] > 0;
+        }
+    }
+
+    /** Node a (0..5: upper corners, then their partners) of element e. */
+    public int node(int e, int a) {
+        return node[6 * e + a];
+    }
+
     /** Gives element e the stiffness K of {@code ts}, whose nodes must be e's. */
     void setConstants(int e, TransverseShear ts) {
         org.tensim.model.Check.index("shear element", e, count());
