@@ -154,6 +154,11 @@ public final class ShearElements implements ExtraStiffness {
         }
     }
 
+    /** The Kelvin-Voigt damping time beta_e of element e, s. */
+    public double dampingS(int e) {
+        return beta[e];
+    }
+
     /** Whether any element is damped (beta_e &gt; 0). */
     public boolean damped() {
         return damped;
