@@ -36,18 +36,22 @@ public final class TransverseShear {
     private final int[] nodes;
     private final double[] restG = new double[3];
     private final double[] stiffness = new double[9];
+    private final double dampingS;
 
     /**
      * @param nodes      a_0, a_1, a_2 (upper face), b_0, b_1, b_2 (their partners on the lower face)
      * @param rest       the rest positions of those six nodes, m
      * @param kappaGPa   kappa G, the shear modulus with the shear correction factor, Pa (&gt; 0)
      * @param thicknessM t, m (&gt; 0)
+     * @param dampingS   beta, s (&gt;= 0): Kelvin-Voigt damping, the viscous shear stress's factor over the
+     *                   elastic one's on the rate of g ({@link #dampingS})
      */
-    TransverseShear(int[] nodes, Vec3[] rest, double kappaGPa, double thicknessM) {
+    TransverseShear(int[] nodes, Vec3[] rest, double kappaGPa, double thicknessM, double dampingS) {
         String name = "transverse shear " + nodes[0] + "-" + nodes[1] + "-" + nodes[2] + "/" + nodes[3] + "-"
                 + nodes[4] + "-" + nodes[5];
         Check.positive(name + " kappa G", "Pa", kappaGPa);
         Check.positive(name + " thickness", "m", thicknessM);
+        this.dampingS = Check.nonNegative(name + " damping time beta", "s", dampingS);
         for (int a = 0; a < 6; a++) {
             for (int b = a + 1; b < 6; b++) {
                 if (nodes[a] == nodes[b]) {
@@ -103,5 +107,15 @@ public final class TransverseShear {
     /** g0 of edge k (0..2) at rest, m^2. */
     public double restG(int k) {
         return restG[k];
+    }
+
+    /**
+     * Stiffness-proportional (Kelvin-Voigt) damping time beta, s (0: undamped): the element adds the
+     * force {@code -beta sum_kl K_kl (grad g_l . v) grad g_k}, as a spring's axial damping {@code beta k}
+     * and a membrane triangle's do, so that every elastic element's modes get the same Rayleigh damping
+     * ratio {@code beta w / 2} that the time-step policy assumes.
+     */
+    public double dampingS() {
+        return dampingS;
     }
 }

@@ -106,7 +106,8 @@ public final class ForceModel {
             springs(px, f);
         }
         // The spring pass covers springs only: the triangles have their own (serial unless replaced).
-        final double[] tv = s.triangleDamping ? pv : null;
+        // (The velocities also reach a parallel pass when only the shear elements it adds are damped.)
+        final double[] tv = s.triangleDamping || s.shears.damped() ? pv : null;
         if (trianglePass != null) {
             trianglePass.addTriangleForces(px, tv, f);
         } else {
@@ -115,8 +116,11 @@ public final class ForceModel {
         }
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
-        // The two-surface shell's transverse shear (none unless the scene has shear elements).
-        s.shears.forces(px, f);
+        // The two-surface shell's transverse shear (none unless the scene has shear elements), unless
+        // the triangle pass adds it.
+        if (trianglePass == null || !trianglePass.addsShearForces()) {
+            s.shears.forces(px, s.shears.damped() ? pv : null, f);
+        }
     }
 
     /**

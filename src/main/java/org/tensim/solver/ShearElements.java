@@ -22,6 +22,12 @@ import org.tensim.solver.stability.ExtraStiffness;
  * (g_k is bilinear, so H_k is constant). The first term of the tangent is positive semi-definite (K
  * is); the second, indefinite, is kept only on request ({@link #linearise(double[], boolean)}), as the
  * triangles drop their compressive stress.
+ *
+ * <p>Kelvin-Voigt damping ({@link TransverseShear#dampingS} beta_e, s) adds the rate of g to its
+ * excess: {@code f = -sum_k (K (g - g0 + beta_e dg/dt))_k grad g_k}, {@code dg_k/dt = grad g_k . v}, which
+ * dissipates {@code beta_e gdot^T K gdot >= 0} and whose Jacobian {@code -df/dv = beta_e sum_kl K_kl grad g_k
+ * grad g_l^T} is the tangent's first term times beta_e ({@link #multiplyAdd(double[], double[], int[],
+ * double, double)}).
  */
 public final class ShearElements implements ExtraStiffness {
     /** Per element: 6 node ids. */
@@ -30,6 +36,9 @@ public final class ShearElements implements ExtraStiffness {
     private final double[] k;
     /** Per element: g0 of the 3 edges, m^2. */
     private final double[] g0;
+    /** Per element: the Kelvin-Voigt damping time beta_e, s. */
+    private final double[] beta;
+    private boolean damped;
     /** Tangent: per element, grad g_k on slot a along d at [54 e + 18 k + 3 a + d]. */
     private final double[] grad;
     /** Tangent: per element, rho (3; 0 when the geometric term is dropped). */
@@ -43,6 +52,7 @@ public final class ShearElements implements ExtraStiffness {
         node = new int[6 * n];
         k = new double[9 * n];
         g0 = new double[3 * n];
+        beta = new double[n];
         grad = new double[54 * n];
         rho = new double[3 * n];
         for (int e = 0; e < n; e++) {
@@ -55,6 +65,8 @@ public final class ShearElements implements ExtraStiffness {
                     k[9 * e + 3 * c + l] = ts.stiffness(c, l);
                 }
             }
+            beta[e] = ts.dampingS();
+            damped |= beta[e] > 0;
             // g0 by the kernel's own arithmetic on the compiled positions (ts.restG(c) up to round-off):
             // the rest state is then free of force to the last bit.
             edges(e, x0);
@@ -67,6 +79,8 @@ public final class ShearElements implements ExtraStiffness {
         node = other.node;
         k = other.k;
         g0 = other.g0;
+        beta = other.beta;
+        damped = other.damped;
         grad = new double[other.grad.length];
         rho = new double[other.rho.length];
         linearise(px, false);
@@ -78,6 +92,47 @@ public final class ShearElements implements ExtraStiffness {
      */
     public ShearElements tangentAt(double[] px) {
         return new ShearElements(this, px);
+    }
+
+    /**
+     * The elements {@code elements} (indices into this set) as a set of their own, with their own
+     * arrays and scratch (for a thread of a parallel pass); {@link #copyStiffness} refreshes their K.
+     */
+    public ShearElements subset(int[] elements) {
+        return new ShearElements(this, elements);
+    }
+
+    private ShearElements(ShearElements other, int[] elements) {
+        int n = elements.length;
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        grad = new double[54 * n];
+        rho = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
+            System.arraycopy(other.g0, 3 * elements[i], g0, 3 * i, 3);
+        }
+        copyStiffness(other, elements);
+    }
+
+    /**
+     * Copies K and the damping time of {@code source}'s elements {@code elements} into this subset's (made by
+     * {@link #subset}).
+     */
+    public void copyStiffness(ShearElements source, int[] elements) {
+        damped = false;
+        for (int i = 0; i < elements.length; i++) {
+            System.arraycopy(source.k, 9 * elements[i], k, 9 * i, 9);
+            beta[i] = source.beta[elements[i]];
+            damped |= beta[i] > 0;
+        }
+    }
+
+    /** Node a (0..5: upper corners, then their partners) of element e. */
+    public int node(int e, int a) {
+        return node[6 * e + a];
     }
 
     /** Gives element e the stiffness K of {@code ts}, whose nodes must be e's. */
@@ -92,6 +147,21 @@ public final class ShearElements implements ExtraStiffness {
         for (int c = 0; c < 9; c++) {
             k[9 * e + c] = ts.stiffness(c / 3, c % 3);
         }
+        beta[e] = ts.dampingS();
+        damped = false;
+        for (double b : beta) {
+            damped |= b > 0;
+        }
+    }
+
+    /** The Kelvin-Voigt damping time beta_e of element e, s. */
+    public double dampingS(int e) {
+        return beta[e];
+    }
+
+    /** Whether any element is damped (beta_e &gt; 0). */
+    public boolean damped() {
+        return damped;
     }
 
     /** {@code K_kl} of element e (edges k, l in 0..2), J/m^4. */
@@ -124,11 +194,23 @@ public final class ShearElements implements ExtraStiffness {
         }
     }
 
-    /** Adds the elements' forces (N) at positions x (m) to f. Allocation-free. */
+    /** Adds the elements' elastic forces (N) at positions x (m) to f. Allocation-free. */
     public void forces(double[] x, double[] f) {
+        forces(x, null, f);
+    }
+
+    /**
+     * Adds the elements' forces (N) at positions x (m) and, when v (m/s) is not null, their Kelvin-Voigt
+     * damping forces, to f. Allocation-free.
+     */
+    public void forces(double[] x, double[] v, double[] f) {
+        final boolean withRate = v != null && damped;
         for (int e = 0; e < count(); e++) {
             edges(e, x);
             final int o = 6 * e;
+            if (withRate && beta[e] > 0) {
+                addRate(e, v);
+            }
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
                 final double m = -(k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
@@ -145,6 +227,24 @@ public final class ShearElements implements ExtraStiffness {
                     f[q2 + d] += m * ed;
                 }
             }
+        }
+    }
+
+    /** dg[c] += beta_e (grad g_c . v) for element e, with e_c and S_c of the last {@link #edges} call. */
+    private void addRate(int e, double[] v) {
+        final int o = 6 * e;
+        for (int c = 0; c < 3; c++) {
+            final int p = 3 * node[o + c];
+            final int q = 3 * node[o + (c + 1) % 3];
+            final int p2 = 3 * node[o + 3 + c];
+            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
+            double rate = 0;
+            for (int d = 0; d < 3; d++) {
+                final double ed = ev[3 * c + d];
+                final double sd = sv[3 * c + d];
+                rate += (-sd - ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+            }
+            dg[c] += beta[e] * rate;
         }
     }
 
@@ -195,7 +295,15 @@ public final class ShearElements implements ExtraStiffness {
      * null for the full layout (3 x node id). Allocation-free.
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
-        if (weight == 0) {
+        multiplyAdd(z, y, offset, weight, 0);
+    }
+
+    /**
+     * {@code y += (weight K + dampingWeight C) z}, C the damping's Jacobian {@code -df/dv} (the tangent's
+     * first term times beta_e per element); otherwise as {@link #multiplyAdd(double[], double[], int[], double)}.
+     */
+    public void multiplyAdd(double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
+        if (weight == 0 && (dampingWeight == 0 || !damped)) {
             return;
         }
         for (int e = 0; e < count(); e++) {
@@ -214,7 +322,8 @@ public final class ShearElements implements ExtraStiffness {
             }
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
-                final double m = weight * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
+                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1]
+                        + k[r + 2] * dg[2]);
                 final int base = 54 * e + 18 * c;
                 for (int a = 0; a < 6; a++) {
                     final int i = dof(node[o + a], offset);
@@ -251,10 +360,16 @@ public final class ShearElements implements ExtraStiffness {
 
     /** diag += weight times the diagonal of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised (full layout). */
     public void addDiagonal(double[] diag, double weight) {
+        addDiagonal(diag, weight, 0);
+    }
+
+    /** diag += the diagonal of {@code weight K + dampingWeight C} as linearised, without the geometric term (full layout). */
+    public void addDiagonal(double[] diag, double weight, double dampingWeight) {
         for (int e = 0; e < count(); e++) {
+            final double w = weight + dampingWeight * beta[e];
             for (int a = 0; a < 6; a++) {
                 for (int d = 0; d < 3; d++) {
-                    diag[3 * node[6 * e + a] + d] += weight * blockEntry(e, a, d, a, d);
+                    diag[3 * node[6 * e + a] + d] += w * blockEntry(e, a, d, a, d);
                 }
             }
         }

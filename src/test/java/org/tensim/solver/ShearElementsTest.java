@@ -296,4 +296,39 @@ class ShearElementsTest {
             assertEquals(0, bytes, in.name() + ": bytes allocated by 300 steps");
         }
     }
+
+    /** On several threads the triangle pass adds the shear elements: the serial forces, and the same bits on 1 or 2 threads. */
+    @Test
+    void theParallelForcePassAddsTheShearElements() {
+        var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
+        var sh = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(6, 0.05), T);
+        Topology t = org.tensim.scene.diaphragm.ShellNetwork.standalone(sh, m,
+                org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
+        Simulation serial = new Simulation(SystemState.compile(t));
+        Simulation parallel = new Simulation(SystemState.compile(t));
+        Random rnd = new Random(13);
+        double[] x = perturbed(serial.state(), rnd, 2e-4);
+        double[] v = new double[x.length];
+        double[] fs = new double[x.length];
+        double[] fp = new double[x.length];
+        double[] one = new double[x.length];
+        serial.forces().computeForces(0, x, v, fs);
+        var order = org.tensim.solver.parallel.ParallelSpringPass.Order.AUTO;
+        try (var p = org.tensim.solver.parallel.Parallelism.install(parallel, 2, order, 1)) {
+            assertTrue(parallel.forces().trianglePass() != null && parallel.forces().trianglePass().addsShearForces());
+            parallel.forces().computeForces(0, x, v, fp);
+        }
+        try (var p = org.tensim.solver.parallel.Parallelism.install(parallel, 1, order, 1)) {
+            parallel.forces().computeForces(0, x, v, one);
+        }
+        double[] shearOnly = new double[x.length];
+        serial.state().shears.forces(x, shearOnly);
+        double scale = maxAbs(fs);
+        assertTrue(maxAbs(shearOnly) > 0.01 * scale, "the shear forces are in the comparison: " + maxAbs(shearOnly)
+                + " of " + scale);
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(one[k], fp[k], 0, "the same bits with one thread or two, component " + k);
+            assertEquals(fs[k], fp[k], 1e-12 * scale, "serial against parallel, component " + k);
+        }
+    }
 }

@@ -13,9 +13,9 @@ import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.scene.shell.TriangleMembrane;
 
 /**
- * The springs and membrane triangles of a two-surface shell ({@link TwoSurfaces}) for a
- * {@link TissueModel}: the faces' membrane, the mid-surface's (material model), and the columns and
- * diagonals across the thickness. Used by the diaphragm and by the flat shells of the accuracy
+ * The springs, membrane triangles and transverse shear elements of a two-surface shell
+ * ({@link TwoSurfaces}) for a {@link TissueModel}: the faces' membrane, the mid-surface's and the
+ * transverse shear (material model), and the columns and diagonals across the thickness. Used by the diaphragm and by the flat shells of the accuracy
  * scenes, so both are built by the same rules.
  */
 public final class ShellNetwork {

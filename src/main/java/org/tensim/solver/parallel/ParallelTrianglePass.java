@@ -3,12 +3,14 @@ package org.tensim.solver.parallel;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import org.tensim.solver.ShearElements;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleForcePass;
 import org.tensim.solver.TriangleKernels;
 
 /**
- * The membrane triangles' forces ({@link TriangleKernels}) on a {@link WorkerPool}, without locks:
+ * The membrane triangles' forces ({@link TriangleKernels}) and the transverse shear elements'
+ * ({@link ShearElements}) on a {@link WorkerPool}, without locks:
  * the nodes the triangles use are cut into {@link #BLOCKS} slabs along x (equal counts, by rest
  * position), a triangle whose nodes all lie in one slab belongs to it, and the slabs, whose node
  * sets are disjoint, are shared among the workers; the triangles that straddle two slabs (a thin
@@ -35,9 +37,11 @@ public final class ParallelTrianglePass implements TriangleForcePass {
     private double[] f;
     private final WorkerPool.Task task;
 
-    /** One slab's triangles, as compact copies of the state's arrays. */
+    /** One slab's triangles and shear elements, as compact copies of the state's arrays. */
     private static final class Block {
         final int[] source;
+        final int[] shearSource;
+        final ShearElements shears;
         final int[] p3;
         final int[] q3;
         final double[] rest;
@@ -45,7 +49,9 @@ public final class ParallelTrianglePass implements TriangleForcePass {
         final double[] lambda;
         final double[] damping;
 
-        Block(SystemState s, List<Integer> elements) {
+        Block(SystemState s, List<Integer> elements, List<Integer> shearElements) {
+            shearSource = shearElements.stream().mapToInt(Integer::intValue).toArray();
+            shears = s.shears.subset(shearSource);
             int n = elements.size();
             source = new int[n];
             p3 = new int[3 * n];
@@ -69,10 +75,12 @@ public final class ParallelTrianglePass implements TriangleForcePass {
                 lambda[i] = s.triLambda[source[i]];
                 damping[i] = s.triDamping[source[i]];
             }
+            shears.copyStiffness(s.shears, shearSource);
         }
 
         void add(double[] x, double[] v, double[] f) {
             TriangleKernels.forces(p3, q3, rest, mu, lambda, damping, source.length, x, v, f);
+            shears.forces(x, v, f);
         }
     }
 
@@ -93,11 +101,24 @@ public final class ParallelTrianglePass implements TriangleForcePass {
             }
             lists.get(b).add(e);
         }
+        List<List<Integer>> shearLists = new ArrayList<>();
+        for (int b = 0; b <= BLOCKS; b++) {
+            shearLists.add(new ArrayList<>());
+        }
+        for (int e = 0; e < state.shears.count(); e++) {
+            int b = slab[state.shears.node(e, 0)];
+            for (int a = 0; a < 6; a++) {
+                if (b < 0 || slab[state.shears.node(e, a)] != b) {
+                    b = BLOCKS; // the seam (or a node outside the triangles' slabs)
+                }
+            }
+            shearLists.get(b).add(e);
+        }
         blocks = new Block[BLOCKS];
         for (int b = 0; b < BLOCKS; b++) {
-            blocks[b] = new Block(state, lists.get(b));
+            blocks[b] = new Block(state, lists.get(b), shearLists.get(b));
         }
-        seam = new Block(state, lists.get(BLOCKS));
+        seam = new Block(state, lists.get(BLOCKS), shearLists.get(BLOCKS));
         final int workers = pool.size();
         task = w -> {
             for (int b = w; b < BLOCKS; b += workers) {
@@ -136,6 +157,12 @@ public final class ParallelTrianglePass implements TriangleForcePass {
     /** Triangles on the seam (added by the calling thread after the slabs). */
     public int seamTriangles() {
         return seam.source.length;
+    }
+
+    /** The slabs also add the transverse shear elements (those on the seam serially, as the triangles). */
+    @Override
+    public boolean addsShearForces() {
+        return true;
     }
 
     @Override

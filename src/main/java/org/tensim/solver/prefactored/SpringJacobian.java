@@ -21,7 +21,8 @@ import org.tensim.solver.TriangleTangent;
  * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
  * semi-definite), at the new step's time. Transverse shear elements add {@code beta^2 k grad g grad g^T}
- * ({@link org.tensim.solver.ShearElements}, their indefinite geometric term dropped).
+ * ({@link org.tensim.solver.ShearElements}, their indefinite geometric term dropped), and {@code beta beta_e}
+ * times the same for their Kelvin-Voigt damping.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -135,6 +136,6 @@ final class SpringJacobian {
             triangles.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
         s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
-        s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight);
+        s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
     }
 }
