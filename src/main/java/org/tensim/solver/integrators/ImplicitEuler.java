@@ -45,7 +45,7 @@ import org.tensim.solver.stability.LinearStability;
  * model's rigid columns before stage 2 put them back, and the run came to rest off the constrained
  * equilibrium (docs/diaphragm.md). Why x + h v, once: a link that turns over the step then asks
  * for its length where it will be. Measured (10-ring diaphragm, CG to 1e-3, against RK2 at end of
- * inspiration): at 10 ms 2.3 % linearised at x, 0.11 % at x + h v, 0.09 % linearised again after
+ * inspiration, shear elements undamped): at 10 ms 2.3 % linearised at x, 0.11 % at x + h v, 0.09 % linearised again after
  * a first solve for 26 % more CG products (5 ms: 0.055, 0.034, 0.038 %; without the links 16 % and
  * 38 %); the remainder is left to stage 2.
  *
