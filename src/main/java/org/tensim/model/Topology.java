@@ -144,6 +144,15 @@ public final class Topology {
      * @param thicknessM t, m (&gt; 0)
      */
     public TransverseShear addShear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
+        return addShear(upper, lower, kappaGPa, thicknessM, 0);
+    }
+
+    /**
+     * As {@link #addShear(int[], int[], double, double)} with Kelvin-Voigt damping.
+     *
+     * @param dampingS stiffness-proportional damping time beta, s (&gt;= 0; 0 undamped)
+     */
+    public TransverseShear addShear(int[] upper, int[] lower, double kappaGPa, double thicknessM, double dampingS) {
         if (upper.length != 3 || lower.length != 3) {
             throw new IllegalArgumentException("a transverse shear element needs 3 upper corners and 3 partners, got "
                     + upper.length + " and " + lower.length + " node ids");
@@ -154,7 +163,7 @@ public final class Topology {
             Check.index("transverse shear node", ids[a], nodes.size());
             rest[a] = nodes.get(ids[a]).position();
         }
-        TransverseShear e = new TransverseShear(ids, rest, kappaGPa, thicknessM);
+        TransverseShear e = new TransverseShear(ids, rest, kappaGPa, thicknessM, dampingS);
         shears.add(e);
         return e;
     }

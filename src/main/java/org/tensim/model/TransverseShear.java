@@ -28,6 +28,10 @@ package org.tensim.model;
  * {@code r^T C r = A |gamma|^2 >= 0}), positive on the one incompatible direction n, and Q = C on
  * an equilateral triangle (where it is the edge-by-edge {@code 2 A / 3}).
  *
+ * <p>Damping (optional) is Kelvin-Voigt, {@code rho = K (g - g0 + beta dg/dt)} in the forces, as the
+ * triangles' and the springs' stiffness-proportional damping: it dissipates
+ * {@code beta (dg/dt)^T K dg/dt >= 0} and does not resist rigid motions (dg/dt = 0 there).
+ *
  * <p>g is bilinear and invariant under rigid motions; under pure bending of a cylinder or sphere
  * with the columns on the normals, the mean of an edge's two end normals is perpendicular to its
  * chord, so {@code g = g0}: no shear locking.
@@ -36,18 +40,22 @@ public final class TransverseShear {
     private final int[] nodes;
     private final double[] restG = new double[3];
     private final double[] stiffness = new double[9];
+    private final double dampingS;
 
     /**
      * @param nodes      a_0, a_1, a_2 (upper face), b_0, b_1, b_2 (their partners on the lower face)
      * @param rest       the rest positions of those six nodes, m
      * @param kappaGPa   kappa G, the shear modulus with the shear correction factor, Pa (&gt; 0)
      * @param thicknessM t, m (&gt; 0)
+     * @param dampingS   Kelvin-Voigt damping time beta, s (&gt;= 0): the viscous part {@code beta dg/dt} is added
+     *                   to {@code g - g0} in the forces, as the triangles' and springs' stiffness-proportional damping
      */
-    TransverseShear(int[] nodes, Vec3[] rest, double kappaGPa, double thicknessM) {
+    TransverseShear(int[] nodes, Vec3[] rest, double kappaGPa, double thicknessM, double dampingS) {
         String name = "transverse shear " + nodes[0] + "-" + nodes[1] + "-" + nodes[2] + "/" + nodes[3] + "-"
                 + nodes[4] + "-" + nodes[5];
         Check.positive(name + " kappa G", "Pa", kappaGPa);
         Check.positive(name + " thickness", "m", thicknessM);
+        this.dampingS = Check.nonNegative(name + " damping time beta", "s", dampingS);
         for (int a = 0; a < 6; a++) {
             for (int b = a + 1; b < 6; b++) {
                 if (nodes[a] == nodes[b]) {
@@ -98,6 +106,11 @@ public final class TransverseShear {
     /** {@code K_kl = kappa G t Q_kl / (4 s_k s_l)}, J/m^4, for edges k, l (0..2); the energy is {@code (g - g0)^T K (g - g0) / 2}. */
     public double stiffness(int k, int l) {
         return stiffness[3 * k + l];
+    }
+
+    /** Kelvin-Voigt damping time beta, s (0: undamped). */
+    public double dampingS() {
+        return dampingS;
     }
 
     /** g0 of edge k (0..2) at rest, m^2. */

@@ -106,7 +106,7 @@ public final class ForceModel {
             springs(px, f);
         }
         // The spring pass covers springs only: the triangles have their own (serial unless replaced).
-        final double[] tv = s.triangleDamping ? pv : null;
+        final double[] tv = s.triangleDamping || s.shears.damped() ? pv : null;
         if (trianglePass != null) {
             trianglePass.addTriangleForces(px, tv, f);
         } else {
@@ -118,7 +118,7 @@ public final class ForceModel {
         // The two-surface shell's transverse shear (none unless the scene has shear elements), unless
         // the triangle pass adds it.
         if (trianglePass == null || !trianglePass.addsShearForces()) {
-            s.shears.forces(px, f);
+            s.shears.forces(px, s.shears.damped() ? pv : null, f);
         }
     }
 

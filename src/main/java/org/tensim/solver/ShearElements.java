@@ -2,8 +2,6 @@ package org.tensim.solver;
 
 import java.util.List;
 import org.tensim.model.TransverseShear;
-import org.tensim.solver.stability.CriticalTimeStep;
-import org.tensim.solver.stability.ExtraStiffness;
 
 /**
  * The transverse shear elements of a {@link SystemState} ({@link TransverseShear}) on flat arrays
@@ -19,17 +17,21 @@ import org.tensim.solver.stability.ExtraStiffness;
  *   H_k z = (-(B z) - (A z), (B z) - (A z), A z, A z),   A z = z_q - z_p,   B z = z_p' + z_q' - z_p - z_q
  * </pre>
  *
- * (g_k is bilinear, so H_k is constant). The first term of the tangent is positive semi-definite (K
+ * (g_k is bilinear, so H_k is constant). With Kelvin-Voigt damping beta (s) the forces use
+ * {@code rho = K (g - g0 + beta dg/dt)}. The first term of the tangent is positive semi-definite (K
  * is); the second, indefinite, is kept only on request ({@link #linearise(double[], boolean)}), as the
- * triangles drop their compressive stress.
+ * triangles drop their compressive stress. As a stiffness for the critical step: {@link ShearStiffness}.
  */
-public final class ShearElements implements ExtraStiffness {
+public final class ShearElements {
     /** Per element: 6 node ids. */
     private final int[] node;
     /** Per element: K row-major (9), J/m^4. */
     private final double[] k;
     /** Per element: g0 of the 3 edges, m^2. */
     private final double[] g0;
+    /** Per element: Kelvin-Voigt damping time beta, s. */
+    private final double[] beta;
+    private boolean damped;
     /** Tangent: per element, grad g_k on slot a along d at [54 e + 18 k + 3 a + d]. */
     private final double[] grad;
     /** Tangent: per element, rho (3; 0 when the geometric term is dropped). */
@@ -43,10 +45,13 @@ public final class ShearElements implements ExtraStiffness {
         node = new int[6 * n];
         k = new double[9 * n];
         g0 = new double[3 * n];
+        beta = new double[n];
         grad = new double[54 * n];
         rho = new double[3 * n];
         for (int e = 0; e < n; e++) {
             TransverseShear ts = shears.get(e);
+            beta[e] = ts.dampingS();
+            damped |= beta[e] != 0;
             for (int a = 0; a < 6; a++) {
                 node[6 * e + a] = ts.node(a);
             }
@@ -67,6 +72,8 @@ public final class ShearElements implements ExtraStiffness {
         node = other.node;
         k = other.k;
         g0 = other.g0;
+        beta = other.beta;
+        damped = other.damped;
         grad = new double[other.grad.length];
         rho = new double[other.rho.length];
         linearise(px, false);
@@ -76,7 +83,7 @@ public final class ShearElements implements ExtraStiffness {
      * The same elements with their own tangent, linearised at px without the geometric term (for a
      * critical-step estimate or a statics solve, which must not disturb a solver's tangent).
      */
-    public ShearElements tangentAt(double[] px) {
+    ShearElements tangentAt(double[] px) {
         return new ShearElements(this, px);
     }
 
@@ -93,6 +100,7 @@ public final class ShearElements implements ExtraStiffness {
         node = new int[6 * n];
         k = new double[9 * n];
         g0 = new double[3 * n];
+        beta = new double[n];
         grad = new double[54 * n];
         rho = new double[3 * n];
         for (int i = 0; i < n; i++) {
@@ -102,10 +110,12 @@ public final class ShearElements implements ExtraStiffness {
         copyStiffness(other, elements);
     }
 
-    /** Copies K of {@code source}'s elements {@code elements} into this subset's (made by {@link #subset}). */
+    /** Copies K and beta of {@code source}'s elements {@code elements} into this subset's (made by {@link #subset}). */
     public void copyStiffness(ShearElements source, int[] elements) {
         for (int i = 0; i < elements.length; i++) {
             System.arraycopy(source.k, 9 * elements[i], k, 9 * i, 9);
+            beta[i] = source.beta[elements[i]];
+            damped |= beta[i] != 0;
         }
     }
 
@@ -126,6 +136,13 @@ public final class ShearElements implements ExtraStiffness {
         for (int c = 0; c < 9; c++) {
             k[9 * e + c] = ts.stiffness(c / 3, c % 3);
         }
+        beta[e] = ts.dampingS();
+        damped |= beta[e] != 0;
+    }
+
+    /** Whether any element is damped (its forces then depend on the velocities). */
+    public boolean damped() {
+        return damped;
     }
 
     /** {@code K_kl} of element e (edges k, l in 0..2), J/m^4. */
@@ -158,10 +175,22 @@ public final class ShearElements implements ExtraStiffness {
         }
     }
 
-    /** Adds the elements' forces (N) at positions x (m) to f. Allocation-free. */
+    /** Adds the elements' elastic forces (N) at positions x (m) to f. Allocation-free. */
     public void forces(double[] x, double[] f) {
+        forces(x, null, f);
+    }
+
+    /**
+     * Adds the elements' forces (N) at positions x (m) to f: elastic, and when {@code v} is not null the
+     * Kelvin-Voigt damping of the elements whose beta is not 0, at velocities v (m/s):
+     * {@code rho = K (g - g0 + beta dg/dt)}, {@code dg_k/dt = grad g_k . v}. Allocation-free.
+     */
+    public void forces(double[] x, double[] v, double[] f) {
         for (int e = 0; e < count(); e++) {
             edges(e, x);
+            if (v != null && beta[e] != 0) {
+                addRate(e, v);
+            }
             final int o = 6 * e;
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
@@ -179,6 +208,24 @@ public final class ShearElements implements ExtraStiffness {
                     f[q2 + d] += m * ed;
                 }
             }
+        }
+    }
+
+    /** dg += beta dg/dt for element e at velocities v (after {@link #edges}). */
+    private void addRate(int e, double[] v) {
+        final int o = 6 * e;
+        for (int c = 0; c < 3; c++) {
+            final int p = 3 * node[o + c];
+            final int q = 3 * node[o + (c + 1) % 3];
+            final int p2 = 3 * node[o + 3 + c];
+            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
+            double rate = 0;
+            for (int d = 0; d < 3; d++) {
+                final double ed = ev[3 * c + d];
+                final double sd = sv[3 * c + d];
+                rate += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+            }
+            dg[c] += beta[e] * rate;
         }
     }
 
@@ -229,7 +276,16 @@ public final class ShearElements implements ExtraStiffness {
      * null for the full layout (3 x node id). Allocation-free.
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
-        if (weight == 0) {
+        multiplyAdd(z, y, offset, weight, 0);
+    }
+
+    /**
+     * {@code y += (weight + dampingWeight beta_e) K_e z} summed over the elements: an implicit step's
+     * stiffness and damping terms, the damping matrix taken as beta_e times the tangent (without the
+     * geometric term); offsets as in {@link #multiplyAdd(double[], double[], int[], double)}.
+     */
+    public void multiplyAdd(double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
+        if (weight == 0 && dampingWeight == 0) {
             return;
         }
         for (int e = 0; e < count(); e++) {
@@ -248,7 +304,7 @@ public final class ShearElements implements ExtraStiffness {
             }
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
-                final double m = weight * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
+                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
                 final int base = 54 * e + 18 * c;
                 for (int a = 0; a < 6; a++) {
                     final int i = dof(node[o + a], offset);
@@ -285,17 +341,23 @@ public final class ShearElements implements ExtraStiffness {
 
     /** diag += weight times the diagonal of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised (full layout). */
     public void addDiagonal(double[] diag, double weight) {
+        addDiagonal(diag, weight, 0);
+    }
+
+    /** diag += the diagonal of {@code (weight + dampingWeight beta_e) sum_kl K_kl grad g_k grad g_l^T} (full layout). */
+    public void addDiagonal(double[] diag, double weight, double dampingWeight) {
         for (int e = 0; e < count(); e++) {
+            final double w = weight + dampingWeight * beta[e];
             for (int a = 0; a < 6; a++) {
                 for (int d = 0; d < 3; d++) {
-                    diag[3 * node[6 * e + a] + d] += weight * blockEntry(e, a, d, a, d);
+                    diag[3 * node[6 * e + a] + d] += w * blockEntry(e, a, d, a, d);
                 }
             }
         }
     }
 
     /** Entry (slot a, axis d; slot b, axis f) of element e's {@code sum_kl K_kl grad g_k grad g_l^T}. */
-    private double blockEntry(int e, int a, int d, int b, int f) {
+    double blockEntry(int e, int a, int d, int b, int f) {
         double sum = 0;
         for (int c = 0; c < 3; c++) {
             final double gc = grad[54 * e + 18 * c + 3 * a + d];
@@ -320,46 +382,6 @@ public final class ShearElements implements ExtraStiffness {
     private static void add(double[] y, int o, int d, double v) {
         if (o >= 0) {
             y[o + d] += v;
-        }
-    }
-
-    @Override
-    public void multiplyAdd(double[] z, double[] y) {
-        multiplyAdd(z, y, null, 1);
-    }
-
-    /**
-     * Gershgorin rows of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised: the Frobenius norm of
-     * every 3 x 3 node block, added as {@link CriticalTimeStep#gershgorin} adds a spring's stiffness (as
-     * {@link TriangleTangent} does).
-     */
-    @Override
-    public void addGershgorinRows(double[] mass, boolean[] free, CriticalTimeStep.Form form, double[] row) {
-        for (int e = 0; e < count(); e++) {
-            for (int a = 0; a < 6; a++) {
-                final int na = node[6 * e + a];
-                if (!free[na]) {
-                    continue;
-                }
-                for (int b = 0; b < 6; b++) {
-                    final int nb = node[6 * e + b];
-                    double sq = 0;
-                    for (int d = 0; d < 3; d++) {
-                        for (int f = 0; f < 3; f++) {
-                            final double v = blockEntry(e, a, d, b, f);
-                            sq += v * v;
-                        }
-                    }
-                    final double norm = Math.sqrt(sq);
-                    if (form == CriticalTimeStep.Form.ROWS) {
-                        row[na] += 0.5 * norm;
-                    } else if (nb == na) {
-                        row[na] += norm / mass[na];
-                    } else if (free[nb]) {
-                        row[na] += norm / Math.sqrt(mass[na] * mass[nb]);
-                    }
-                }
-            }
         }
     }
 }

@@ -271,7 +271,7 @@ public final class ImplicitEuler implements Integrator {
             triangles.addDiagonal(dg, h2, h);
         }
         s.shears.linearise(px, false);
-        s.shears.addDiagonal(dg, h2);
+        s.shears.addDiagonal(dg, h2, h);
         for (int k = 0; k < dg.length; k++) {
             dg[k] = free[k] / dg[k];
         }
@@ -300,7 +300,7 @@ public final class ImplicitEuler implements Integrator {
         if (triangles != null) {
             triangles.multiplyAdd(pv, out, null, h * h, h);
         }
-        s.shears.multiplyAdd(pv, out, null, h * h);
+        s.shears.multiplyAdd(pv, out, null, h * h, h);
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];
         }

@@ -80,7 +80,7 @@ public final class ParallelTrianglePass implements TriangleForcePass {
 
         void add(double[] x, double[] v, double[] f) {
             TriangleKernels.forces(p3, q3, rest, mu, lambda, damping, source.length, x, v, f);
-            shears.forces(x, f);
+            shears.forces(x, v, f);
         }
     }
 
