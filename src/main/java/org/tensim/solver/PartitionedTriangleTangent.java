@@ -27,6 +27,12 @@ package org.tensim.solver;
 public final class PartitionedTriangleTangent {
     /** Slabs of the partition (fixed: the summation order must not depend on the thread count). */
     public static final int BLOCKS = 8;
+    /**
+     * Elements from which the slabs are dispatched to the threads (below, the caller runs them: a
+     * dispatch, and on a loaded machine the wait for the other thread, cost more); the force pass's
+     * threshold ({@code ParallelTrianglePass.MIN_PARALLEL_TRIANGLES}).
+     */
+    public static final int MIN_PARALLEL_ELEMENTS = 2048;
 
     private final SystemState s;
     private final int[] element; // source element of each entry, grouped by slab, the seam last
@@ -149,7 +155,11 @@ public final class PartitionedTriangleTangent {
         productScale = scale;
         productDampingScale = dampingScale;
         try {
-            loops.runTasks(BLOCKS, slabs);
+            if (element.length >= MIN_PARALLEL_ELEMENTS) {
+                loops.runTasks(BLOCKS, slabs);
+            } else {
+                slabs(0, BLOCKS); // the same slabs in the same order: the same bits
+            }
         } finally {
             pIn = null;
             pOut = null;

@@ -21,8 +21,8 @@ import org.tensim.solver.TriangleTangent;
  * and its products and linearisation give the same bits on 1, 2 or 3 threads.
  */
 class PartitionedTriangleTangentTest {
-    private static final int NX = 48; // nodes along x (across the slabs)
-    private static final int NY = 8;
+    private static final int NX = 100; // nodes along x (across the slabs)
+    private static final int NY = 12; // with NX: 2,178 elements, enough for the slabs to be dispatched
 
     /**
      * A bumpy sheet of NX x NY nodes, two triangles per cell; every third triangle takes the midpoints
@@ -164,6 +164,8 @@ class PartitionedTriangleTangentTest {
         for (int k = 0; k < n3; k++) {
             p[k] = rnd.nextGaussian();
         }
+        assertTrue(2 * (NX - 1) * (NY - 1) >= PartitionedTriangleTangent.MIN_PARALLEL_ELEMENTS,
+                "enough elements for the slabs to go to the threads");
         double[] reference = null;
         for (int threads = 1; threads <= 3; threads++) {
             try (WorkerPool pool = new WorkerPool(threads, "tangent-test")) {

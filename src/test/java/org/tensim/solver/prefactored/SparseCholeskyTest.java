@@ -8,7 +8,10 @@ import edu.emory.mathcs.csparsej.tdouble.Dcs_cholsol;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 
-/** The CSparseJ factor with its AMD ordering solves what it factored, three columns at once. */
+/**
+ * The CSparseJ factor with its AMD ordering solves what it factored, three columns at once, as a
+ * symmetric positive definite operator (what conjugate gradient needs of a preconditioner).
+ */
 class SparseCholeskyTest {
     /** A random graph Laplacian plus a positive diagonal: symmetric positive definite. */
     private static double[][] laplacian(int n, int edges, long seed, double diagonal) {
@@ -80,10 +83,10 @@ class SparseCholeskyTest {
      * A shell-like matrix: a grid of node pairs (as a shell's two layers), each node coupled to its twin
      * and to its grid neighbours and their twins. Its factor comes in supernodes, which solve3 takes
      * two columns at a time; the answer is CSparseJ's own column-by-column solve (cs_cholsol) to
-     * round-off.
+     * round-off, and the solve is a symmetric positive definite operator.
      */
     @Test
-    void pairedColumnsSolveAsCsparseDoes() {
+    void pairedColumnsSolveAsCsparseDoesAndStaySymmetric() {
         int side = 24;
         int n = 2 * side * side;
         java.util.List<double[]> entries = new java.util.ArrayList<>();
@@ -142,7 +145,8 @@ class SparseCholeskyTest {
             assertTrue(Dcs_cholsol.cs_cholsol(1, SparseCholesky.compress(n, rows, cols, vals, count), expected[c]),
                     "CSparseJ's own solve");
         }
-        ch.solve3(b, new double[3 * n]);
+        double[] u = b.clone();
+        ch.solve3(u, new double[3 * n]);
         double scale = 0;
         for (double[] e : expected) {
             for (double v : e) {
@@ -151,9 +155,26 @@ class SparseCholeskyTest {
         }
         for (int i = 0; i < n; i++) {
             for (int c = 0; c < 3; c++) {
-                assertEquals(expected[c][i], b[3 * i + c], 1e-13 * scale, "unknown " + i + ", coordinate " + c);
+                assertEquals(expected[c][i], u[3 * i + c], 1e-13 * scale, "unknown " + i + ", coordinate " + c);
             }
         }
+        // Symmetric and positive definite: a . S w = w . S a to round-off, and b . S b > 0.
+        double[] w = new double[3 * n];
+        for (int k = 0; k < w.length; k++) {
+            w[k] = r.nextGaussian();
+        }
+        double[] sw = w.clone();
+        ch.solve3(sw, new double[3 * n]);
+        double bSw = 0;
+        double wSb = 0;
+        double bSb = 0;
+        for (int k = 0; k < b.length; k++) {
+            bSw += b[k] * sw[k];
+            wSb += w[k] * u[k];
+            bSb += b[k] * u[k];
+        }
+        assertEquals(bSw, wSb, 1e-12 * Math.abs(bSb), "symmetric");
+        assertTrue(bSb > 0, "positive definite");
     }
 
     @Test
