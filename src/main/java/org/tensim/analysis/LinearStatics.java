@@ -9,6 +9,7 @@ import org.hipparchus.linear.RealVector;
 import org.hipparchus.util.IterationManager;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
+import org.tensim.solver.ShearElements;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleTangent;
 
@@ -17,7 +18,8 @@ import org.tensim.solver.TriangleTangent;
  * with Hipparchus' conjugate gradients (Jacobi preconditioner), K applied spring by spring,
  * {@code K_ij = -k n n^T} for a spring of stiffness k along the unit vector n between its nodes
  * (no prestress: every spring at its rest length), and the membrane triangles' linear
- * constant-strain stiffness ({@link TriangleTangent} at rest). Fixed degrees of freedom have u = 0.
+ * constant-strain stiffness ({@link TriangleTangent} at rest) and the transverse shear elements'
+ * {@code k grad g grad g^T} ({@link ShearElements} at rest). Fixed degrees of freedom have u = 0.
  * Rigid links (disjoint) are kept to first order, {@code n . (u_b - u_a) = 0}, by tying the
  * component of u_b along the link's direction n to u_a's: CG runs on {@code T^T K T} with
  * {@code u = T z}.
@@ -67,10 +69,13 @@ public final class LinearStatics {
                 diag[3 * b[s] + i] += kii;
             }
         }
-        TriangleTangent triangles = t.triangles().isEmpty() ? null : new TriangleTangent(SystemState.compile(t));
+        SystemState compiled = SystemState.compile(t);
+        TriangleTangent triangles = t.triangles().isEmpty() ? null : new TriangleTangent(compiled);
         if (triangles != null) {
             triangles.addDiagonal(diag, 1, 0);
         }
+        ShearElements shears = compiled.shears.tangentAt(compiled.x0);
+        shears.addDiagonal(diag, 1);
         for (int i = 0; i < n; i++) {
             if (fixed[i] || diag[i] == 0) {
                 diag[i] = 1;
@@ -107,12 +112,13 @@ public final class LinearStatics {
                     y[3 * b[s] + 1] += fy;
                     y[3 * b[s] + 2] += fz;
                 }
+                for (int i = 0; i < n; i++) {
+                    x[i] = fixed[i] ? 0 : x[i];
+                }
                 if (triangles != null) {
-                    for (int i = 0; i < n; i++) {
-                        x[i] = fixed[i] ? 0 : x[i];
-                    }
                     triangles.multiplyAdd(x, y, null);
                 }
+                shears.multiplyAdd(x, y, null, 1);
                 ties.reduce(y, z);
                 for (int i = 0; i < n; i++) {
                     if (fixed[i]) {

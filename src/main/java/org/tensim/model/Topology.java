@@ -23,6 +23,7 @@ public final class Topology {
     private final List<RigidLink> links = new ArrayList<>();
     private final List<TriangleElement> triangles = new ArrayList<>();
     private final List<ActiveFibre> fibres = new ArrayList<>();
+    private final List<TransverseShear> shears = new ArrayList<>();
     private final List<NodalForce> forces = new ArrayList<>();
     private Vec3 gravity = Vec3.ZERO;
     private double viscousDamping;
@@ -134,6 +135,39 @@ public final class Topology {
         return e;
     }
 
+    /**
+     * Adds a transverse shear element on the upper triangle {@code upper} whose corners' partners on
+     * the lower face are {@code lower} (corner by corner), at rest in the nodes' current positions; see
+     * {@link TransverseShear}.
+     *
+     * @param kappaGPa   kappa G, Pa (&gt; 0)
+     * @param thicknessM t, m (&gt; 0)
+     */
+    public TransverseShear addShear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
+        return addShear(upper, lower, kappaGPa, thicknessM, 0);
+    }
+
+    /**
+     * As {@link #addShear(int[], int[], double, double)}, with Kelvin-Voigt damping.
+     *
+     * @param dampingS beta, s (&gt;= 0; see {@link TransverseShear#dampingS})
+     */
+    public TransverseShear addShear(int[] upper, int[] lower, double kappaGPa, double thicknessM, double dampingS) {
+        if (upper.length != 3 || lower.length != 3) {
+            throw new IllegalArgumentException("a transverse shear element needs 3 upper corners and 3 partners, got "
+                    + upper.length + " and " + lower.length + " node ids");
+        }
+        int[] ids = {upper[0], upper[1], upper[2], lower[0], lower[1], lower[2]};
+        Vec3[] rest = new Vec3[6];
+        for (int a = 0; a < 6; a++) {
+            Check.index("transverse shear node", ids[a], nodes.size());
+            rest[a] = nodes.get(ids[a]).position();
+        }
+        TransverseShear e = new TransverseShear(ids, rest, kappaGPa, thicknessM, dampingS);
+        shears.add(e);
+        return e;
+    }
+
     /** Adds a rigid link whose length is the nodes' current distance (must be > 0). */
     public RigidLink addRigidLink(Node a, Node b) {
         own(a);
@@ -208,6 +242,11 @@ public final class Topology {
         return Collections.unmodifiableList(fibres);
     }
 
+    /** The transverse shear elements, in the order added. */
+    public List<TransverseShear> shears() {
+        return Collections.unmodifiableList(shears);
+    }
+
     public List<RigidLink> rigidLinks() {
         return Collections.unmodifiableList(links);
     }
@@ -241,7 +280,7 @@ public final class Topology {
     @Override
     public String toString() {
         return "Topology[" + nodes.size() + " nodes, " + springs.size() + " springs, " + triangles.size()
-                + " triangles, " + links.size()
+                + " triangles, " + shears.size() + " shear elements, " + links.size()
                 + " rigid links, " + forces.size() + " forces]";
     }
 }

@@ -4,7 +4,7 @@ package org.tensim.solver;
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
  * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
- * active fibre tensions ({@link FibreTension}).
+ * active fibre tensions ({@link FibreTension}) and the transverse shear elements ({@link ShearElements}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -106,7 +106,8 @@ public final class ForceModel {
             springs(px, f);
         }
         // The spring pass covers springs only: the triangles have their own (serial unless replaced).
-        final double[] tv = s.triangleDamping ? pv : null;
+        // (The velocities also reach a parallel pass when only the shear elements it adds are damped.)
+        final double[] tv = s.triangleDamping || s.shears.damped() ? pv : null;
         if (trianglePass != null) {
             trianglePass.addTriangleForces(px, tv, f);
         } else {
@@ -115,6 +116,11 @@ public final class ForceModel {
         }
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
+        // The two-surface shell's transverse shear (none unless the scene has shear elements), unless
+        // the triangle pass adds it.
+        if (trianglePass == null || !trianglePass.addsShearForces()) {
+            s.shears.forces(px, s.shears.damped() ? pv : null, f);
+        }
     }
 
     /**
@@ -141,9 +147,9 @@ public final class ForceModel {
         return TriangleKernels.energy(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triangleCount(), px);
     }
 
-    /** Elastic energy of springs and membrane triangles at positions px, J. */
+    /** Elastic energy of springs, membrane triangles and transverse shear elements at positions px, J. */
     public double elasticEnergy(double[] px) {
-        return springEnergy(px) + triangleEnergy(px);
+        return springEnergy(px) + triangleEnergy(px) + s.shears.energy(px);
     }
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */

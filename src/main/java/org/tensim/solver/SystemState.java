@@ -11,6 +11,7 @@ import org.tensim.model.Topology;
 import org.tensim.model.TriangleElement;
 import org.tensim.model.Vec3;
 import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.solver.stability.ExtraStiffness;
 
 /**
  * The compiled, flat simulation state of a {@link Topology}: arrays of doubles
@@ -72,6 +73,9 @@ public final class SystemState {
 
     /** Active fibre tensions ({@link FibreTension}; count 0 when the topology has none). */
     public final FibreTension fibres;
+
+    /** Transverse shear elements of the two-surface shell ({@link ShearElements}; count 0 when none). */
+    public final ShearElements shears;
 
     /** Nodes that carry external forces, and the laws (parallel arrays). */
     public final int[] forceNode;
@@ -179,6 +183,7 @@ public final class SystemState {
         }
 
         fibres = new FibreTension(t.fibres());
+        shears = new ShearElements(t.shears(), x0);
 
         List<RigidLink> l = t.rigidLinks();
         linkA = new int[l.size()];
@@ -305,6 +310,13 @@ public final class SystemState {
         criticalTimeStep = null;
     }
 
+    /** Gives shear element e the stiffness of {@code ts} (the same nodes); takes effect at the next force pass. */
+    public void setShearConstants(int e, org.tensim.model.TransverseShear ts) {
+        shears.setConstants(e, ts);
+        parameterVersion++;
+        criticalTimeStep = null;
+    }
+
     /** Sets the axial damping (N s/m, >= 0) of spring s. */
     public void setSpringDamping(int s, double c) {
         Check.index("spring", s, springC.length);
@@ -336,12 +348,17 @@ public final class SystemState {
     }
 
     /**
-     * A new critical time step estimate (springs and membrane triangles, at the rest positions),
-     * not cached: for a thread other than the simulation's.
+     * A new critical time step estimate (springs, membrane triangles and shear elements, at the rest
+     * positions), not cached: for a thread other than the simulation's.
      */
     public CriticalTimeStep estimateCriticalTimeStep() {
-        return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0,
-                triangleCount() == 0 ? org.tensim.solver.stability.ExtraStiffness.NONE : new TriangleTangent(this));
+        return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0, elementStiffness());
+    }
+
+    /** The stiffness of the membrane triangles and shear elements linearised at the rest positions (new objects). */
+    public ExtraStiffness elementStiffness() {
+        ExtraStiffness tri = triangleCount() == 0 ? ExtraStiffness.NONE : new TriangleTangent(this);
+        return ExtraStiffness.sum(tri, shears.count() == 0 ? ExtraStiffness.NONE : shears.tangentAt(x0));
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

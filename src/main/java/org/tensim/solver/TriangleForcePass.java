@@ -11,4 +11,12 @@ public interface TriangleForcePass {
      * Kelvin-Voigt damping too, without it (pv null) the elastic part only.
      */
     void addTriangleForces(double[] px, double[] pv, double[] f);
+
+    /**
+     * Whether the pass also adds the transverse shear elements' forces ({@link ShearElements}); when
+     * not, {@link ForceModel} adds them serially.
+     */
+    default boolean addsShearForces() {
+        return false;
+    }
 }

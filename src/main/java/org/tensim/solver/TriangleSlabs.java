@@ -22,8 +22,14 @@ public final class TriangleSlabs {
      * @param blocks number of slabs, >= 1
      */
     public static int[] blockOf(SystemState s, int blocks) {
-        Check.atLeast("triangle slabs", blocks, 1);
-        int[] slab = slabs(s, blocks);
+        return blockOf(s, nodeSlabs(s, blocks), blocks);
+    }
+
+    /**
+     * The block of every triangle for the node slabs {@code slab} of {@link #nodeSlabs}: the slab of
+     * its nodes when they share one, else {@code blocks} (the seam).
+     */
+    public static int[] blockOf(SystemState s, int[] slab, int blocks) {
         int[] block = new int[s.triangleCount()];
         for (int e = 0; e < block.length; e++) {
             int b = slab[s.triP[3 * e]];
@@ -37,8 +43,14 @@ public final class TriangleSlabs {
         return block;
     }
 
-    /** Slab of each node used by a triangle (x-quantiles of the rest positions), -1 for the others. */
-    private static int[] slabs(SystemState s, int blocks) {
+    /**
+     * The slab of each node used by a triangle, in {@code [0, blocks)} (x-quantiles of the rest
+     * positions: equal counts), -1 for the nodes no triangle uses.
+     *
+     * @param blocks number of slabs, >= 1
+     */
+    public static int[] nodeSlabs(SystemState s, int blocks) {
+        Check.atLeast("triangle slabs", blocks, 1);
         int[] slab = new int[s.nodeCount];
         Arrays.fill(slab, -1);
         boolean[] used = new boolean[s.nodeCount];

@@ -11,7 +11,7 @@ import org.tensim.scene.shell.ShellMaterial;
 
 /**
  * The shell's known answers on small meshes: the patch test (uniform stretch sigma / E) and the
- * clamped circular plate (Kirchhoff's w0 = p a^4 / (64 D)). Figures at the diaphragm's resolutions:
+ * clamped circular plate (Kirchhoff's w0 = p a^4 / (64 D), and Mindlin's with the shear term). Figures at the diaphragm's resolutions:
  * {@code ./tensim accuracy}, docs/diaphragm.md.
  */
 class ShellStaticsTest {
@@ -36,19 +36,25 @@ class ShellStaticsTest {
     }
 
     @Test
-    void clampedPlateApproachesKirchhoffAtSecondOrder() {
+    void clampedPlateConvergesToMindlinAndIsWithinOnePercentOfKirchhoffAtTwentyRings() {
+        double radius = ShellStudy.PLATE_RADIUS_M;
+        double mindlin = ShellStatics.mindlinPlate(MUSCLE, radius, 1);
         List<ShellStatics.Case> cases = new ArrayList<>();
         for (int rings : new int[] {10, 14, 20}) {
-            cases.add(ShellStatics.plate(MUSCLE, TissueModel.MATERIAL, rings, ShellStudy.PLATE_RADIUS_M, 1));
+            ShellStatics.Case c = ShellStatics.plate(MUSCLE, TissueModel.MATERIAL, rings, radius, 1);
+            cases.add(new ShellStatics.Case(c.elementSizeM(), c.nodes(), c.measured(), mindlin, 0, c.iterations()));
+            // The transverse shear elements: no coarse plate softer than the physical (Mindlin) one.
+            assertTrue(c.measured() < mindlin * 1.001, rings + " rings: w0 " + c.measured() + " against Mindlin "
+                    + mindlin);
         }
         for (int i = 1; i < cases.size(); i++) {
             assertTrue(cases.get(i).relativeError() < cases.get(i - 1).relativeError(), "error falls with h: "
                     + cases.get(i - 1).relativeError() + " then " + cases.get(i).relativeError());
         }
-        // The coarse plates are too soft by the diagonals' transverse shear, which falls as h^2.
         double order = ShellStatics.order(cases);
-        assertTrue(order > 1.5 && order < 2.6, "order " + order);
-        assertEquals(cases.get(2).exact(), cases.get(2).measured(), 0.2 * cases.get(2).exact(), "20 rings");
+        assertTrue(order > 2 && order < 4, "order " + order);
+        double kirchhoff = ShellStatics.plate(MUSCLE, TissueModel.MATERIAL, 20, radius, 1).exact();
+        assertEquals(kirchhoff, cases.get(2).measured(), 0.01 * kirchhoff, "20 rings against Kirchhoff");
         // The paper's two faces, each with half the membrane, plus its folding springs: far too stiff in bending.
         ShellStatics.Case paper = ShellStatics.plate(MUSCLE, TissueModel.PAPER, 6, 0.06, 1);
         assertTrue(paper.measured() < 0.4 * paper.exact(), "paper model: w0 = " + paper.measured()

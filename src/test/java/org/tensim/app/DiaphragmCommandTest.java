@@ -126,8 +126,11 @@ class DiaphragmCommandTest {
                 "--vtk-per-cycle", "0", "--action-line", "500,500,10", "--threads", "1");
         assertEquals("0", r[0], r[2]);
         Map<String, Object> sb = Json.readMap(b.resolve("summary.json"));
-        assertTrue(((Number) sb.get("dome_excursion_mm")).doubleValue() < 0.3
-                * ((Number) sa.get("dome_excursion_mm")).doubleValue(), sb + " vs " + sa);
+        // The apex at end-inspiration (its travel over the run also counts the ribs' transient lift:
+        // 4.6-7.8 mm without the muscle against 13.6-16.1 mm with it, measured 2026-11-23 17:10 UTC;
+        // end-inspiration descent 0.8-1.0 mm against 12.2-12.7 mm).
+        assertTrue(Math.abs(((Number) sb.get("apex_descent_mm")).doubleValue()) < 0.3
+                * ((Number) sa.get("apex_descent_mm")).doubleValue(), sb + " vs " + sa);
         r = run("diaphragm", "--tendon-normal", "0,0,0");
         assertTrue(r[2].contains("--tendon-normal must not be the zero vector"), r[2]);
         r = run("diaphragm", "--action-line", "1,2");

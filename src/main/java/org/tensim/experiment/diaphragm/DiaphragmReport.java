@@ -226,6 +226,7 @@ public final class DiaphragmReport {
         summary.put("anchor_nodes", scene.anchorNodes());
         summary.put("springs", scene.topology().springs().size());
         summary.put("membrane_triangles", scene.topology().triangles().size());
+        summary.put("shear_elements", scene.topology().shears().size());
         summary.put("rigid_links", scene.topology().rigidLinks().size());
         summary.put("attached_nodes", scene.attachedNodes());
         summary.put("attached_to_ribs", scene.attachedToRibs());

@@ -139,7 +139,7 @@ public final class DiaphragmScene {
 
     /**
      * Gives the state of a running simulation the spring stiffnesses, spring damping, membrane
-     * triangles' constants and viscous damping of topology {@code to}: that of a scene rebuilt from the running one with other
+     * triangles' and shear elements' constants and viscous damping of topology {@code to}: that of a scene rebuilt from the running one with other
      * constants ({@link #rebuiltWith}), or a copy of it made the same way as the running topology
      * (e.g. with the rigid links as springs). Positions, velocities and time are kept.
      *
@@ -166,6 +166,13 @@ public final class DiaphragmScene {
         }
         for (int i = 0; i < to.triangles().size(); i++) {
             state.setTriangleConstants(i, to.triangles().get(i));
+        }
+        if (to.shears().size() != state.shears.count()) {
+            throw new IllegalArgumentException("the rebuilt scene has " + to.shears().size() + " shear elements, the"
+                    + " running simulation " + state.shears.count() + ": only constants may change");
+        }
+        for (int i = 0; i < to.shears().size(); i++) {
+            state.setShearConstants(i, to.shears().get(i));
         }
         state.setViscousDamping(to.viscousDamping());
     }

@@ -13,9 +13,9 @@ import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.scene.shell.TriangleMembrane;
 
 /**
- * The springs and membrane triangles of a two-surface shell ({@link TwoSurfaces}) for a
- * {@link TissueModel}: the faces' membrane, the mid-surface's (material model), and the columns and
- * diagonals across the thickness. Used by the diaphragm and by the flat shells of the accuracy
+ * The springs, membrane triangles and transverse shear elements of a two-surface shell
+ * ({@link TwoSurfaces}) for a {@link TissueModel}: the faces' membrane, the mid-surface's and the
+ * transverse shear (material model), and the columns and diagonals across the thickness. Used by the diaphragm and by the flat shells of the accuracy
  * scenes, so both are built by the same rules.
  */
 public final class ShellNetwork {
@@ -31,7 +31,17 @@ public final class ShellNetwork {
          * and Poisson's ratio {@code poisson}.
          */
         void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson);
+
+        /**
+         * A transverse shear element ({@link org.tensim.model.TransverseShear}) on the upper triangle
+         * {@code upper} whose corners' columns end at {@code lower}, of shear modulus {@code kappaGPa}
+         * (Pa, kappa G) and thickness {@code thicknessM} (m).
+         */
+        void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM);
     }
+
+    /** Mindlin-Reissner's shear correction factor for a homogeneous plate (Reissner 1945; Mindlin 1951). */
+    public static final double SHEAR_CORRECTION = 5.0 / 6;
 
     /** Young's modulus of the tissue along an edge (i, j), Pa. */
     @FunctionalInterface
@@ -89,6 +99,31 @@ public final class ShellNetwork {
                     neighbours.get(j).add(i);
                 }
                 sum[0] += face ? a : 0;
+            }
+        }
+    }
+
+    /**
+     * The material model's transverse shear: one element ({@link org.tensim.model.TransverseShear}) per
+     * upper triangle whose three corners carry columns ({@code linkPairs}) to their partners, of shear
+     * modulus {@code kappa G = 5/6 E / (2 (1 + nu))} (E the mean of the triangle's edges', nu the tissue's).
+     */
+    private void shear(Sink sink, Set<Long> linkPairs) {
+        double nu = material.poisson();
+        for (int tr = 0; tr < mesh.triangleCount(); tr++) {
+            int[] c = {mesh.corner(tr, 0), mesh.corner(tr, 1), mesh.corner(tr, 2)};
+            if (!onOneFace(tr) || !s.isUpper(c[0])) {
+                continue;
+            }
+            int[] q = new int[3];
+            boolean columns = true;
+            for (int k = 0; k < 3 && columns; k++) {
+                q[k] = s.partner(c[k]);
+                columns = q[k] >= 0 && linkPairs.contains(key(c[k], q[k]));
+            }
+            if (columns) {
+                double e = (young.youngPa(c[0], c[1]) + young.youngPa(c[1], c[2]) + young.youngPa(c[2], c[0])) / 3;
+                sink.shear(c, q, SHEAR_CORRECTION * e / (2 * (1 + nu)), thickness);
             }
         }
     }
@@ -185,6 +220,9 @@ public final class ShellNetwork {
             PaperShellSprings.thickness(s, area, columnYoungPa, neighbours, springs, linkPairs, linked);
             return;
         }
+        if (model == TissueModel.MATERIAL) {
+            shear(springs, linkPairs);
+        }
         SandwichShell sandwich = model == TissueModel.MATERIAL
                 ? SandwichShell.ofElements(material, thickness, shearShare) : SandwichShell.of(material, thickness);
         int nv = mesh.vertexCount();
@@ -196,7 +234,7 @@ public final class ShellNetwork {
             for (int j : neighbours.get(u)) {
                 int l = s.partner(j);
                 double a = edgeArea.get(key(u, j))[0];
-                if (!s.isUpper(j) || l < 0 || a == 0 || linkPairs.contains(key(u, l))) {
+                if (!s.isUpper(j) || l < 0 || a == 0 || linkPairs.contains(key(u, l)) || sandwich.diagonalShare() == 0) {
                     continue;
                 }
                 double e = TwoSurfaces.distance(mesh, u, j);
@@ -258,6 +296,11 @@ public final class ShellNetwork {
             @Override
             public void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
                 t.addTriangle(p, q, thicknessM, youngPa, poisson, 0);
+            }
+
+            @Override
+            public void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
+                t.addShear(upper, lower, kappaGPa, thicknessM);
             }
         };
         ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);

@@ -5,7 +5,6 @@ import java.util.HashSet;
 import java.util.Set;
 import org.tensim.model.Topology;
 import org.tensim.solver.SystemState;
-import org.tensim.solver.TriangleTangent;
 import org.tensim.solver.stability.CriticalTimeStep;
 import org.tensim.solver.stability.ExtraStiffness;
 
@@ -25,6 +24,17 @@ final class SpringList implements ShellNetwork.Sink {
 
     /** A membrane triangle waiting for its damping. */
     private record Triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
+    }
+
+    /** A transverse shear element (undamped: its frequency is far below the shell's highest). */
+    private record Shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
+    }
+
+    private final java.util.List<Shear> shears = new java.util.ArrayList<>();
+
+    @Override
+    public void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
+        shears.add(new Shear(upper.clone(), lower.clone(), kappaGPa, thicknessM));
     }
 
     @Override
@@ -94,33 +104,36 @@ final class SpringList implements ShellNetwork.Sink {
                 triangleStiffness(t));
     }
 
-    /** The triangles' stiffness at rest, on a copy of t's nodes (their own topology, compiled). */
+    /** The triangles' and shear elements' stiffness at rest, on a copy of t's nodes (their own topology, compiled). */
     private ExtraStiffness triangleStiffness(Topology t) {
-        if (triangles.isEmpty()) {
+        if (triangles.isEmpty() && shears.isEmpty()) {
             return ExtraStiffness.NONE;
         }
         Topology copy = new Topology();
         for (var node : t.nodes()) {
             copy.addNode(node.position(), node.mass());
         }
-        addTriangles(copy, 0);
-        return new TriangleTangent(SystemState.compile(copy));
+        addElements(copy, 0);
+        return SystemState.compile(copy).elementStiffness();
     }
 
-    private void addTriangles(Topology t, double betaS) {
+    private void addElements(Topology t, double betaS) {
         for (Triangle tr : triangles) {
             t.addTriangle(tr.p, tr.q, tr.thicknessM, tr.youngPa, tr.poisson, betaS);
+        }
+        for (Shear sh : shears) {
+            t.addShear(sh.upper, sh.lower, sh.kappaGPa, sh.thicknessM, betaS);
         }
     }
 
     /**
      * Adds every spring to t, rest length = current distance, axial damping beta * k (N s/m), and
-     * every triangle with the Kelvin-Voigt damping time beta (s).
+     * every triangle and shear element with the Kelvin-Voigt damping time beta (s).
      */
     void addTo(Topology t, double betaS) {
         for (int s = 0; s < n; s++) {
             t.addSpring(t.node(a[s]), t.node(b[s]), k[s], betaS * k[s]);
         }
-        addTriangles(t, betaS);
+        addElements(t, betaS);
     }
 }

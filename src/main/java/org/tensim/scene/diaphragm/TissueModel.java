@@ -16,11 +16,12 @@ public enum TissueModel {
      * Identified element by element from E, nu and t ({@link org.tensim.scene.shell.SandwichShell#ofElements}):
      * the membrane as St Venant-Kirchhoff triangles ({@link org.tensim.model.TriangleElement}), exact
      * for a uniform strain on any mesh and any nu. Each face carries the share {@code c = t^2 / (6 s^2)}
-     * that gives Kirchhoff's bending rigidity; the rest of the membrane, but for a few percent, is a
+     * that gives Kirchhoff's bending rigidity; the rest of the membrane is a
      * triangle on the mid-surface (the midpoints of each upper node and its partner), which bending
-     * does not stretch; the remaining few percent are the prisms' diagonal springs, which resist the
-     * faces sliding over each other (transverse shear). Every column across the thickness is a rigid
-     * link (Kirchhoff-Love); no folding springs. The default.
+     * does not stretch. The faces' sliding over each other (transverse shear) is resisted by a
+     * transverse shear element per upper triangle ({@link org.tensim.model.TransverseShear},
+     * Mindlin-Reissner's {@code kappa G t}, kappa = 5/6). Every column across the thickness is a rigid
+     * link (Kirchhoff-Love); no folding springs, no diagonals. The default.
      */
     MATERIAL,
     /**

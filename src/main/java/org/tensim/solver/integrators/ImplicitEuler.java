@@ -27,7 +27,8 @@ import org.tensim.solver.stability.LinearStability;
  * transverse term of a compressed spring (l &lt; L) is negative and is clamped to
  * zero, which keeps the matrix symmetric positive definite so that CG applies.
  * Membrane triangles add their tangent stiffness with the compressive stress dropped
- * ({@link TriangleTangent}), positive semi-definite likewise.
+ * ({@link TriangleTangent}), positive semi-definite likewise, and transverse shear elements
+ * {@code k grad g grad g^T} ({@link org.tensim.solver.ShearElements}).
  * Axial damping c adds {@code c u u^T} to C, viscous damping c_v adds c_v I. An
  * approximate Jacobian leaves the order at 1 (a linearly implicit Euler step is
  * first order with any Jacobian); only the stability depends on it.
@@ -70,9 +71,7 @@ public final class ImplicitEuler implements Integrator {
     private double[] invDiag; // per degree of freedom: 1 / A_kk on free nodes, 0 elsewhere
     private double[] free; // per degree of freedom: 1 on free nodes, 0 on fixed and driven ones
     private double[] massTerm; // per degree of freedom: (m + h c_v) on free nodes, 0 elsewhere
-    private double[] dir; // per spring: direction u_x, u_y, u_z
-    private double[] blockA; // per spring: alpha, beta of its block of A (see linearise)
-    private double[] blockS; // per spring: the same for the stiffness S alone: k (1 - g), k g
+    private SpringBlocks springs;
     private final double[] scratch = new double[6];
     private TriangleTangent triangles; // null without membrane triangles
     private SystemState s;
@@ -248,17 +247,11 @@ public final class ImplicitEuler implements Integrator {
     }
 
     /**
-     * Per spring, the direction u and the two coefficients of its block of A,
-     * {@code h^2 S_s + h C_s = alpha u u^T + beta I} with {@code alpha = h^2 k (1 - g) + h c}
-     * and {@code beta = h^2 k g}, g the clamped transverse factor; the lumped mass
-     * terms per degree of freedom; and the inverse of A's diagonal (Jacobi).
+     * The springs' blocks ({@link SpringBlocks}), the triangles' and shear elements' tangents (positive
+     * semi-definite parts), the lumped mass terms per degree of freedom, and the inverse of A's
+     * diagonal (Jacobi).
      */
     private void linearise(double[] px) {
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] kk = s.springK;
-        final double[] cc = s.springC;
-        final double[] rl = s.springL;
         final double[] m = s.mass;
         final double[] im = s.invMass;
         final double hv = h * s.viscousDamping();
@@ -272,53 +265,26 @@ public final class ImplicitEuler implements Integrator {
                 dg[k] = m[i] + hv;
             }
         }
-        for (int i = 0; i < sa.length; i++) {
-            final int a = 3 * sa[i];
-            final int b = 3 * sb[i];
-            final double dx = px[b] - px[a];
-            final double dy = px[b + 1] - px[a + 1];
-            final double dz = px[b + 2] - px[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            final double inv = len > 0 ? 1 / len : 0;
-            final double g = len > 0 ? Math.max(0, 1 - rl[i] / len) : 0;
-            final double ux = dx * inv;
-            final double uy = dy * inv;
-            final double uz = dz * inv;
-            final double alpha = h2 * kk[i] * (1 - g) + h * cc[i];
-            final double beta = h2 * kk[i] * g;
-            dir[3 * i] = ux;
-            dir[3 * i + 1] = uy;
-            dir[3 * i + 2] = uz;
-            blockA[2 * i] = alpha;
-            blockA[2 * i + 1] = beta;
-            blockS[2 * i] = kk[i] * (1 - g);
-            blockS[2 * i + 1] = kk[i] * g;
-            final double ddx = alpha * ux * ux + beta;
-            final double ddy = alpha * uy * uy + beta;
-            final double ddz = alpha * uz * uz + beta;
-            dg[a] += ddx;
-            dg[a + 1] += ddy;
-            dg[a + 2] += ddz;
-            dg[b] += ddx;
-            dg[b + 1] += ddy;
-            dg[b + 2] += ddz;
-        }
+        springs.linearise(s, px, h, dg);
         if (triangles != null) {
             triangles.linearise(px, true);
             triangles.addDiagonal(dg, h2, h);
         }
+        s.shears.linearise(px, false);
+        s.shears.addDiagonal(dg, h2, h);
         for (int k = 0; k < dg.length; k++) {
             dg[k] = free[k] / dg[k];
         }
     }
 
-    /** out = S p (stiffness only, k (u u^T (1 - g) + g I) per spring), for every node. */
+    /** out = S p (stiffness only: springs, triangles, shear elements), for every node. */
     private void applyStiffness(double[] pv, double[] out) {
         java.util.Arrays.fill(out, 0);
-        addBlocks(blockS, pv, out);
+        springs.addStiffness(s, pv, out);
         if (triangles != null) {
             triangles.multiplyAdd(pv, out, null);
         }
+        s.shears.multiplyAdd(pv, out, null, 1);
     }
 
     /** out = (M + h C + h^2 S) p on free nodes, 0 on the others. */
@@ -330,43 +296,13 @@ public final class ImplicitEuler implements Integrator {
         for (int k = 0; k < n3; k++) {
             out[k] = mt[k] * pv[k];
         }
-        addBlocks(blockA, pv, out);
+        springs.addStep(s, pv, out);
         if (triangles != null) {
             triangles.multiplyAdd(pv, out, null, h * h, h);
         }
+        s.shears.multiplyAdd(pv, out, null, h * h, h);
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];
-        }
-    }
-
-    /**
-     * out += sum over springs of the block {@code alpha u u^T + beta I} (coefficients
-     * {@code coef[2i]}, {@code coef[2i + 1]}) times (p_b - p_a), added at b and subtracted at a.
-     */
-    private void addBlocks(double[] coef, double[] pv, double[] out) {
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] u = dir;
-        for (int i = 0; i < sa.length; i++) {
-            final int a = 3 * sa[i];
-            final int b = 3 * sb[i];
-            final double ux = u[3 * i];
-            final double uy = u[3 * i + 1];
-            final double uz = u[3 * i + 2];
-            final double beta = coef[2 * i + 1];
-            final double rx = pv[b] - pv[a];
-            final double ry = pv[b + 1] - pv[a + 1];
-            final double rz = pv[b + 2] - pv[a + 2];
-            final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
-            final double ax = ur * ux + beta * rx;
-            final double ay = ur * uy + beta * ry;
-            final double az = ur * uz + beta * rz;
-            out[a] -= ax;
-            out[a + 1] -= ay;
-            out[a + 2] -= az;
-            out[b] += ax;
-            out[b + 1] += ay;
-            out[b + 2] += az;
         }
     }
 
@@ -381,7 +317,7 @@ public final class ImplicitEuler implements Integrator {
     private void allocate(SystemState st) {
         int n3 = 3 * st.nodeCount;
         int ns = st.springCount();
-        if (f == null || f.length != n3 || dir.length != 3 * ns) {
+        if (f == null || f.length != n3 || springs.springs() != ns) {
             f = new double[n3];
             xs = new double[n3];
             vs = new double[n3];
@@ -393,9 +329,7 @@ public final class ImplicitEuler implements Integrator {
             invDiag = new double[n3];
             free = new double[n3];
             massTerm = new double[n3];
-            dir = new double[3 * ns];
-            blockA = new double[2 * ns];
-            blockS = new double[2 * ns];
+            springs = new SpringBlocks(ns);
         }
         if (st.triangleCount() == 0) {
             triangles = null;

@@ -2,16 +2,19 @@ package org.tensim.solver.parallel;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.tensim.solver.ShearElements;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleForcePass;
 import org.tensim.solver.TriangleKernels;
 import org.tensim.solver.TriangleSlabs;
 
 /**
- * The membrane triangles' forces ({@link TriangleKernels}) on a {@link WorkerPool}, without locks:
- * the triangles are cut into {@link #BLOCKS} slabs with disjoint node sets ({@link TriangleSlabs}),
- * the slabs are shared among the workers, and the triangles that straddle two slabs (a thin seam,
- * a few percent) are then added by the calling thread. The partition does not depend on the
+ * The membrane triangles' forces ({@link TriangleKernels}) and the transverse shear elements'
+ * ({@link ShearElements}) on a {@link WorkerPool}, without locks: the nodes the triangles use are
+ * cut into {@link #BLOCKS} slabs with disjoint node sets ({@link TriangleSlabs}); a triangle, or a
+ * shear element, whose nodes all lie in one slab belongs to it, the slabs are shared among the
+ * workers, and the elements that straddle two slabs (a thin seam, a few percent) are then added by
+ * the calling thread. The partition does not depend on the
  * thread count, so every node sums its triangles in the same order with one thread or several:
  * the same bits (tested).
  *
@@ -34,9 +37,11 @@ public final class ParallelTrianglePass implements TriangleForcePass {
     private double[] f;
     private final WorkerPool.Task task;
 
-    /** One slab's triangles, as compact copies of the state's arrays. */
+    /** One slab's triangles and shear elements, as compact copies of the state's arrays. */
     private static final class Block {
         final int[] source;
+        final int[] shearSource;
+        final ShearElements shears;
         final int[] p3;
         final int[] q3;
         final double[] rest;
@@ -44,7 +49,9 @@ public final class ParallelTrianglePass implements TriangleForcePass {
         final double[] lambda;
         final double[] damping;
 
-        Block(SystemState s, List<Integer> elements) {
+        Block(SystemState s, List<Integer> elements, List<Integer> shearElements) {
+            shearSource = shearElements.stream().mapToInt(Integer::intValue).toArray();
+            shears = s.shears.subset(shearSource);
             int n = elements.size();
             source = new int[n];
             p3 = new int[3 * n];
@@ -68,17 +75,20 @@ public final class ParallelTrianglePass implements TriangleForcePass {
                 lambda[i] = s.triLambda[source[i]];
                 damping[i] = s.triDamping[source[i]];
             }
+            shears.copyStiffness(s.shears, shearSource);
         }
 
         void add(double[] x, double[] v, double[] f) {
             TriangleKernels.forces(p3, q3, rest, mu, lambda, damping, source.length, x, v, f);
+            shears.forces(x, v, f);
         }
     }
 
     public ParallelTrianglePass(SystemState state, WorkerPool pool) {
         this.s = state;
         this.pool = pool;
-        int[] blockOf = TriangleSlabs.blockOf(state, BLOCKS);
+        int[] slab = TriangleSlabs.nodeSlabs(state, BLOCKS);
+        int[] blockOf = TriangleSlabs.blockOf(state, slab, BLOCKS);
         List<List<Integer>> lists = new ArrayList<>();
         for (int b = 0; b <= BLOCKS; b++) {
             lists.add(new ArrayList<>());
@@ -86,11 +96,24 @@ public final class ParallelTrianglePass implements TriangleForcePass {
         for (int e = 0; e < state.triangleCount(); e++) {
             lists.get(blockOf[e]).add(e);
         }
+        List<List<Integer>> shearLists = new ArrayList<>();
+        for (int b = 0; b <= BLOCKS; b++) {
+            shearLists.add(new ArrayList<>());
+        }
+        for (int e = 0; e < state.shears.count(); e++) {
+            int b = slab[state.shears.node(e, 0)];
+            for (int a = 0; a < 6; a++) {
+                if (b < 0 || slab[state.shears.node(e, a)] != b) {
+                    b = BLOCKS; // the seam (or a node outside the triangles' slabs)
+                }
+            }
+            shearLists.get(b).add(e);
+        }
         blocks = new Block[BLOCKS];
         for (int b = 0; b < BLOCKS; b++) {
-            blocks[b] = new Block(state, lists.get(b));
+            blocks[b] = new Block(state, lists.get(b), shearLists.get(b));
         }
-        seam = new Block(state, lists.get(BLOCKS));
+        seam = new Block(state, lists.get(BLOCKS), shearLists.get(BLOCKS));
         final int workers = pool.size();
         task = w -> {
             for (int b = w; b < BLOCKS; b += workers) {
@@ -102,6 +125,12 @@ public final class ParallelTrianglePass implements TriangleForcePass {
     /** Triangles on the seam (added by the calling thread after the slabs). */
     public int seamTriangles() {
         return seam.source.length;
+    }
+
+    /** The slabs also add the transverse shear elements (those on the seam serially, as the triangles). */
+    @Override
+    public boolean addsShearForces() {
+        return true;
     }
 
     @Override

@@ -22,7 +22,9 @@ import org.tensim.solver.SystemState;
  * applied as {@link PartitionedTriangleTangent}: its slabs on the force model's threads), which keeps
  * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
- * semi-definite), at the new step's time.
+ * semi-definite), at the new step's time. Transverse shear elements add {@code beta^2 k grad g grad g^T}
+ * ({@link org.tensim.solver.ShearElements}, their indefinite geometric term dropped), and {@code beta beta_e}
+ * times the same for their Kelvin-Voigt damping.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -76,6 +78,7 @@ final class SpringJacobian {
             triangles.linearise(px, loops);
         }
         s.fibres.linearise(t, px);
+        s.shears.linearise(px, false);
         positions = px;
         weight = beta;
         try {
@@ -157,5 +160,6 @@ final class SpringJacobian {
             triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
         }
         s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
+        s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
     }
 }

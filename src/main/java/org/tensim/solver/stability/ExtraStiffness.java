@@ -17,6 +17,29 @@ public interface ExtraStiffness {
         }
     };
 
+    /** The sum of two stiffnesses (either may be {@link #NONE}). */
+    static ExtraStiffness sum(ExtraStiffness a, ExtraStiffness b) {
+        if (a == NONE) {
+            return b;
+        }
+        if (b == NONE) {
+            return a;
+        }
+        return new ExtraStiffness() {
+            @Override
+            public void multiplyAdd(double[] z, double[] y) {
+                a.multiplyAdd(z, y);
+                b.multiplyAdd(z, y);
+            }
+
+            @Override
+            public void addGershgorinRows(double[] mass, boolean[] free, CriticalTimeStep.Form form, double[] row) {
+                a.addGershgorinRows(mass, free, form, row);
+                b.addGershgorinRows(mass, free, form, row);
+            }
+        };
+    }
+
     /** y += K z (N/m times m), full layout. */
     void multiplyAdd(double[] z, double[] y);
 

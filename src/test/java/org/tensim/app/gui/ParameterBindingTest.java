@@ -227,6 +227,8 @@ class ParameterBindingTest {
         assertEquals(12000, s.scene().controls().muscleAmplitudePa());
         var state = s.bodies().get(0).simulation().state();
         double[] k0 = state.springK.clone();
+        double[] mu0 = state.triMu.clone();
+        double shear0 = state.shears.count() == 0 ? 0 : state.shears.stiffness(0, 0, 0);
         double e0 = t.get(org.tensim.scene.tunable.DiaphragmViewScene.TISSUE_STIFFNESS);
         t.set(org.tensim.scene.tunable.DiaphragmViewScene.TISSUE_STIFFNESS, 4 * e0);
         int n = s.scene().diaphragmNodes();
@@ -253,7 +255,14 @@ class ParameterBindingTest {
         }
         assertEquals(direct.topology().viscousDamping(), state.viscousDamping(), 0.0);
         assertEquals(direct.recommendedTimeStep(), s.defaultTimeStep(), 0.0, "the rebuilt scene's step");
-        assertTrue(tissue > 0 && tissue < k0.length, "tissue and non-tissue springs both exist");
+        assertTrue(tissue < k0.length, "springs outside the tissue exist (supports, attachment)");
+        // The tissue's membrane triangles and transverse shear elements (the material model has no tissue
+        // springs but a few columns) take E x4 too.
+        assertTrue(mu0.length > 0 && state.shears.count() > 0, "membrane triangles and shear elements exist");
+        for (int i = 0; i < mu0.length; i++) {
+            assertEquals(4 * mu0[i], state.triMu[i], 1e-9 * mu0[i], "triangle " + i);
+        }
+        assertEquals(4 * shear0, state.shears.stiffness(0, 0, 0), 1e-9 * shear0, "shear element 0");
         assertTrue(s.bodies().get(0).simulation().state().linkCount() > 0, "tensegrity tendon");
         assertEquals(0, f.create(false).bodies().get(0).simulation().state().linkCount(), "mass-spring tendon");
     }

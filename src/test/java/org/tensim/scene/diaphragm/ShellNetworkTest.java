@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
+import org.tensim.analysis.FlatMeshes;
+import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.solver.ForceModel;
@@ -18,8 +20,9 @@ class ShellNetworkTest {
     void energyIsInvariantUnderRigidMotionsAndForcesBalance(TissueModel model) {
         TwoSurfaces s = TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(5)));
         Topology t = ShellNetwork.standalone(s, new ShellMaterial(40e3, 0.45, s.thicknessM(), 1060), model, 1);
-        assertTrue(t.springs().size() + t.triangles().size() > 3 * s.mesh().vertexCount(), "a connected network: "
-                + t.springs().size() + " springs, " + t.triangles().size() + " triangles");
+        assertTrue(t.springs().size() + t.triangles().size() + t.shears().size() > 3 * s.mesh().vertexCount(),
+                "a connected network: " + t.springs().size() + " springs, " + t.triangles().size() + " triangles, "
+                        + t.shears().size() + " shear elements");
         ForceModel fm = new ForceModel(SystemState.compile(t));
         double[] x = SystemState.compile(t).x.clone();
         Random rnd = new Random(7);
@@ -48,6 +51,7 @@ class ShellNetworkTest {
         double[] f = new double[x.length];
         fm.springs(y, f);
         fm.triangles(y, f);
+        fm.state().shears.forces(y, f);
         double[] sum = new double[3];
         double[] torque = new double[3];
         double scale = 0;
@@ -66,6 +70,41 @@ class ShellNetworkTest {
         for (int d = 0; d < 3; d++) {
             assertEquals(0, sum[d], 1e-12 * scale, "net force " + d);
             assertEquals(0, torque[d], 1e-11 * scale, "net torque " + d);
+        }
+    }
+
+    /**
+     * Sliding the upper face over the lower one by gamma t (the columns tilted by gamma) costs
+     * Mindlin-Reissner's {@code kappa G t gamma^2 / 2} per unit area, on any triangulation, in any
+     * direction: the shear elements are exact for a uniform shear strain (cotangent identity).
+     */
+    @ParameterizedTest
+    @EnumSource(FlatMeshes.Pattern.class)
+    void aUniformSlidingOfTheFacesCostsTheMindlinShearEnergy(FlatMeshes.Pattern pattern) {
+        ShellMaterial m = new ShellMaterial(40e3, 0.45, 0.0025, 1060);
+        for (boolean disc : new boolean[] {false, true}) {
+            TriangleMesh flat = disc ? FlatMeshes.disc(6, 0.05) : FlatMeshes.rectangle(pattern, 7, 0.1, 0.05, 3);
+            TwoSurfaces s = TwoSurfaces.offset(flat, m.thicknessM());
+            Topology t = ShellNetwork.standalone(s, m, TissueModel.MATERIAL, 1);
+            assertEquals(flat.triangleCount(), t.shears().size(), "one shear element per upper triangle");
+            SystemState st = SystemState.compile(t);
+            double area = 0;
+            for (int tr = 0; tr < flat.triangleCount(); tr++) {
+                area += flat.area(tr);
+            }
+            double gamma = 1e-3;
+            double kappaG = ShellNetwork.SHEAR_CORRECTION * m.youngPa() / (2 * (1 + m.poisson()));
+            double expected = 0.5 * kappaG * m.thicknessM() * gamma * gamma * area;
+            for (double angle : new double[] {0, 0.7, Math.PI / 2}) {
+                double[] x = st.x.clone();
+                for (int v = 0; v < flat.vertexCount(); v++) {
+                    x[3 * v] += gamma * m.thicknessM() * Math.cos(angle);
+                    x[3 * v + 1] += gamma * m.thicknessM() * Math.sin(angle);
+                }
+                double w = st.shears.energy(x);
+                assertEquals(expected, w, 1e-6 * expected, (disc ? "disc" : pattern) + ", sliding at " + angle
+                        + " rad: shear energy");
+            }
         }
     }
 }

@@ -1,0 +1,446 @@
+package org.tensim.solver;
+
+import java.util.List;
+import org.tensim.model.TransverseShear;
+import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.solver.stability.ExtraStiffness;
+
+/**
+ * The transverse shear elements of a {@link SystemState} ({@link TransverseShear}) on flat arrays
+ * allocated once: forces, energy and tangent stiffness. Element e has six nodes (upper corners 0..2,
+ * their partners 3..5), the 3 x 3 stiffness K (J/m^4) and the rest values g0 (m^2) of its three edges.
+ * Edge k runs from corner p = k to q = k + 1 (mod 3), with partners p', q'; with
+ * {@code e_k = x_q - x_p} and {@code S_k = x_p' + x_q' - x_p - x_q}:
+ *
+ * <pre>
+ *   g_k = e_k . S_k,   W = (g - g0)^T K (g - g0) / 2,   rho = K (g - g0),   f = -sum_k rho_k grad g_k,
+ *   grad g_k = (-S_k - e_k, S_k - e_k, e_k, e_k)   on p, q, p', q' (sums to zero),
+ *   tangent = sum_kl K_kl grad g_k grad g_l^T + sum_k rho_k H_k,
+ *   H_k z = (-(B z) - (A z), (B z) - (A z), A z, A z),   A z = z_q - z_p,   B z = z_p' + z_q' - z_p - z_q
+ * </pre>
+ *
+ * (g_k is bilinear, so H_k is constant). The first term of the tangent is positive semi-definite (K
+ * is); the second, indefinite, is kept only on request ({@link #linearise(double[], boolean)}), as the
+ * triangles drop their compressive stress.
+ *
+ * <p>Kelvin-Voigt damping ({@link TransverseShear#dampingS} beta_e, s) adds the rate of g to its
+ * excess: {@code f = -sum_k (K (g - g0 + beta_e dg/dt))_k grad g_k}, {@code dg_k/dt = grad g_k . v}, which
+ * dissipates {@code beta_e gdot^T K gdot >= 0} and whose Jacobian {@code -df/dv = beta_e sum_kl K_kl grad g_k
+ * grad g_l^T} is the tangent's first term times beta_e ({@link #multiplyAdd(double[], double[], int[],
+ * double, double)}).
+ */
+public final class ShearElements implements ExtraStiffness {
+    /** Per element: 6 node ids. */
+    private final int[] node;
+    /** Per element: K row-major (9), J/m^4. */
+    private final double[] k;
+    /** Per element: g0 of the 3 edges, m^2. */
+    private final double[] g0;
+    /** Per element: the Kelvin-Voigt damping time beta_e, s. */
+    private final double[] beta;
+    private boolean damped;
+    /** Tangent: per element, grad g_k on slot a along d at [54 e + 18 k + 3 a + d]. */
+    private final double[] grad;
+    /** Tangent: per element, rho (3; 0 when the geometric term is dropped). */
+    private final double[] rho;
+    private final double[] dg = new double[3];
+    private final double[] ev = new double[9];
+    private final double[] sv = new double[9];
+
+    ShearElements(List<TransverseShear> shears, double[] x0) {
+        int n = shears.size();
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        grad = new double[54 * n];
+        rho = new double[3 * n];
+        for (int e = 0; e < n; e++) {
+            TransverseShear ts = shears.get(e);
+            for (int a = 0; a < 6; a++) {
+                node[6 * e + a] = ts.node(a);
+            }
+            for (int c = 0; c < 3; c++) {
+                for (int l = 0; l < 3; l++) {
+                    k[9 * e + 3 * c + l] = ts.stiffness(c, l);
+                }
+            }
+            beta[e] = ts.dampingS();
+            damped |= beta[e] > 0;
+            // g0 by the kernel's own arithmetic on the compiled positions (ts.restG(c) up to round-off):
+            // the rest state is then free of force to the last bit.
+            edges(e, x0);
+            System.arraycopy(dg, 0, g0, 3 * e, 3);
+        }
+        linearise(x0, false);
+    }
+
+    private ShearElements(ShearElements other, double[] px) {
+        node = other.node;
+        k = other.k;
+        g0 = other.g0;
+        beta = other.beta;
+        damped = other.damped;
+        grad = new double[other.grad.length];
+        rho = new double[other.rho.length];
+        linearise(px, false);
+    }
+
+    /**
+     * The same elements with their own tangent, linearised at px without the geometric term (for a
+     * critical-step estimate or a statics solve, which must not disturb a solver's tangent).
+     */
+    public ShearElements tangentAt(double[] px) {
+        return new ShearElements(this, px);
+    }
+
+    /**
+     * The elements {@code elements} (indices into this set) as a set of their own, with their own
+     * arrays and scratch (for a thread of a parallel pass); {@link #copyStiffness} refreshes their K.
+     */
+    public ShearElements subset(int[] elements) {
+        return new ShearElements(this, elements);
+    }
+
+    private ShearElements(ShearElements other, int[] elements) {
+        int n = elements.length;
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        grad = new double[54 * n];
+        rho = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
+            System.arraycopy(other.g0, 3 * elements[i], g0, 3 * i, 3);
+        }
+        copyStiffness(other, elements);
+    }
+
+    /**
+     * Copies K and the damping time of {@code source}'s elements {@code elements} into this subset's (made by
+     * {@link #subset}).
+     */
+    public void copyStiffness(ShearElements source, int[] elements) {
+        damped = false;
+        for (int i = 0; i < elements.length; i++) {
+            System.arraycopy(source.k, 9 * elements[i], k, 9 * i, 9);
+            beta[i] = source.beta[elements[i]];
+            damped |= beta[i] > 0;
+        }
+    }
+
+    /** Node a (0..5: upper corners, then their partners) of element e. */
+    public int node(int e, int a) {
+        return node[6 * e + a];
+    }
+
+    /** Gives element e the stiffness K of {@code ts}, whose nodes must be e's. */
+    void setConstants(int e, TransverseShear ts) {
+        org.tensim.model.Check.index("shear element", e, count());
+        for (int a = 0; a < 6; a++) {
+            if (ts.node(a) != node[6 * e + a]) {
+                throw new IllegalArgumentException("shear element " + e + " has other nodes in the new constants: only"
+                        + " constants may change, not the topology");
+            }
+        }
+        for (int c = 0; c < 9; c++) {
+            k[9 * e + c] = ts.stiffness(c / 3, c % 3);
+        }
+        beta[e] = ts.dampingS();
+        damped = false;
+        for (double b : beta) {
+            damped |= b > 0;
+        }
+    }
+
+    /** The Kelvin-Voigt damping time beta_e of element e, s. */
+    public double dampingS(int e) {
+        return beta[e];
+    }
+
+    /** Whether any element is damped (beta_e &gt; 0). */
+    public boolean damped() {
+        return damped;
+    }
+
+    /** {@code K_kl} of element e (edges k, l in 0..2), J/m^4. */
+    public double stiffness(int e, int k, int l) {
+        return this.k[9 * e + 3 * k + l];
+    }
+
+    /** Number of elements. */
+    public int count() {
+        return g0.length / 3;
+    }
+
+    /** e_k and S_k of element e's three edges at x into ev, sv (3 per edge); g_k - g0_k into dg. */
+    private void edges(int e, double[] x) {
+        final int o = 6 * e;
+        for (int c = 0; c < 3; c++) {
+            final int p = 3 * node[o + c];
+            final int q = 3 * node[o + (c + 1) % 3];
+            final int p2 = 3 * node[o + 3 + c];
+            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
+            double g = 0;
+            for (int d = 0; d < 3; d++) {
+                final double ed = x[q + d] - x[p + d];
+                final double sd = x[p2 + d] + x[q2 + d] - x[p + d] - x[q + d];
+                ev[3 * c + d] = ed;
+                sv[3 * c + d] = sd;
+                g += ed * sd;
+            }
+            dg[c] = g - g0[3 * e + c];
+        }
+    }
+
+    /** Adds the elements' elastic forces (N) at positions x (m) to f. Allocation-free. */
+    public void forces(double[] x, double[] f) {
+        forces(x, null, f);
+    }
+
+    /**
+     * Adds the elements' forces (N) at positions x (m) and, when v (m/s) is not null, their Kelvin-Voigt
+     * damping forces, to f. Allocation-free.
+     */
+    public void forces(double[] x, double[] v, double[] f) {
+        final boolean withRate = v != null && damped;
+        for (int e = 0; e < count(); e++) {
+            edges(e, x);
+            final int o = 6 * e;
+            if (withRate && beta[e] > 0) {
+                addRate(e, v);
+            }
+            for (int c = 0; c < 3; c++) {
+                final int r = 9 * e + 3 * c;
+                final double m = -(k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
+                final int p = 3 * node[o + c];
+                final int q = 3 * node[o + (c + 1) % 3];
+                final int p2 = 3 * node[o + 3 + c];
+                final int q2 = 3 * node[o + 3 + (c + 1) % 3];
+                for (int d = 0; d < 3; d++) {
+                    final double ed = ev[3 * c + d];
+                    final double sd = sv[3 * c + d];
+                    f[p + d] -= m * (sd + ed);
+                    f[q + d] += m * (sd - ed);
+                    f[p2 + d] += m * ed;
+                    f[q2 + d] += m * ed;
+                }
+            }
+        }
+    }
+
+    /** dg[c] += beta_e (grad g_c . v) for element e, with e_c and S_c of the last {@link #edges} call. */
+    private void addRate(int e, double[] v) {
+        final int o = 6 * e;
+        for (int c = 0; c < 3; c++) {
+            final int p = 3 * node[o + c];
+            final int q = 3 * node[o + (c + 1) % 3];
+            final int p2 = 3 * node[o + 3 + c];
+            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
+            double rate = 0;
+            for (int d = 0; d < 3; d++) {
+                final double ed = ev[3 * c + d];
+                final double sd = sv[3 * c + d];
+                rate += (-sd - ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+            }
+            dg[c] += beta[e] * rate;
+        }
+    }
+
+    /** The elements' energy {@code sum (g - g0)^T K (g - g0) / 2} at positions x, J. */
+    public double energy(double[] x) {
+        double sum = 0;
+        for (int e = 0; e < count(); e++) {
+            edges(e, x);
+            for (int c = 0; c < 3; c++) {
+                final int r = 9 * e + 3 * c;
+                sum += 0.5 * dg[c] * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
+            }
+        }
+        return sum;
+    }
+
+    /**
+     * Linearises the tangent at positions px (m).
+     *
+     * @param geometric keep the indefinite term {@code sum rho_k H_k} (the exact Hessian); false keeps
+     *                  the tangent positive semi-definite for conjugate gradients
+     */
+    public void linearise(double[] px, boolean geometric) {
+        java.util.Arrays.fill(grad, 0);
+        for (int e = 0; e < count(); e++) {
+            edges(e, px);
+            for (int c = 0; c < 3; c++) {
+                final int r = 9 * e + 3 * c;
+                rho[3 * e + c] = geometric ? k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2] : 0;
+                final int base = 54 * e + 18 * c;
+                final int p = c;
+                final int q = (c + 1) % 3;
+                for (int d = 0; d < 3; d++) {
+                    final double ed = ev[3 * c + d];
+                    final double sd = sv[3 * c + d];
+                    grad[base + 3 * p + d] = -sd - ed;
+                    grad[base + 3 * q + d] = sd - ed;
+                    grad[base + 3 * (3 + p) + d] = ed;
+                    grad[base + 3 * (3 + q) + d] = ed;
+                }
+            }
+        }
+    }
+
+    /**
+     * {@code y += weight K z} with the tangent linearised by {@link #linearise}; {@code offset[i]} is the
+     * index of node i's x in z and y, or -1 for a node left out (its z taken as 0, its y not written);
+     * null for the full layout (3 x node id). Allocation-free.
+     */
+    public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
+        multiplyAdd(z, y, offset, weight, 0);
+    }
+
+    /**
+     * {@code y += (weight K + dampingWeight C) z}, C the damping's Jacobian {@code -df/dv} (the tangent's
+     * first term times beta_e per element); otherwise as {@link #multiplyAdd(double[], double[], int[], double)}.
+     */
+    public void multiplyAdd(double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
+        if (weight == 0 && (dampingWeight == 0 || !damped)) {
+            return;
+        }
+        for (int e = 0; e < count(); e++) {
+            final int o = 6 * e;
+            for (int c = 0; c < 3; c++) {
+                double sum = 0;
+                final int base = 54 * e + 18 * c;
+                for (int a = 0; a < 6; a++) {
+                    final int i = dof(node[o + a], offset);
+                    if (i >= 0) {
+                        sum += grad[base + 3 * a] * z[i] + grad[base + 3 * a + 1] * z[i + 1]
+                                + grad[base + 3 * a + 2] * z[i + 2];
+                    }
+                }
+                dg[c] = sum;
+            }
+            for (int c = 0; c < 3; c++) {
+                final int r = 9 * e + 3 * c;
+                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1]
+                        + k[r + 2] * dg[2]);
+                final int base = 54 * e + 18 * c;
+                for (int a = 0; a < 6; a++) {
+                    final int i = dof(node[o + a], offset);
+                    if (i >= 0) {
+                        y[i] += m * grad[base + 3 * a];
+                        y[i + 1] += m * grad[base + 3 * a + 1];
+                        y[i + 2] += m * grad[base + 3 * a + 2];
+                    }
+                }
+                final double wr = weight * rho[3 * e + c];
+                if (wr != 0) {
+                    addGeometric(e, c, wr, z, y, offset);
+                }
+            }
+        }
+    }
+
+    /** y += wr H_c z for edge c of element e. */
+    private void addGeometric(int e, int c, double wr, double[] z, double[] y, int[] offset) {
+        final int o = 6 * e;
+        final int p = dof(node[o + c], offset);
+        final int q = dof(node[o + (c + 1) % 3], offset);
+        final int p2 = dof(node[o + 3 + c], offset);
+        final int q2 = dof(node[o + 3 + (c + 1) % 3], offset);
+        for (int d = 0; d < 3; d++) {
+            final double az = at(z, q, d) - at(z, p, d);
+            final double bz = at(z, p2, d) + at(z, q2, d) - at(z, p, d) - at(z, q, d);
+            add(y, p, d, -wr * (bz + az));
+            add(y, q, d, wr * (bz - az));
+            add(y, p2, d, wr * az);
+            add(y, q2, d, wr * az);
+        }
+    }
+
+    /** diag += weight times the diagonal of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised (full layout). */
+    public void addDiagonal(double[] diag, double weight) {
+        addDiagonal(diag, weight, 0);
+    }
+
+    /** diag += the diagonal of {@code weight K + dampingWeight C} as linearised, without the geometric term (full layout). */
+    public void addDiagonal(double[] diag, double weight, double dampingWeight) {
+        for (int e = 0; e < count(); e++) {
+            final double w = weight + dampingWeight * beta[e];
+            for (int a = 0; a < 6; a++) {
+                for (int d = 0; d < 3; d++) {
+                    diag[3 * node[6 * e + a] + d] += w * blockEntry(e, a, d, a, d);
+                }
+            }
+        }
+    }
+
+    /** Entry (slot a, axis d; slot b, axis f) of element e's {@code sum_kl K_kl grad g_k grad g_l^T}. */
+    private double blockEntry(int e, int a, int d, int b, int f) {
+        double sum = 0;
+        for (int c = 0; c < 3; c++) {
+            final double gc = grad[54 * e + 18 * c + 3 * a + d];
+            if (gc == 0) {
+                continue;
+            }
+            for (int l = 0; l < 3; l++) {
+                sum += k[9 * e + 3 * c + l] * gc * grad[54 * e + 18 * l + 3 * b + f];
+            }
+        }
+        return sum;
+    }
+
+    private static int dof(int n, int[] offset) {
+        return offset == null ? 3 * n : offset[n];
+    }
+
+    private static double at(double[] z, int o, int d) {
+        return o < 0 ? 0 : z[o + d];
+    }
+
+    private static void add(double[] y, int o, int d, double v) {
+        if (o >= 0) {
+            y[o + d] += v;
+        }
+    }
+
+    @Override
+    public void multiplyAdd(double[] z, double[] y) {
+        multiplyAdd(z, y, null, 1);
+    }
+
+    /**
+     * Gershgorin rows of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised: the Frobenius norm of
+     * every 3 x 3 node block, added as {@link CriticalTimeStep#gershgorin} adds a spring's stiffness (as
+     * {@link TriangleTangent} does).
+     */
+    @Override
+    public void addGershgorinRows(double[] mass, boolean[] free, CriticalTimeStep.Form form, double[] row) {
+        for (int e = 0; e < count(); e++) {
+            for (int a = 0; a < 6; a++) {
+                final int na = node[6 * e + a];
+                if (!free[na]) {
+                    continue;
+                }
+                for (int b = 0; b < 6; b++) {
+                    final int nb = node[6 * e + b];
+                    double sq = 0;
+                    for (int d = 0; d < 3; d++) {
+                        for (int f = 0; f < 3; f++) {
+                            final double v = blockEntry(e, a, d, b, f);
+                            sq += v * v;
+                        }
+                    }
+                    final double norm = Math.sqrt(sq);
+                    if (form == CriticalTimeStep.Form.ROWS) {
+                        row[na] += 0.5 * norm;
+                    } else if (nb == na) {
+                        row[na] += norm / mass[na];
+                    } else if (free[nb]) {
+                        row[na] += norm / Math.sqrt(mass[na] * mass[nb]);
+                    }
+                }
+            }
+        }
+    }
+}
