@@ -9,7 +9,7 @@ import org.hipparchus.linear.RealVector;
 import org.hipparchus.util.IterationManager;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
-import org.tensim.solver.ShearElements;
+import org.tensim.solver.ShearStiffness;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleTangent;
 
@@ -19,7 +19,7 @@ import org.tensim.solver.TriangleTangent;
  * {@code K_ij = -k n n^T} for a spring of stiffness k along the unit vector n between its nodes
  * (no prestress: every spring at its rest length), and the membrane triangles' linear
  * constant-strain stiffness ({@link TriangleTangent} at rest) and the transverse shear elements'
- * {@code k grad g grad g^T} ({@link ShearElements} at rest). Fixed degrees of freedom have u = 0.
+ * {@code k grad g grad g^T} ({@link ShearStiffness} at rest). Fixed degrees of freedom have u = 0.
  * Rigid links (disjoint) are kept to first order, {@code n . (u_b - u_a) = 0}, by tying the
  * component of u_b along the link's direction n to u_a's: CG runs on {@code T^T K T} with
  * {@code u = T z}.
@@ -74,7 +74,7 @@ public final class LinearStatics {
         if (triangles != null) {
             triangles.addDiagonal(diag, 1, 0);
         }
-        ShearElements shears = compiled.shears.tangentAt(compiled.x0);
+        ShearStiffness shears = new ShearStiffness(compiled.shears, compiled.x0);
         shears.addDiagonal(diag, 1);
         for (int i = 0; i < n; i++) {
             if (fixed[i] || diag[i] == 0) {

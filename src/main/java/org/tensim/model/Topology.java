@@ -148,9 +148,9 @@ public final class Topology {
     }
 
     /**
-     * As {@link #addShear(int[], int[], double, double)}, with Kelvin-Voigt damping.
+     * As {@link #addShear(int[], int[], double, double)} with Kelvin-Voigt damping.
      *
-     * @param dampingS beta, s (&gt;= 0; see {@link TransverseShear#dampingS})
+     * @param dampingS stiffness-proportional damping time beta, s (&gt;= 0; 0 undamped)
      */
     public TransverseShear addShear(int[] upper, int[] lower, double kappaGPa, double thicknessM, double dampingS) {
         if (upper.length != 3 || lower.length != 3) {

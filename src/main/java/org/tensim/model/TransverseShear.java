@@ -28,6 +28,10 @@ package org.tensim.model;
  * {@code r^T C r = A |gamma|^2 >= 0}), positive on the one incompatible direction n, and Q = C on
  * an equilateral triangle (where it is the edge-by-edge {@code 2 A / 3}).
  *
+ * <p>Damping (optional) is Kelvin-Voigt, {@code rho = K (g - g0 + beta dg/dt)} in the forces, as the
+ * triangles' and the springs' stiffness-proportional damping: it dissipates
+ * {@code beta (dg/dt)^T K dg/dt >= 0} and does not resist rigid motions (dg/dt = 0 there).
+ *
  * <p>g is bilinear and invariant under rigid motions; under pure bending of a cylinder or sphere
  * with the columns on the normals, the mean of an edge's two end normals is perpendicular to its
  * chord, so {@code g = g0}: no shear locking.
@@ -43,8 +47,8 @@ public final class TransverseShear {
      * @param rest       the rest positions of those six nodes, m
      * @param kappaGPa   kappa G, the shear modulus with the shear correction factor, Pa (&gt; 0)
      * @param thicknessM t, m (&gt; 0)
-     * @param dampingS   beta, s (&gt;= 0): Kelvin-Voigt damping, the viscous shear stress's factor over the
-     *                   elastic one's on the rate of g ({@link #dampingS})
+     * @param dampingS   Kelvin-Voigt damping time beta, s (&gt;= 0): the viscous part {@code beta dg/dt} is added
+     *                   to {@code g - g0} in the forces, as the triangles' and springs' stiffness-proportional damping
      */
     TransverseShear(int[] nodes, Vec3[] rest, double kappaGPa, double thicknessM, double dampingS) {
         String name = "transverse shear " + nodes[0] + "-" + nodes[1] + "-" + nodes[2] + "/" + nodes[3] + "-"
@@ -104,18 +108,13 @@ public final class TransverseShear {
         return stiffness[3 * k + l];
     }
 
+    /** Kelvin-Voigt damping time beta, s (0: undamped). */
+    public double dampingS() {
+        return dampingS;
+    }
+
     /** g0 of edge k (0..2) at rest, m^2. */
     public double restG(int k) {
         return restG[k];
-    }
-
-    /**
-     * Stiffness-proportional (Kelvin-Voigt) damping time beta, s (0: undamped): the element adds the
-     * force {@code -beta sum_kl K_kl (grad g_l . v) grad g_k}, as a spring's axial damping {@code beta k}
-     * and a membrane triangle's do, so that every elastic element's modes get the same Rayleigh damping
-     * ratio {@code beta w / 2} that the time-step policy assumes.
-     */
-    public double dampingS() {
-        return dampingS;
     }
 }

@@ -106,7 +106,6 @@ public final class ForceModel {
             springs(px, f);
         }
         // The spring pass covers springs only: the triangles have their own (serial unless replaced).
-        // (The velocities also reach a parallel pass when only the shear elements it adds are damped.)
         final double[] tv = s.triangleDamping || s.shears.damped() ? pv : null;
         if (trianglePass != null) {
             trianglePass.addTriangleForces(px, tv, f);

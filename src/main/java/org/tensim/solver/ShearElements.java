@@ -2,8 +2,6 @@ package org.tensim.solver;
 
 import java.util.List;
 import org.tensim.model.TransverseShear;
-import org.tensim.solver.stability.CriticalTimeStep;
-import org.tensim.solver.stability.ExtraStiffness;
 
 /**
  * The transverse shear elements of a {@link SystemState} ({@link TransverseShear}) on flat arrays
@@ -19,24 +17,19 @@ import org.tensim.solver.stability.ExtraStiffness;
  *   H_k z = (-(B z) - (A z), (B z) - (A z), A z, A z),   A z = z_q - z_p,   B z = z_p' + z_q' - z_p - z_q
  * </pre>
  *
- * (g_k is bilinear, so H_k is constant). The first term of the tangent is positive semi-definite (K
+ * (g_k is bilinear, so H_k is constant). With Kelvin-Voigt damping beta (s) the forces use
+ * {@code rho = K (g - g0 + beta dg/dt)}. The first term of the tangent is positive semi-definite (K
  * is); the second, indefinite, is kept only on request ({@link #linearise(double[], boolean)}), as the
- * triangles drop their compressive stress.
- *
- * <p>Kelvin-Voigt damping ({@link TransverseShear#dampingS} beta_e, s) adds the rate of g to its
- * excess: {@code f = -sum_k (K (g - g0 + beta_e dg/dt))_k grad g_k}, {@code dg_k/dt = grad g_k . v}, which
- * dissipates {@code beta_e gdot^T K gdot >= 0} and whose Jacobian {@code -df/dv = beta_e sum_kl K_kl grad g_k
- * grad g_l^T} is the tangent's first term times beta_e ({@link #multiplyAdd(double[], double[], int[],
- * double, double)}).
+ * triangles drop their compressive stress. As a stiffness for the critical step: {@link ShearStiffness}.
  */
-public final class ShearElements implements ExtraStiffness {
+public final class ShearElements {
     /** Per element: 6 node ids. */
     private final int[] node;
     /** Per element: K row-major (9), J/m^4. */
     private final double[] k;
     /** Per element: g0 of the 3 edges, m^2. */
     private final double[] g0;
-    /** Per element: the Kelvin-Voigt damping time beta_e, s. */
+    /** Per element: Kelvin-Voigt damping time beta, s. */
     private final double[] beta;
     private boolean damped;
     /** Tangent: per element, grad g_k on slot a along d at [54 e + 18 k + 3 a + d]. */
@@ -57,6 +50,8 @@ public final class ShearElements implements ExtraStiffness {
         rho = new double[3 * n];
         for (int e = 0; e < n; e++) {
             TransverseShear ts = shears.get(e);
+            beta[e] = ts.dampingS();
+            damped |= beta[e] != 0;
             for (int a = 0; a < 6; a++) {
                 node[6 * e + a] = ts.node(a);
             }
@@ -65,8 +60,6 @@ public final class ShearElements implements ExtraStiffness {
                     k[9 * e + 3 * c + l] = ts.stiffness(c, l);
                 }
             }
-            beta[e] = ts.dampingS();
-            damped |= beta[e] > 0;
             // g0 by the kernel's own arithmetic on the compiled positions (ts.restG(c) up to round-off):
             // the rest state is then free of force to the last bit.
             edges(e, x0);
@@ -90,7 +83,7 @@ public final class ShearElements implements ExtraStiffness {
      * The same elements with their own tangent, linearised at px without the geometric term (for a
      * critical-step estimate or a statics solve, which must not disturb a solver's tangent).
      */
-    public ShearElements tangentAt(double[] px) {
+    ShearElements tangentAt(double[] px) {
         return new ShearElements(this, px);
     }
 
@@ -117,16 +110,12 @@ public final class ShearElements implements ExtraStiffness {
         copyStiffness(other, elements);
     }
 
-    /**
-     * Copies K and the damping time of {@code source}'s elements {@code elements} into this subset's (made by
-     * {@link #subset}).
-     */
+    /** Copies K and beta of {@code source}'s elements {@code elements} into this subset's (made by {@link #subset}). */
     public void copyStiffness(ShearElements source, int[] elements) {
-        damped = false;
         for (int i = 0; i < elements.length; i++) {
             System.arraycopy(source.k, 9 * elements[i], k, 9 * i, 9);
             beta[i] = source.beta[elements[i]];
-            damped |= beta[i] > 0;
+            damped |= beta[i] != 0;
         }
     }
 
@@ -148,10 +137,7 @@ public final class ShearElements implements ExtraStiffness {
             k[9 * e + c] = ts.stiffness(c / 3, c % 3);
         }
         beta[e] = ts.dampingS();
-        damped = false;
-        for (double b : beta) {
-            damped |= b > 0;
-        }
+        damped |= beta[e] != 0;
     }
 
     /** The Kelvin-Voigt damping time beta_e of element e, s. */
@@ -159,7 +145,7 @@ public final class ShearElements implements ExtraStiffness {
         return beta[e];
     }
 
-    /** Whether any element is damped (beta_e &gt; 0). */
+    /** Whether any element is damped (its forces then depend on the velocities). */
     public boolean damped() {
         return damped;
     }
@@ -200,17 +186,17 @@ public final class ShearElements implements ExtraStiffness {
     }
 
     /**
-     * Adds the elements' forces (N) at positions x (m) and, when v (m/s) is not null, their Kelvin-Voigt
-     * damping forces, to f. Allocation-free.
+     * Adds the elements' forces (N) at positions x (m) to f: elastic, and when {@code v} is not null the
+     * Kelvin-Voigt damping of the elements whose beta is not 0, at velocities v (m/s):
+     * {@code rho = K (g - g0 + beta dg/dt)}, {@code dg_k/dt = grad g_k . v}. Allocation-free.
      */
     public void forces(double[] x, double[] v, double[] f) {
-        final boolean withRate = v != null && damped;
         for (int e = 0; e < count(); e++) {
             edges(e, x);
-            final int o = 6 * e;
-            if (withRate && beta[e] > 0) {
+            if (v != null && beta[e] != 0) {
                 addRate(e, v);
             }
+            final int o = 6 * e;
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
                 final double m = -(k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
@@ -230,7 +216,7 @@ public final class ShearElements implements ExtraStiffness {
         }
     }
 
-    /** dg[c] += beta_e (grad g_c . v) for element e, with e_c and S_c of the last {@link #edges} call. */
+    /** dg += beta dg/dt for element e at velocities v (after {@link #edges}). */
     private void addRate(int e, double[] v) {
         final int o = 6 * e;
         for (int c = 0; c < 3; c++) {
@@ -242,7 +228,7 @@ public final class ShearElements implements ExtraStiffness {
             for (int d = 0; d < 3; d++) {
                 final double ed = ev[3 * c + d];
                 final double sd = sv[3 * c + d];
-                rate += (-sd - ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+                rate += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
             }
             dg[c] += beta[e] * rate;
         }
@@ -299,11 +285,12 @@ public final class ShearElements implements ExtraStiffness {
     }
 
     /**
-     * {@code y += (weight K + dampingWeight C) z}, C the damping's Jacobian {@code -df/dv} (the tangent's
-     * first term times beta_e per element); otherwise as {@link #multiplyAdd(double[], double[], int[], double)}.
+     * {@code y += (weight + dampingWeight beta_e) K_e z} summed over the elements: an implicit step's
+     * stiffness and damping terms, the damping matrix taken as beta_e times the tangent (without the
+     * geometric term); offsets as in {@link #multiplyAdd(double[], double[], int[], double)}.
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
-        if (weight == 0 && (dampingWeight == 0 || !damped)) {
+        if (weight == 0 && dampingWeight == 0) {
             return;
         }
         for (int e = 0; e < count(); e++) {
@@ -322,8 +309,7 @@ public final class ShearElements implements ExtraStiffness {
             }
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
-                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1]
-                        + k[r + 2] * dg[2]);
+                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
                 final int base = 54 * e + 18 * c;
                 for (int a = 0; a < 6; a++) {
                     final int i = dof(node[o + a], offset);
@@ -363,7 +349,7 @@ public final class ShearElements implements ExtraStiffness {
         addDiagonal(diag, weight, 0);
     }
 
-    /** diag += the diagonal of {@code weight K + dampingWeight C} as linearised, without the geometric term (full layout). */
+    /** diag += the diagonal of {@code (weight + dampingWeight beta_e) sum_kl K_kl grad g_k grad g_l^T} (full layout). */
     public void addDiagonal(double[] diag, double weight, double dampingWeight) {
         for (int e = 0; e < count(); e++) {
             final double w = weight + dampingWeight * beta[e];
@@ -376,7 +362,7 @@ public final class ShearElements implements ExtraStiffness {
     }
 
     /** Entry (slot a, axis d; slot b, axis f) of element e's {@code sum_kl K_kl grad g_k grad g_l^T}. */
-    private double blockEntry(int e, int a, int d, int b, int f) {
+    double blockEntry(int e, int a, int d, int b, int f) {
         double sum = 0;
         for (int c = 0; c < 3; c++) {
             final double gc = grad[54 * e + 18 * c + 3 * a + d];
@@ -401,46 +387,6 @@ public final class ShearElements implements ExtraStiffness {
     private static void add(double[] y, int o, int d, double v) {
         if (o >= 0) {
             y[o + d] += v;
-        }
-    }
-
-    @Override
-    public void multiplyAdd(double[] z, double[] y) {
-        multiplyAdd(z, y, null, 1);
-    }
-
-    /**
-     * Gershgorin rows of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised: the Frobenius norm of
-     * every 3 x 3 node block, added as {@link CriticalTimeStep#gershgorin} adds a spring's stiffness (as
-     * {@link TriangleTangent} does).
-     */
-    @Override
-    public void addGershgorinRows(double[] mass, boolean[] free, CriticalTimeStep.Form form, double[] row) {
-        for (int e = 0; e < count(); e++) {
-            for (int a = 0; a < 6; a++) {
-                final int na = node[6 * e + a];
-                if (!free[na]) {
-                    continue;
-                }
-                for (int b = 0; b < 6; b++) {
-                    final int nb = node[6 * e + b];
-                    double sq = 0;
-                    for (int d = 0; d < 3; d++) {
-                        for (int f = 0; f < 3; f++) {
-                            final double v = blockEntry(e, a, d, b, f);
-                            sq += v * v;
-                        }
-                    }
-                    final double norm = Math.sqrt(sq);
-                    if (form == CriticalTimeStep.Form.ROWS) {
-                        row[na] += 0.5 * norm;
-                    } else if (nb == na) {
-                        row[na] += norm / mass[na];
-                    } else if (free[nb]) {
-                        row[na] += norm / Math.sqrt(mass[na] * mass[nb]);
-                    }
-                }
-            }
         }
     }
 }

@@ -269,7 +269,7 @@ public final class SystemState {
 
     /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
     public boolean velocityDependentForces() {
-        return axialDamping || triangleDamping || viscousDamping != 0;
+        return axialDamping || triangleDamping || shears.damped() || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -358,7 +358,7 @@ public final class SystemState {
     /** The stiffness of the membrane triangles and shear elements linearised at the rest positions (new objects). */
     public ExtraStiffness elementStiffness() {
         ExtraStiffness tri = triangleCount() == 0 ? ExtraStiffness.NONE : new TriangleTangent(this);
-        return ExtraStiffness.sum(tri, shears.count() == 0 ? ExtraStiffness.NONE : shears.tangentAt(x0));
+        return ExtraStiffness.sum(tri, shears.count() == 0 ? ExtraStiffness.NONE : new ShearStiffness(shears, x0));
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

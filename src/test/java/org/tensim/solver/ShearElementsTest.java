@@ -331,4 +331,61 @@ class ShearElementsTest {
             assertEquals(fs[k], fp[k], 1e-12 * scale, "serial against parallel, component " + k);
         }
     }
+
+    /**
+     * Kelvin-Voigt damping: the viscous forces dissipate {@code beta (dg/dt)^T K dg/dt}, checked against the
+     * rate of the energy ({@code dW/dt = -f_elastic . v}, so {@code f_viscous . v = -beta d/dt(dW/dt)} along
+     * a straight path), and they vanish for a rigid rotation's velocity.
+     */
+    @Test
+    void dampingDissipatesAndIgnoresRigidMotions() {
+        Random rnd = new Random(17);
+        Topology t = randomElements(rnd);
+        Topology damped = new Topology();
+        for (var n : t.nodes()) {
+            damped.addNode(n.position(), 1);
+        }
+        double beta = 2e-3;
+        for (var sh : t.shears()) {
+            damped.addShear(new int[] {sh.node(0), sh.node(1), sh.node(2)}, new int[] {sh.node(3), sh.node(4), sh.node(5)},
+                    KAPPA_G, T, beta);
+        }
+        SystemState s = SystemState.compile(damped);
+        assertTrue(s.velocityDependentForces(), "damped shear elements make the forces depend on v");
+        double[] x = perturbed(s, rnd, 1e-3);
+        double[] v = new double[x.length];
+        for (int k = 0; k < v.length; k++) {
+            v[k] = rnd.nextGaussian();
+        }
+        double[] fe = new double[x.length];
+        double[] fd = new double[x.length];
+        s.shears.forces(x, fe);
+        s.shears.forces(x, v, fd);
+        double power = 0;
+        for (int k = 0; k < x.length; k++) {
+            power += (fd[k] - fe[k]) * v[k];
+        }
+        // -beta v^T K v with K the tangent's first (positive) term.
+        s.shears.linearise(x, false);
+        double[] kv = new double[x.length];
+        s.shears.multiplyAdd(v, kv, null, 1);
+        double vkv = 0;
+        for (int k = 0; k < x.length; k++) {
+            vkv += v[k] * kv[k];
+        }
+        assertTrue(vkv > 0);
+        assertEquals(-beta * vkv, power, 1e-9 * beta * vkv, "viscous power, W");
+        // A rigid rotation's velocity w x x (w = (0.3, -0.2, 0.5) rad/s) adds no force.
+        double[] w = {0.3, -0.2, 0.5};
+        for (int i = 0; i < x.length / 3; i++) {
+            v[3 * i] = w[1] * x[3 * i + 2] - w[2] * x[3 * i + 1];
+            v[3 * i + 1] = w[2] * x[3 * i] - w[0] * x[3 * i + 2];
+            v[3 * i + 2] = w[0] * x[3 * i + 1] - w[1] * x[3 * i];
+        }
+        double[] fr = new double[x.length];
+        s.shears.forces(x, v, fr);
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(fe[k], fr[k], 1e-9 * maxAbs(fe), "rigid velocity, component " + k);
+        }
+    }
 }

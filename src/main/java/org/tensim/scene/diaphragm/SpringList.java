@@ -26,7 +26,7 @@ final class SpringList implements ShellNetwork.Sink {
     private record Triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
     }
 
-    /** A transverse shear element (undamped: its frequency is far below the shell's highest). */
+    /** A transverse shear element waiting for its damping. */
     private record Shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
     }
 
@@ -128,7 +128,7 @@ final class SpringList implements ShellNetwork.Sink {
 
     /**
      * Adds every spring to t, rest length = current distance, axial damping beta * k (N s/m), and
-     * every triangle and shear element with the Kelvin-Voigt damping time beta (s).
+     * every triangle and transverse shear element with the Kelvin-Voigt damping time beta (s).
      */
     void addTo(Topology t, double betaS) {
         for (int s = 0; s < n; s++) {

@@ -22,9 +22,9 @@ import org.tensim.solver.SystemState;
  * applied as {@link PartitionedTriangleTangent}: its slabs on the force model's threads), which keeps
  * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
- * semi-definite), at the new step's time. Transverse shear elements add {@code beta^2 k grad g grad g^T}
- * ({@link org.tensim.solver.ShearElements}, their indefinite geometric term dropped), and {@code beta beta_e}
- * times the same for their Kelvin-Voigt damping.
+ * semi-definite), at the new step's time. Transverse shear elements add {@code (beta^2 + beta beta_e) K_S},
+ * {@code K_S = sum K_kl grad g_k grad g_l^T} ({@link org.tensim.solver.ShearElements}, their indefinite
+ * geometric term dropped).
  */
 final class SpringJacobian {
     private final SystemState s;
