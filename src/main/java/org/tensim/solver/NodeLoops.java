@@ -27,4 +27,14 @@ public interface NodeLoops {
      * done. Allocation-free: callers keep their bodies in fields, not in per-step lambdas.
      */
     void run(int nodes, Body body);
+
+    /**
+     * Runs {@code body} over {@code tasks} independent tasks {@code [0, tasks)} (blocks of work that
+     * write disjoint data, such as slabs of elements with disjoint node sets), split among the
+     * threads whatever their number: unlike {@link #run}, a few large tasks are worth a dispatch.
+     * The default runs them all on the calling thread. Allocation-free as {@link #run}.
+     */
+    default void runTasks(int tasks, Body body) {
+        body.run(0, tasks);
+    }
 }

@@ -135,13 +135,18 @@ public final class TriangleKernels {
 
     /** F of element e at positions x into out[0..5]: column 0 (x, y, z), then column 1. */
     static void deformationGradient(int[] pp, int[] qq, double[] r, int e, double[] x, double[] out) {
+        deformationGradient(pp, qq, r, e, x, out, 0);
+    }
+
+    /** F of element e at positions x into out[oo..oo+5]: column 0 (x, y, z), then column 1. */
+    static void deformationGradient(int[] pp, int[] qq, double[] r, int e, double[] x, double[] out, int oo) {
         final int o = 3 * e;
         for (int d = 0; d < 3; d++) {
             final double y0 = x[pp[o] + d] + x[qq[o] + d];
             final double a = 0.5 * (x[pp[o + 1] + d] + x[qq[o + 1] + d] - y0);
             final double b = 0.5 * (x[pp[o + 2] + d] + x[qq[o + 2] + d] - y0);
-            out[d] = a * r[4 * e] + b * r[4 * e + 2];
-            out[3 + d] = a * r[4 * e + 1] + b * r[4 * e + 3];
+            out[oo + d] = a * r[4 * e] + b * r[4 * e + 2];
+            out[oo + 3 + d] = a * r[4 * e + 1] + b * r[4 * e + 3];
         }
     }
 }

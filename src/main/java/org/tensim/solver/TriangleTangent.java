@@ -48,45 +48,55 @@ public final class TriangleTangent implements ExtraStiffness {
         for (int e = 0; e < s.triangleCount(); e++) {
             TriangleKernels.deformationGradient(s.triP3, s.triQ3, s.triRest, e, px, fr);
             System.arraycopy(fr, 0, grad, 6 * e, 6);
-            double e00 = 0.5 * (fr[0] * fr[0] + fr[1] * fr[1] + fr[2] * fr[2] - 1);
-            double e11 = 0.5 * (fr[3] * fr[3] + fr[4] * fr[4] + fr[5] * fr[5] - 1);
-            double e01 = 0.5 * (fr[0] * fr[3] + fr[1] * fr[4] + fr[2] * fr[5]);
-            double mu = s.triMu[e];
-            double tr = s.triLambda[e] * (e00 + e11);
-            double a = 2 * mu * e00 + tr;
-            double b = 2 * mu * e01;
-            double c = 2 * mu * e11 + tr;
-            if (psd) {
-                double m = 0.5 * (a + c);
-                double r = Math.sqrt(0.25 * (a - c) * (a - c) + b * b);
-                double hi = m + r;
-                if (hi <= 0) {
-                    a = 0;
-                    b = 0;
-                    c = 0;
-                } else if (m - r < 0) {
-                    // Keep hi v v^T, v the eigenvector of hi (the better conditioned of two forms).
-                    double vx = b;
-                    double vy = hi - a;
-                    if (Math.abs(hi - c) > Math.abs(vy)) {
-                        vx = hi - c;
-                        vy = b;
-                    }
-                    double n2 = vx * vx + vy * vy;
-                    if (n2 == 0) {
-                        vx = a >= c ? 1 : 0;
-                        vy = a >= c ? 0 : 1;
-                        n2 = 1;
-                    }
-                    a = hi * vx * vx / n2;
-                    b = hi * vx * vy / n2;
-                    c = hi * vy * vy / n2;
-                }
-            }
-            stress[3 * e] = a;
-            stress[3 * e + 1] = b;
-            stress[3 * e + 2] = c;
+            stress(fr, 0, s.triMu[e], s.triLambda[e], psd, stress, 3 * e);
         }
+    }
+
+    /**
+     * The second Piola-Kirchhoff stress {@code S = 2 mu E + lambda tr(E) I} (J, as {@code A t} times
+     * Pa: mu and lambda are an element's {@code A t mu}, {@code A t lambda}) of the deformation gradient
+     * whose columns u, w are {@code f[fo..fo+5]}, stored as s00, s01, s11 at {@code out[oo..oo+2]};
+     * with {@code psd}, its negative eigenvalues set to zero (the positive part used by the clamped
+     * tangent).
+     */
+    public static void stress(double[] f, int fo, double mu, double lambda, boolean psd, double[] out, int oo) {
+        double e00 = 0.5 * (f[fo] * f[fo] + f[fo + 1] * f[fo + 1] + f[fo + 2] * f[fo + 2] - 1);
+        double e11 = 0.5 * (f[fo + 3] * f[fo + 3] + f[fo + 4] * f[fo + 4] + f[fo + 5] * f[fo + 5] - 1);
+        double e01 = 0.5 * (f[fo] * f[fo + 3] + f[fo + 1] * f[fo + 4] + f[fo + 2] * f[fo + 5]);
+        double tr = lambda * (e00 + e11);
+        double a = 2 * mu * e00 + tr;
+        double b = 2 * mu * e01;
+        double c = 2 * mu * e11 + tr;
+        if (psd) {
+            double m = 0.5 * (a + c);
+            double r = Math.sqrt(0.25 * (a - c) * (a - c) + b * b);
+            double hi = m + r;
+            if (hi <= 0) {
+                a = 0;
+                b = 0;
+                c = 0;
+            } else if (m - r < 0) {
+                // Keep hi v v^T, v the eigenvector of hi (the better conditioned of two forms).
+                double vx = b;
+                double vy = hi - a;
+                if (Math.abs(hi - c) > Math.abs(vy)) {
+                    vx = hi - c;
+                    vy = b;
+                }
+                double n2 = vx * vx + vy * vy;
+                if (n2 == 0) {
+                    vx = a >= c ? 1 : 0;
+                    vy = a >= c ? 0 : 1;
+                    n2 = 1;
+                }
+                a = hi * vx * vx / n2;
+                b = hi * vx * vy / n2;
+                c = hi * vy * vy / n2;
+            }
+        }
+        out[oo] = a;
+        out[oo + 1] = b;
+        out[oo + 2] = c;
     }
 
     /**

@@ -264,6 +264,7 @@ public final class DiaphragmReport {
         summary.put("realtime_factor", round(sim.time() / Math.max(wall, 1e-9), 4));
         summary.put("steps_per_cpu_s", round(sim.steps() / cpuS, 1));
         summary.put("realtime_factor_cpu", round(sim.time() / cpuS, 4));
+        summary.put("stage_ms_per_step", StepTimings.of(sim));
         summary.put("load_average", round(java.lang.management.ManagementFactory.getOperatingSystemMXBean()
                 .getSystemLoadAverage(), 2));
         summary.put("rib_amplitude", scene.controls().ribAmplitude());

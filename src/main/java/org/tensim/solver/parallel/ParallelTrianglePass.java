@@ -1,20 +1,20 @@
 package org.tensim.solver.parallel;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import org.tensim.solver.ShearElements;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleForcePass;
 import org.tensim.solver.TriangleKernels;
+import org.tensim.solver.TriangleSlabs;
 
 /**
  * The membrane triangles' forces ({@link TriangleKernels}) and the transverse shear elements'
- * ({@link ShearElements}) on a {@link WorkerPool}, without locks:
- * the nodes the triangles use are cut into {@link #BLOCKS} slabs along x (equal counts, by rest
- * position), a triangle whose nodes all lie in one slab belongs to it, and the slabs, whose node
- * sets are disjoint, are shared among the workers; the triangles that straddle two slabs (a thin
- * seam, a few percent) are then added by the calling thread. The partition does not depend on the
+ * ({@link ShearElements}) on a {@link WorkerPool}, without locks: the nodes the triangles use are
+ * cut into {@link #BLOCKS} slabs with disjoint node sets ({@link TriangleSlabs}); a triangle, or a
+ * shear element, whose nodes all lie in one slab belongs to it, the slabs are shared among the
+ * workers, and the elements that straddle two slabs (a thin seam, a few percent) are then added by
+ * the calling thread. The partition does not depend on the
  * thread count, so every node sums its triangles in the same order with one thread or several:
  * the same bits (tested).
  *
@@ -87,19 +87,14 @@ public final class ParallelTrianglePass implements TriangleForcePass {
     public ParallelTrianglePass(SystemState state, WorkerPool pool) {
         this.s = state;
         this.pool = pool;
-        int[] slab = slabs(state);
+        int[] slab = TriangleSlabs.nodeSlabs(state, BLOCKS);
+        int[] blockOf = TriangleSlabs.blockOf(state, slab, BLOCKS);
         List<List<Integer>> lists = new ArrayList<>();
         for (int b = 0; b <= BLOCKS; b++) {
             lists.add(new ArrayList<>());
         }
         for (int e = 0; e < state.triangleCount(); e++) {
-            int b = slab[state.triP[3 * e]];
-            for (int k = 0; k < 3; k++) {
-                if (slab[state.triP[3 * e + k]] != b || slab[state.triQ[3 * e + k]] != b) {
-                    b = BLOCKS; // the seam
-                }
-            }
-            lists.get(b).add(e);
+            lists.get(blockOf[e]).add(e);
         }
         List<List<Integer>> shearLists = new ArrayList<>();
         for (int b = 0; b <= BLOCKS; b++) {
@@ -125,33 +120,6 @@ public final class ParallelTrianglePass implements TriangleForcePass {
                 blocks[b].add(px, pv, f);
             }
         };
-    }
-
-    /** Slab of each node used by a triangle (x-quantiles of the rest positions), -1 for the others. */
-    private static int[] slabs(SystemState s) {
-        int[] slab = new int[s.nodeCount];
-        Arrays.fill(slab, -1);
-        boolean[] used = new boolean[s.nodeCount];
-        int n = 0;
-        for (int k = 0; k < s.triP.length; k++) {
-            for (int node : new int[] {s.triP[k], s.triQ[k]}) {
-                if (!used[node]) {
-                    used[node] = true;
-                    n++;
-                }
-            }
-        }
-        Integer[] order = new Integer[n];
-        for (int i = 0, j = 0; i < s.nodeCount; i++) {
-            if (used[i]) {
-                order[j++] = i;
-            }
-        }
-        Arrays.sort(order, (a, b) -> Double.compare(s.x0[3 * a], s.x0[3 * b]));
-        for (int j = 0; j < n; j++) {
-            slab[order[j]] = (int) ((long) j * BLOCKS / n);
-        }
-        return slab;
     }
 
     /** Triangles on the seam (added by the calling thread after the slabs). */

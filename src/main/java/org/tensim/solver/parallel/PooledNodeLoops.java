@@ -42,6 +42,20 @@ public final class PooledNodeLoops implements NodeLoops {
             b.run(0, n); // the whole range on this thread: worker 0 of a team of one
             return;
         }
+        dispatch(n, b);
+    }
+
+    /** Worker w of T runs the tasks {@code [tasks w / T, tasks (w + 1) / T)}, however few they are. */
+    @Override
+    public void runTasks(int tasks, Body b) {
+        if (pool.size() == 1 || tasks < 2) {
+            b.run(0, tasks);
+            return;
+        }
+        dispatch(tasks, b);
+    }
+
+    private void dispatch(int n, Body b) {
         body = b;
         nodes = n;
         try {

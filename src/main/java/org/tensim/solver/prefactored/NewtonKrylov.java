@@ -39,6 +39,8 @@ final class NewtonKrylov {
     int lastKrylovIterations;
     double lastRelativeResidual;
     long products;
+    /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
+    final long[] partNanos = new long[Bdf2Part.values().length];
 
     NewtonKrylov(SystemState s, int[] freeIndex, int[] freeNodes) {
         this.s = s;
@@ -79,17 +81,24 @@ final class NewtonKrylov {
         lastKrylovIterations = 0;
         for (int it = 0; it < newtonIterations; it++) {
             positions(beta);
+            long t0 = System.nanoTime();
             if (!links.isEmpty()) {
                 // Newton on the links' lengths too: each iteration starts on their linearisation.
                 links.linearise(xIt, beta);
                 links.constrain(vIt);
                 positions(beta);
             }
+            long t1Links = System.nanoTime();
+            partNanos[Bdf2Part.LINKS.ordinal()] += t1Links - t0;
             model.computeForces(t1, xIt, vIt, f);
-            if (residual(beta) == 0) {
+            double norm = residual(beta);
+            long t2 = System.nanoTime();
+            partNanos[Bdf2Part.RESIDUAL.ordinal()] += t2 - t1Links;
+            if (norm == 0) {
                 break;
             }
-            jacobian.linearise(t1, xIt, beta);
+            jacobian.linearise(t1, xIt, beta, model.nodeLoops());
+            partNanos[Bdf2Part.LINEARISE.ordinal()] += System.nanoTime() - t2;
             conjugateGradient(precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {
                 for (int c = 0; c < 3; c++) {
@@ -139,8 +148,7 @@ final class NewtonKrylov {
         }
         links.projectDual(r);
         System.arraycopy(r, 0, z, 0, nf3);
-        precond.solve3(z, work);
-        links.project(z);
+        precondition(precond);
         double rz = dot(r, z);
         final double rz0 = rz;
         System.arraycopy(z, 0, p, 0, nf3);
@@ -148,8 +156,10 @@ final class NewtonKrylov {
         double relative = 1;
         while (it < maxIterations && rz0 > 0) {
             products++;
+            long t0 = System.nanoTime();
             jacobian.multiply(p, q);
             links.projectDual(q);
+            partNanos[Bdf2Part.PRODUCTS.ordinal()] += System.nanoTime() - t0;
             double pq = dot(p, q);
             if (!(pq > 0)) {
                 break; // only p = 0 gets here: J is positive definite (clamped transverse stiffness)
@@ -164,8 +174,7 @@ final class NewtonKrylov {
                 break; // no solve for a residual that nothing would use
             }
             System.arraycopy(r, 0, z, 0, nf3);
-            precond.solve3(z, work);
-            links.project(z);
+            precondition(precond);
             double rzNew = dot(r, z);
             relative = Math.sqrt(Math.max(0, rzNew) / rz0);
             if (relative <= tolerance) {
@@ -179,6 +188,14 @@ final class NewtonKrylov {
         }
         lastKrylovIterations += it;
         lastRelativeResidual = relative;
+    }
+
+    /** z = P C^-1 P^T z (z holds the projected residual on entry), timed as the solves. */
+    private void precondition(SparseCholesky precond) {
+        long t0 = System.nanoTime();
+        precond.solve3(z, work);
+        links.project(z);
+        partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
     }
 
     private void scatter(double[] compact, double[] full) {

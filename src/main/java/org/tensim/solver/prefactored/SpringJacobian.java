@@ -1,7 +1,8 @@
 package org.tensim.solver.prefactored;
 
+import org.tensim.solver.NodeLoops;
+import org.tensim.solver.PartitionedTriangleTangent;
 import org.tensim.solver.SystemState;
-import org.tensim.solver.TriangleTangent;
 
 /**
  * The Jacobian of an implicit step, {@code J = M + beta C + beta^2 K}, on the free nodes
@@ -17,7 +18,8 @@ import org.tensim.solver.TriangleTangent;
  * applies, and keeps Newton's iteration from following a buckling branch; the global viscous
  * damping c_v adds {@code beta c_v I}. Springs to fixed and driven nodes act on the free end
  * only (those nodes are eliminated). Membrane triangles add {@code beta^2 K_T}, their tangent
- * stiffness with the compressive part of the stress dropped ({@link TriangleTangent}), which keeps
+ * stiffness with the compressive part of the stress dropped ({@link org.tensim.solver.TriangleTangent},
+ * applied as {@link PartitionedTriangleTangent}: its slabs on the force model's threads), which keeps
  * J positive definite in the same way, and {@code beta beta_e K_T} for their Kelvin-Voigt damping.
  * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
  * semi-definite), at the new step's time. Transverse shear elements add {@code (beta^2 + beta beta_e) K_S},
@@ -32,8 +34,12 @@ final class SpringJacobian {
     private final double[] dir; // per spring: u_x, u_y, u_z
     private final double[] coef; // per spring: alpha, beta of alpha u u^T + beta I
     private double diagonalTerm; // beta c_v
-    private final TriangleTangent triangles; // null without triangles
+    private final PartitionedTriangleTangent triangles; // null without triangles
     private final int[] triangleOffset; // per node: 3 x compact index, -1 when not free
+    private NodeLoops loops = NodeLoops.SERIAL;
+    private final NodeLoops.Body springRange = this::lineariseSprings;
+    private double[] positions; // during linearise only
+    private double weight; // beta, during linearise only
     private double triangleWeight; // beta^2
     private double triangleDampingWeight; // beta
 
@@ -51,30 +57,48 @@ final class SpringJacobian {
         }
         dir = new double[3 * ns];
         coef = new double[2 * ns];
-        triangles = s.triangleCount() == 0 ? null : new TriangleTangent(s);
         triangleOffset = new int[s.nodeCount];
         for (int i = 0; i < s.nodeCount; i++) {
             triangleOffset[i] = freeIndex[i] < 0 ? -1 : 3 * freeIndex[i];
         }
+        triangles = s.triangleCount() == 0 ? null : new PartitionedTriangleTangent(s, triangleOffset);
     }
 
-    /** Linearises at time t (s) and positions px (full layout) for the step weight beta (s). */
-    void linearise(double t, double[] px, double beta) {
-        final int[] sa = s.springA;
-        final int[] sb = s.springB;
-        final double[] kk = s.springK;
-        final double[] cc = s.springC;
-        final double[] rl = s.springL;
+    /**
+     * Linearises at time t (s) and positions px (full layout) for the step weight beta (s); the
+     * products until the next linearisation share their triangle slabs among the threads of loops.
+     */
+    void linearise(double t, double[] px, double beta, NodeLoops loops) {
+        this.loops = loops;
         final double b2 = beta * beta;
         diagonalTerm = beta * s.viscousDamping();
         triangleWeight = b2;
         triangleDampingWeight = beta;
         if (triangles != null) {
-            triangles.linearise(px, true);
+            triangles.linearise(px, loops);
         }
         s.fibres.linearise(t, px);
         s.shears.linearise(px, false);
-        for (int i = 0; i < sa.length; i++) {
+        positions = px;
+        weight = beta;
+        try {
+            loops.run(s.springCount(), springRange);
+        } finally {
+            positions = null;
+        }
+    }
+
+    /** Directions and block coefficients of the springs [from, to) at {@link #positions}. */
+    private void lineariseSprings(int from, int to) {
+        final int[] sa = s.springA;
+        final int[] sb = s.springB;
+        final double[] kk = s.springK;
+        final double[] cc = s.springC;
+        final double[] rl = s.springL;
+        final double[] px = positions;
+        final double beta = weight;
+        final double b2 = beta * beta;
+        for (int i = from; i < to; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
             final double dx = px[b] - px[a];
@@ -133,7 +157,7 @@ final class SpringJacobian {
             }
         }
         if (triangles != null) {
-            triangles.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
+            triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
         }
         s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
         s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);

@@ -7,6 +7,10 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.tensim.scene.LatticeScene;
+import org.tensim.scene.diaphragm.BreathingCycle;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.parallel.Parallelism;
@@ -19,21 +23,34 @@ class PrefactoredAllocationTest {
     @ParameterizedTest(name = "{0} thread(s)")
     @ValueSource(ints = {1, 2})
     void bdf2StepWithLinksAllocatesNothing(int threads) {
+        assertNoAllocation(new Simulation(SystemState.compile(LatticeScene.build(6, 0.1, 1, 1000, 0.5, true)),
+                new PrefactoredBdf2()), threads, 0.01, 2000);
+    }
+
+    /** Membrane triangles (their slabs dispatched on 2 threads), fibres, links and driven nodes. */
+    @ParameterizedTest(name = "{0} thread(s)")
+    @ValueSource(ints = {1, 2})
+    void bdf2StepOnACoarseDiaphragmAllocatesNothing(int threads) throws Exception {
+        Simulation sim = DiaphragmSetup.generated(8, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
+                new DiaphragmControls(1, DiaphragmSetup.DEFAULT_MUSCLE_PA)).scene().newSimulation();
+        sim.setIntegrator(new PrefactoredBdf2());
+        assertNoAllocation(sim, threads, 0.02, 500);
+    }
+
+    private static void assertNoAllocation(Simulation sim, int threads, double dt, int warmUp) {
         java.lang.management.ThreadMXBean bean = ManagementFactory.getThreadMXBean();
         Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean, "no allocation counters");
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
         Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
         mx.setThreadAllocatedMemoryEnabled(true);
 
-        Simulation sim = new Simulation(SystemState.compile(LatticeScene.build(6, 0.1, 1, 1000, 0.5, true)),
-                new PrefactoredBdf2());
         try (Parallelism p = threads > 1 ? Parallelism.install(sim, threads) : null) {
             long[] workers = p == null ? new long[0] : p.pool().workerThreadIds();
             long[] ids = new long[workers.length + 1];
             ids[0] = Thread.currentThread().getId();
             System.arraycopy(workers, 0, ids, 1, workers.length);
-            for (int i = 0; i < 2000; i++) {
-                sim.step(0.01);
+            for (int i = 0; i < warmUp; i++) {
+                sim.step(dt);
             }
             long bytes = 0;
             for (int attempt = 0; attempt < 2; attempt++) {
@@ -42,7 +59,7 @@ class PrefactoredAllocationTest {
                     before += mx.getThreadAllocatedBytes(id);
                 }
                 for (int i = 0; i < 300; i++) {
-                    sim.step(0.01);
+                    sim.step(dt);
                 }
                 long after = 0;
                 for (long id : ids) {
