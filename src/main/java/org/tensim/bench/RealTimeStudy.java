@@ -64,9 +64,9 @@ public final class RealTimeStudy {
     /** CG iterations per step of the more accurate BDF2 rows (the default is {@link PrefactoredBdf2#DEFAULT_KRYLOV_ITERATIONS}). */
     static final int BDF2_MORE_CG = 8;
     /** Newton iterations of the most accurate BDF2 rows (the default is one: a linearly implicit step). */
-    static final int[] BDF2_NEWTON = {3, 6};
+    static final int[] BDF2_NEWTON = {2, 3, 6};
     /** Steps of those rows, s. */
-    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01};
+    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02};
     /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime} (issue 10). */
     public static final double TOLERANCE = 0.05;
     /** Difference of the apex's descent from RK2's accepted by {@code --realtime}, mm. */

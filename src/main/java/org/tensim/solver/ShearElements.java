@@ -140,6 +140,11 @@ public final class ShearElements {
         damped |= beta[e] != 0;
     }
 
+    /** The Kelvin-Voigt damping time beta_e of element e, s. */
+    public double dampingS(int e) {
+        return beta[e];
+    }
+
     /** Whether any element is damped (its forces then depend on the velocities). */
     public boolean damped() {
         return damped;

@@ -24,6 +24,12 @@ import org.tensim.solver.SystemState;
  * Jacobian M + beta C + beta^2 K of the springs. A membrane triangle adds, likewise isotropically,
  * {@code (beta^2 + beta beta_e) (2 mu + lambda) A t grad N_k . grad N_l} between its corners k, l (its scalar
  * Laplacian at the stiffer of its moduli; a midpoint corner shares it equally between its two nodes).
+ * A transverse shear element ({@link org.tensim.solver.ShearElements}) adds, for each edge k (upper corners
+ * p, q, their partners p', q'), its stiffest mode: the faces sliding along the edge, {@code g_k} changing by
+ * {@code 2 e_k . (mean of p', q' - mean of p, q)}, taken isotropically as a spring of stiffness
+ * {@code (beta^2 + beta beta_e) K_kk 4 |e_k|^2} between the two pairs' means. On coarse meshes this mode is
+ * several times stiffer than the membrane ({@code kappa G (h / t)^2} against E): without it the
+ * preconditioner leaves it to the few Krylov iterations of a step, which do not resolve it.
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
@@ -163,7 +169,7 @@ final class PrefactoredMatrix {
     private Triplets assemble(double beta, double[] k, double[] c, double cv) {
         int nf = freeNodes.length;
         int ns = s.springCount();
-        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount());
+        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count());
         for (int j = 0; j < nf; j++) {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
         }
@@ -204,7 +210,37 @@ final class PrefactoredMatrix {
                 }
             }
         }
+        addShears(t, beta);
         return t;
+    }
+
+    /** The shear elements' sliding modes (see the class comment). */
+    private void addShears(Triplets t, double beta) {
+        final double[] x0 = s.x0;
+        final int[] slot = new int[4];
+        for (int e = 0; e < s.shears.count(); e++) {
+            double w = beta * beta + beta * s.shears.dampingS(e);
+            for (int c = 0; c < 3; c++) {
+                int p = s.shears.node(e, c);
+                int q = s.shears.node(e, (c + 1) % 3);
+                double ex = x0[3 * q] - x0[3 * p];
+                double ey = x0[3 * q + 1] - x0[3 * p + 1];
+                double ez = x0[3 * q + 2] - x0[3 * p + 2];
+                // Spring between the means: u = (-1/2, -1/2, 1/2, 1/2) on p, q, p', q', stiffness k, k u u^T.
+                double k = w * s.shears.stiffness(e, c, c) * 4 * (ex * ex + ey * ey + ez * ez);
+                slot[0] = freeIndex[p];
+                slot[1] = freeIndex[q];
+                slot[2] = freeIndex[s.shears.node(e, 3 + c)];
+                slot[3] = freeIndex[s.shears.node(e, 3 + (c + 1) % 3)];
+                for (int a = 0; a < 4; a++) {
+                    for (int b = 0; b < 4 && slot[a] >= 0; b++) {
+                        if (slot[b] >= 0) {
+                            t.add(slot[a], slot[b], 0.25 * k * ((a < 2) == (b < 2) ? 1 : -1));
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /** Matrix entries in triplet form. */

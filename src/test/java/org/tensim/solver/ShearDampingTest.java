@@ -1,0 +1,151 @@
+package org.tensim.solver;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.tensim.model.Topology;
+
+/**
+ * The transverse shear elements' Kelvin-Voigt damping ({@link org.tensim.model.TransverseShear#dampingS}):
+ * the damping force is {@code -beta_e K_1 v} with K_1 the tangent's first term (the Jacobian the implicit
+ * solvers use), it dissipates for any velocity, and a rigid motion's velocity is not damped.
+ */
+class ShearDampingTest {
+    private static final double KAPPA_G = 5.0 / 6 * 40e3 / (2 * 1.45);
+    private static final double T = 2.5e-3;
+    private static final double BETA = 1.2e-4;
+
+    private static SystemState randomElements(Random rnd) {
+        Topology t = new Topology();
+        for (int i = 0; i < 6; i++) {
+            t.addNode(0.01 * rnd.nextDouble(), 0.01 * rnd.nextDouble(), 0, 1);
+        }
+        for (int i = 0; i < 6; i++) {
+            var u = t.node(i).position();
+            t.addNode(u.x() + 1e-3 * rnd.nextGaussian(), u.y() + 1e-3 * rnd.nextGaussian(), -T, 1);
+        }
+        for (int e = 0; e < 8; e++) {
+            int i = rnd.nextInt(6);
+            int j = (i + 1 + rnd.nextInt(5)) % 6;
+            int k = j;
+            while (k == i || k == j) {
+                k = rnd.nextInt(6);
+            }
+            t.addShear(new int[] {i, j, k}, new int[] {6 + i, 6 + j, 6 + k}, KAPPA_G * (0.5 + rnd.nextDouble()), T,
+                    BETA * (0.5 + rnd.nextDouble()));
+        }
+        return SystemState.compile(t);
+    }
+
+    private static double[] gaussian(Random rnd, int n, double scale) {
+        double[] v = new double[n];
+        for (int k = 0; k < n; k++) {
+            v[k] = scale * rnd.nextGaussian();
+        }
+        return v;
+    }
+
+    /** f(x, v) - f(x): the damping force alone. */
+    private static double[] dampingForce(SystemState s, double[] x, double[] v) {
+        double[] withRate = new double[x.length];
+        double[] elastic = new double[x.length];
+        s.shears.forces(x, v, withRate);
+        s.shears.forces(x, elastic);
+        for (int k = 0; k < x.length; k++) {
+            withRate[k] -= elastic[k];
+        }
+        return withRate;
+    }
+
+    @Test
+    void dampingForceIsMinusTheDampingJacobianTimesTheVelocity() {
+        Random rnd = new Random(5);
+        SystemState s = randomElements(rnd);
+        assertTrue(s.shears.damped());
+        double[] x = s.x.clone();
+        for (int k = 0; k < x.length; k++) {
+            x[k] += 1e-3 * rnd.nextGaussian();
+        }
+        double[] v = gaussian(rnd, x.length, 0.1);
+        double[] fd = dampingForce(s, x, v);
+        s.shears.linearise(x, false);
+        double[] cv = new double[x.length];
+        s.shears.multiplyAdd(v, cv, null, 0, 1);
+        double scale = 0;
+        for (double c : cv) {
+            scale = Math.max(scale, Math.abs(c));
+        }
+        assertTrue(scale > 0, "a deformed, moving element is damped");
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(-cv[k], fd[k], 1e-12 * scale, "component " + k);
+        }
+        // The diagonal of the same Jacobian, as the implicit solvers' preconditioners take it.
+        double[] diag = new double[x.length];
+        s.shears.addDiagonal(diag, 0, 1);
+        for (int k = 0; k < x.length; k++) {
+            double[] unit = new double[x.length];
+            unit[k] = 1;
+            double[] col = new double[x.length];
+            s.shears.multiplyAdd(unit, col, null, 0, 1);
+            assertEquals(col[k], diag[k], 1e-12 * Math.abs(col[k]) + 1e-300, "diagonal " + k);
+        }
+    }
+
+    @Test
+    void dampingDissipatesAndLeavesRigidMotionsAlone() {
+        Random rnd = new Random(8);
+        SystemState s = randomElements(rnd);
+        double[] x = s.x.clone();
+        for (int k = 0; k < x.length; k++) {
+            x[k] += 1e-3 * rnd.nextGaussian();
+        }
+        for (int trial = 0; trial < 20; trial++) {
+            double[] v = gaussian(rnd, x.length, 0.1);
+            double[] fd = dampingForce(s, x, v);
+            double power = 0;
+            for (int k = 0; k < x.length; k++) {
+                power += fd[k] * v[k];
+            }
+            assertTrue(power <= 0, "damping power " + power + " W, expected <= 0");
+        }
+        // A rigid velocity field: translation u plus rotation w x r.
+        double[] u = {0.3, -0.2, 0.1};
+        double[] w = {1.5, 0.7, -2.0};
+        double[] v = new double[x.length];
+        for (int i = 0; i < x.length / 3; i++) {
+            double rx = x[3 * i];
+            double ry = x[3 * i + 1];
+            double rz = x[3 * i + 2];
+            v[3 * i] = u[0] + w[1] * rz - w[2] * ry;
+            v[3 * i + 1] = u[1] + w[2] * rx - w[0] * rz;
+            v[3 * i + 2] = u[2] + w[0] * ry - w[1] * rx;
+        }
+        double[] fd = dampingForce(s, x, v);
+        double[] moving = dampingForce(s, x, gaussian(rnd, x.length, 0.1));
+        double scale = 0;
+        for (double f : moving) {
+            scale = Math.max(scale, Math.abs(f));
+        }
+        for (double f : fd) {
+            assertEquals(0, f, 1e-9 * scale, "a rigid motion is not damped");
+        }
+    }
+
+    @Test
+    void negativeDampingIsRefusedWithItsNameAndUnit() {
+        Topology t = new Topology();
+        for (int i = 0; i < 3; i++) {
+            t.addNode(0.01 * i, 0.01 * (i % 2), 0, 1);
+        }
+        for (int i = 0; i < 3; i++) {
+            var p = t.node(i).position();
+            t.addNode(p.x(), p.y(), -T, 1);
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> t.addShear(new int[] {0, 1, 2}, new int[] {3, 4, 5}, KAPPA_G, T, -1e-4));
+        assertTrue(e.getMessage().contains("damping time beta") && e.getMessage().contains("s"), e.getMessage());
+    }
+}
