@@ -36,9 +36,10 @@ class ImplicitEulerDiaphragmTest {
         // (LinkTangent) and not yet in implicit Euler (docs/diaphragm.md, "Limitations"). Measured
         // before the transverse shear elements: 0.285, 0.0315, 0.0271 at 1, 0.5, 0.25 ms; with them
         // (which tie the columns' tilt to the faces, so that the columns' absence from stage 1 costs
-        // more): 0.105, 0.0215, 0.0452 (2026-11-23 17:18 UTC), the apex within 0.07 mm of RK2's.
+        // more): 0.105, 0.0215, 0.0452 undamped (2026-11-23 17:18 UTC), the apex within 0.07 mm of RK2's;
+        // with their Kelvin-Voigt damping 0.111, 0.0355, 0.0388 (18:17-18:37 UTC).
         assertTrue(eFine < eCoarse, "error falls from 1 to 0.5 ms: " + errors);
-        assertTrue(eFine < 0.03 && eFinest < 0.06, "within 3 % of RK2 at 0.5 ms, 6 % at 0.25 ms: " + errors);
+        assertTrue(eFine < 0.05 && eFinest < 0.05, "within 5 % of RK2 at 0.5 and 0.25 ms: " + errors);
         int apex = scene.apexNode();
         assertEquals(rk2[3 * apex + 2], finestStep[3 * apex + 2], 0.5e-3, "apex height, m");
     }
