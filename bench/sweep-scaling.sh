@@ -21,8 +21,8 @@ bench_setup docs/examples/sweep-diaphragm-bench.json 3 sweep-scaling "$@"
 log() { echo "$*" | tee -a "$OUT/log.txt"; }
 sweep() { # out-dir, workers [command prefix]
   rm -rf "$1"
-  $3 "$ROOT/tensim" sweep --spec "$SPEC" --workers "$2" --out "$1" >/dev/null 2>&1 \
-    || { echo "sweep into $1 failed; rerun: $3 $ROOT/tensim sweep --spec $SPEC --workers $2 --out $1" >&2; exit 1; }
+  ${3:-} "$ROOT/tensim" sweep --spec "$SPEC" --workers "$2" --out "$1" >/dev/null 2>&1 \
+    || { echo "sweep into $1 failed; rerun: ${3:-} $ROOT/tensim sweep --spec $SPEC --workers $2 --out $1" >&2; exit 1; }
 }
 jvms() { sweep "$OUT/jvm-a" 1 & a=$!; sweep "$OUT/jvm-b" 1 & b=$!; wait $a; wait $b; }
 log "# bench/sweep-scaling.sh $SPEC $ROUNDS  $(date -u)  $(nproc) cores"
