@@ -11,7 +11,8 @@ import org.tensim.model.Topology;
 /**
  * The transverse shear elements' Kelvin-Voigt damping ({@link org.tensim.model.TransverseShear#dampingS}):
  * the damping force is {@code -beta_e K_1 v} with K_1 the tangent's first term (the Jacobian the implicit
- * solvers use), it dissipates for any velocity, and a rigid motion's velocity is not damped.
+ * solvers use, and its diagonal their preconditioners'); a negative damping time is refused. (That it
+ * dissipates and leaves rigid motions alone: {@link ShearElementsTest}.)
  */
 class ShearDampingTest {
     private static final double KAPPA_G = 5.0 / 6 * 40e3 / (2 * 1.45);
@@ -19,25 +20,7 @@ class ShearDampingTest {
     private static final double BETA = 1.2e-4;
 
     private static SystemState randomElements(Random rnd) {
-        Topology t = new Topology();
-        for (int i = 0; i < 6; i++) {
-            t.addNode(0.01 * rnd.nextDouble(), 0.01 * rnd.nextDouble(), 0, 1);
-        }
-        for (int i = 0; i < 6; i++) {
-            var u = t.node(i).position();
-            t.addNode(u.x() + 1e-3 * rnd.nextGaussian(), u.y() + 1e-3 * rnd.nextGaussian(), -T, 1);
-        }
-        for (int e = 0; e < 8; e++) {
-            int i = rnd.nextInt(6);
-            int j = (i + 1 + rnd.nextInt(5)) % 6;
-            int k = j;
-            while (k == i || k == j) {
-                k = rnd.nextInt(6);
-            }
-            t.addShear(new int[] {i, j, k}, new int[] {6 + i, 6 + j, 6 + k}, KAPPA_G * (0.5 + rnd.nextDouble()), T,
-                    BETA * (0.5 + rnd.nextDouble()));
-        }
-        return SystemState.compile(t);
+        return SystemState.compile(ShearElementsTest.randomElements(rnd, BETA));
     }
 
     private static double[] gaussian(Random rnd, int n, double scale) {
@@ -91,46 +74,6 @@ class ShearDampingTest {
             double[] col = new double[x.length];
             s.shears.multiplyAdd(unit, col, null, 0, 1);
             assertEquals(col[k], diag[k], 1e-12 * Math.abs(col[k]) + 1e-300, "diagonal " + k);
-        }
-    }
-
-    @Test
-    void dampingDissipatesAndLeavesRigidMotionsAlone() {
-        Random rnd = new Random(8);
-        SystemState s = randomElements(rnd);
-        double[] x = s.x.clone();
-        for (int k = 0; k < x.length; k++) {
-            x[k] += 1e-3 * rnd.nextGaussian();
-        }
-        for (int trial = 0; trial < 20; trial++) {
-            double[] v = gaussian(rnd, x.length, 0.1);
-            double[] fd = dampingForce(s, x, v);
-            double power = 0;
-            for (int k = 0; k < x.length; k++) {
-                power += fd[k] * v[k];
-            }
-            assertTrue(power <= 0, "damping power " + power + " W, expected <= 0");
-        }
-        // A rigid velocity field: translation u plus rotation w x r.
-        double[] u = {0.3, -0.2, 0.1};
-        double[] w = {1.5, 0.7, -2.0};
-        double[] v = new double[x.length];
-        for (int i = 0; i < x.length / 3; i++) {
-            double rx = x[3 * i];
-            double ry = x[3 * i + 1];
-            double rz = x[3 * i + 2];
-            v[3 * i] = u[0] + w[1] * rz - w[2] * ry;
-            v[3 * i + 1] = u[1] + w[2] * rx - w[0] * rz;
-            v[3 * i + 2] = u[2] + w[0] * ry - w[1] * rx;
-        }
-        double[] fd = dampingForce(s, x, v);
-        double[] moving = dampingForce(s, x, gaussian(rnd, x.length, 0.1));
-        double scale = 0;
-        for (double f : moving) {
-            scale = Math.max(scale, Math.abs(f));
-        }
-        for (double f : fd) {
-            assertEquals(0, f, 1e-9 * scale, "a rigid motion is not damped");
         }
     }
 

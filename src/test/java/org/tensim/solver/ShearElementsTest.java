@@ -22,6 +22,11 @@ class ShearElementsTest {
 
     /** Random elements among a few nodes (upper 0..5, lower 6..11), perturbed. */
     private static Topology randomElements(Random rnd) {
+        return randomElements(rnd, 0);
+    }
+
+    /** The same, each element with a damping time drawn from [beta/2, 3 beta/2) (s; none for 0). */
+    static Topology randomElements(Random rnd, double beta) {
         Topology t = new Topology();
         for (int i = 0; i < 6; i++) {
             t.addNode(0.01 * rnd.nextDouble(), 0.01 * rnd.nextDouble(), 0, 1);
@@ -37,7 +42,8 @@ class ShearElementsTest {
             while (k == i || k == j) {
                 k = rnd.nextInt(6);
             }
-            t.addShear(new int[] {i, j, k}, new int[] {6 + i, 6 + j, 6 + k}, KAPPA_G * (0.5 + rnd.nextDouble()), T);
+            t.addShear(new int[] {i, j, k}, new int[] {6 + i, 6 + j, 6 + k}, KAPPA_G * (0.5 + rnd.nextDouble()), T,
+                    beta == 0 ? 0 : beta * (0.5 + rnd.nextDouble()));
         }
         return t;
     }
