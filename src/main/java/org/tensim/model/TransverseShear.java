@@ -9,7 +9,8 @@ package org.tensim.model;
  *
  * <pre>
  *   g_k = e . S   (= (|d1|^2 - |d2|^2) / 2 for the prism side's two diagonals, columns of equal length),
- *   r_k = (g_k - g0_k) / (2 s_k)   (= gamma . e_k, gamma the shear strain; s_k the edge's mean column length),
+ *   r_k = (g_k - g0_k) / (2 s_k)   (= gamma . e_k, gamma the shear strain; s_k the mean over the edge's ends of
+ *                                  the columns' components along the triangle's normal at rest: the faces' distance),
  *   W = 1/2 kappa G t r^T Q r = 1/2 (g - g0)^T K (g - g0),   K_kl = kappa G t Q_kl / (4 s_k s_l)
  * </pre>
  *
@@ -56,16 +57,20 @@ public final class TransverseShear {
         Check.positive(name + " kappa G", "Pa", kappaGPa);
         Check.positive(name + " thickness", "m", thicknessM);
         this.dampingS = Check.nonNegative(name + " damping time beta", "s", dampingS);
+        // The partners may repeat (a mesh whose faces have different vertex counts pairs several upper
+        // corners with one lower vertex; g_k is then the difference of the squared distances from the
+        // edge's ends to that vertex, still -2 e_k . delta under a sliding delta); nothing else may.
         for (int a = 0; a < 6; a++) {
             for (int b = a + 1; b < 6; b++) {
-                if (nodes[a] == nodes[b]) {
+                if (nodes[a] == nodes[b] && a < 3) {
                     throw new IllegalArgumentException(name + " uses node " + nodes[a]
-                            + " twice; expected six distinct nodes (a triangle and its three partners)");
+                            + " twice; expected three distinct upper corners, each different from the partners");
                 }
             }
         }
         double[] cot = new double[3];
         double[] s = new double[3];
+        Vec3 normal = cross(rest[1].minus(rest[0]), rest[2].minus(rest[0])).normalized();
         for (int k = 0; k < 3; k++) {
             Vec3 a = rest[k];
             Vec3 b = rest[(k + 1) % 3];
@@ -73,13 +78,12 @@ public final class TransverseShear {
             Vec3 ca = rest[3 + k].minus(a);
             Vec3 cb = rest[3 + (k + 1) % 3].minus(b);
             restG[k] = e.dot(ca.plus(cb));
-            s[k] = 0.5 * (ca.norm() + cb.norm());
+            s[k] = 0.5 * (leverArm(ca, normal, thicknessM) + leverArm(cb, normal, thicknessM));
             // The angle opposite edge k is at corner k + 2.
             Vec3 o = rest[(k + 2) % 3];
             Vec3 u = a.minus(o);
             Vec3 w = b.minus(o);
-            double cross = new Vec3(u.y() * w.z() - u.z() * w.y(), u.z() * w.x() - u.x() * w.z(),
-                    u.x() * w.y() - u.y() * w.x()).norm();
+            double cross = cross(u, w).norm();
             if (!(cross > 1e-12 * u.norm() * w.norm()) || !(s[k] > 0)) {
                 throw new IllegalArgumentException(name + " is degenerate: its upper corners are collinear or a "
                         + "column has zero length (" + s[k] + " m); expected a triangle and columns of positive size");
@@ -96,6 +100,20 @@ public final class TransverseShear {
             }
         }
         this.nodes = nodes.clone();
+    }
+
+    private static Vec3 cross(Vec3 u, Vec3 w) {
+        return new Vec3(u.y() * w.z() - u.z() * w.y(), u.z() * w.x() - u.x() * w.z(), u.x() * w.y() - u.y() * w.x());
+    }
+
+    /**
+     * A column's lever arm for the shear strain: its component along the triangle's normal (the local distance
+     * between the faces), so that sliding the faces by delta gives r = delta / distance exactly even where a
+     * partner is not straight below its corner (faces of different resolutions); at least half the shell's
+     * thickness, so that a partner met almost sideways cannot make the element arbitrarily stiff.
+     */
+    private static double leverArm(Vec3 column, Vec3 normal, double thicknessM) {
+        return Math.max(Math.abs(column.dot(normal)), 0.5 * thicknessM);
     }
 
     /** Node a of the element: 0..2 the upper corners, 3..5 their partners on the lower face. */

@@ -116,12 +116,12 @@ public final class ShellNetwork {
                 continue;
             }
             int[] q = new int[3];
-            boolean columns = true;
-            for (int k = 0; k < 3 && columns; k++) {
+            boolean paired = true;
+            for (int k = 0; k < 3 && paired; k++) {
                 q[k] = s.partner(c[k]);
-                columns = q[k] >= 0 && linkPairs.contains(key(c[k], q[k]));
+                paired = q[k] >= 0 && TwoSurfaces.distance(mesh, c[k], q[k]) <= 3 * thickness;
             }
-            if (columns) {
+            if (paired) {
                 double e = (young.youngPa(c[0], c[1]) + young.youngPa(c[1], c[2]) + young.youngPa(c[2], c[0])) / 3;
                 sink.shear(c, q, SHEAR_CORRECTION * e / (2 * (1 + nu)), thickness);
             }

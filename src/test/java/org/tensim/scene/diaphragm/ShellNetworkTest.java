@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.tensim.analysis.FlatMeshes;
@@ -105,6 +106,67 @@ class ShellNetworkTest {
                 assertEquals(expected, w, 1e-6 * expected, (disc ? "disc" : pattern) + ", sliding at " + angle
                         + " rad: shear energy");
             }
+        }
+    }
+
+    /**
+     * Faces of different resolutions (a lower face twice as coarse, as a real mesh's faces may be): several
+     * upper corners pair with one lower vertex and only some carry rigid columns, yet every upper triangle
+     * still gets a shear element, and sliding the faces over each other costs shear energy in every element
+     * and Mindlin-Reissner's {@code kappa G t gamma^2 / 2} per unit area in all (the lever arm is the faces'
+     * distance, not the slanted column's length).
+     * Without it the faces of such a mesh slid freely wherever a triangle lacked a column.
+     */
+    @Test
+    void facesOfDifferentResolutionsResistSlidingEverywhere() {
+        double l = 0.01;
+        double t = 0.0025;
+        TriangleMesh up = org.tensim.io.mesh.FlatMeshes.square(l, 8);
+        TriangleMesh low = org.tensim.io.mesh.FlatMeshes.square(l, 4);
+        int nu = up.vertexCount();
+        double[] xyz = new double[3 * (nu + low.vertexCount())];
+        int[] tri = new int[3 * (up.triangleCount() + low.triangleCount())];
+        boolean[] upper = new boolean[nu + low.vertexCount()];
+        for (int v = 0; v < nu + low.vertexCount(); v++) {
+            TriangleMesh m = v < nu ? up : low;
+            int w = v < nu ? v : v - nu;
+            xyz[3 * v] = m.coord(w, 0);
+            xyz[3 * v + 1] = m.coord(w, 1);
+            xyz[3 * v + 2] = v < nu ? t : 0;
+            upper[v] = v < nu;
+        }
+        for (int k = 0; k < up.triangleCount(); k++) {
+            for (int c = 0; c < 3; c++) {
+                tri[3 * k + c] = up.corner(k, c);
+            }
+        }
+        for (int k = 0; k < low.triangleCount(); k++) {
+            for (int c = 0; c < 3; c++) {
+                tri[3 * (up.triangleCount() + k) + c] = nu + low.corner(k, 2 - c); // facing down
+            }
+        }
+        TwoSurfaces s = TwoSurfaces.of(new TriangleMesh(xyz, tri), upper);
+        ShellMaterial m = new ShellMaterial(40e3, 0.45, t, 1060);
+        Topology top = ShellNetwork.standalone(s, m, TissueModel.MATERIAL, 1);
+        assertTrue(top.rigidLinks().size() < nu, "only some upper corners carry columns: "
+                + top.rigidLinks().size() + " of " + nu);
+        assertEquals(up.triangleCount(), top.shears().size(), "a shear element on every upper triangle");
+        SystemState st = SystemState.compile(top);
+        double gamma = 1e-3;
+        double kappaG = ShellNetwork.SHEAR_CORRECTION * m.youngPa() / (2 * (1 + m.poisson()));
+        // kappa G t with the shell's thickness as the network takes it (the median distance of paired vertices,
+        // here above t: slanted pairs), the strain with the faces' distance t.
+        double expected = 0.5 * kappaG * s.thicknessM() * gamma * gamma * 4 * l * l;
+        for (double angle : new double[] {0, 0.7, Math.PI / 2}) {
+            double[] x = st.x.clone();
+            for (int v = 0; v < nu; v++) {
+                x[3 * v] += gamma * t * Math.cos(angle);
+                x[3 * v + 1] += gamma * t * Math.sin(angle);
+            }
+            for (int e = 0; e < st.shears.count(); e++) {
+                assertTrue(st.shears.subset(new int[] {e}).energy(x) > 0, "element " + e + " resists the sliding");
+            }
+            assertEquals(expected, st.shears.energy(x), 1e-6 * expected, "sliding at " + angle + " rad: shear energy");
         }
     }
 }
