@@ -40,6 +40,18 @@ public final class ShellNetwork {
         void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM);
     }
 
+    /**
+     * Largest offset of a shear element's pair from the upper vertex's normal, in thicknesses (see
+     * {@link #shearPair}): at 0.5 the spurious shear of a bent element costs at most about its bending energy.
+     */
+    public static final double SHEAR_PAIR_OFFSET = 0.5;
+    /**
+     * Share of the membrane on the prisms' diagonals along the upper edges that no shear element covers
+     * (material model): the 3 % of the model before the shear elements ({@link SandwichShell#SHEAR_SHARE}),
+     * an effective shear modulus of about {@code 0.03 E (t / h)^2}, too soft but free of locking.
+     */
+    public static final double FALLBACK_DIAGONAL_SHARE = 0.03;
+
     /** Mindlin-Reissner's shear correction factor for a homogeneous plate (Reissner 1945; Mindlin 1951). */
     public static final double SHEAR_CORRECTION = 5.0 / 6;
 
@@ -59,6 +71,8 @@ public final class ShellNetwork {
     private final double bendingFactor;
     private final double thickness;
     private final double shearShare = SandwichShell.SHEAR_SHARE;
+    /** Upper edges covered by a transverse shear element (keys as {@link #key}); no diagonals there. */
+    private final Set<Long> shearEdges = new java.util.HashSet<>();
     private final Map<Long, double[]> edgeArea = new HashMap<>();
     private final List<List<Integer>> neighbours = new ArrayList<>();
 
@@ -105,11 +119,14 @@ public final class ShellNetwork {
 
     /**
      * The material model's transverse shear: one element ({@link org.tensim.model.TransverseShear}) per
-     * upper triangle whose three corners carry columns ({@code linkPairs}) to their partners, of shear
+     * upper triangle whose three corners are paired across the thickness by a rigid column ({@code linkPairs})
+     * or near the normal ({@link #shearPair}), of shear
      * modulus {@code kappa G = 5/6 E / (2 (1 + nu))} (E the mean of the triangle's edges', nu the tissue's).
+     * Records the upper edges the elements cover in {@link #shearEdges}.
      */
     private void shear(Sink sink, Set<Long> linkPairs) {
         double nu = material.poisson();
+        double[] normals = SurfaceGeometry.vertexNormals(mesh);
         for (int tr = 0; tr < mesh.triangleCount(); tr++) {
             int[] c = {mesh.corner(tr, 0), mesh.corner(tr, 1), mesh.corner(tr, 2)};
             if (!onOneFace(tr) || !s.isUpper(c[0])) {
@@ -119,13 +136,39 @@ public final class ShellNetwork {
             boolean paired = true;
             for (int k = 0; k < 3 && paired; k++) {
                 q[k] = s.partner(c[k]);
-                paired = q[k] >= 0 && TwoSurfaces.distance(mesh, c[k], q[k]) <= 3 * thickness;
+                paired = q[k] >= 0 && (linkPairs.contains(key(c[k], q[k])) || shearPair(c[k], q[k], normals));
             }
             if (paired) {
                 double e = (young.youngPa(c[0], c[1]) + young.youngPa(c[1], c[2]) + young.youngPa(c[2], c[0])) / 3;
                 sink.shear(c, q, SHEAR_CORRECTION * e / (2 * (1 + nu)), thickness);
+                for (int k = 0; k < 3; k++) {
+                    shearEdges.add(key(c[k], c[(k + 1) % 3]));
+                }
             }
         }
+    }
+
+    /**
+     * Whether upper vertex u and its partner l can carry a shear element: at most 3 thicknesses apart,
+     * and l within {@link #SHEAR_PAIR_OFFSET} thicknesses of u's normal. Why the offset: the element's
+     * shear strain is free of locking when the pairs lie along the normals (no shear under pure bending,
+     * {@link org.tensim.model.TransverseShear}); a pair offset by d along the face picks up a spurious
+     * shear strain of about {@code kappa d} under a curvature kappa, which costs about
+     * {@code 4 (d / t)^2} times the bending energy. The generated shells pair along the normals; a real
+     * mesh whose faces were meshed apart (BodyParts3D: median offset 0.43 t) or a clustered one (0.6 t)
+     * does not everywhere, and there the prisms' diagonals resist the sliding instead ({@link #thickness}).
+     */
+    private boolean shearPair(int u, int l, double[] normals) {
+        double[] c = new double[3];
+        double along = 0;
+        double len2 = 0;
+        for (int d = 0; d < 3; d++) {
+            c[d] = mesh.coord(l, d) - mesh.coord(u, d);
+            along += c[d] * normals[3 * u + d];
+            len2 += c[d] * c[d];
+        }
+        double offset = Math.sqrt(Math.max(0, len2 - along * along));
+        return Math.sqrt(len2) <= 3 * thickness && offset <= SHEAR_PAIR_OFFSET * thickness;
     }
 
     /** A face edge's membrane spring for the whole thickness (Van Gelder), N/m. */
@@ -220,11 +263,12 @@ public final class ShellNetwork {
             PaperShellSprings.thickness(s, area, columnYoungPa, neighbours, springs, linkPairs, linked);
             return;
         }
-        if (model == TissueModel.MATERIAL) {
+        boolean elements = model == TissueModel.MATERIAL;
+        if (elements) {
             shear(springs, linkPairs);
         }
-        SandwichShell sandwich = model == TissueModel.MATERIAL
-                ? SandwichShell.ofElements(material, thickness, shearShare) : SandwichShell.of(material, thickness);
+        SandwichShell sandwich = elements
+                ? SandwichShell.ofElements(material, thickness, FALLBACK_DIAGONAL_SHARE) : SandwichShell.of(material, thickness);
         int nv = mesh.vertexCount();
         boolean[] columnDone = new boolean[nv];
         for (int u = 0; u < nv; u++) {
@@ -234,7 +278,8 @@ public final class ShellNetwork {
             for (int j : neighbours.get(u)) {
                 int l = s.partner(j);
                 double a = edgeArea.get(key(u, j))[0];
-                if (!s.isUpper(j) || l < 0 || a == 0 || linkPairs.contains(key(u, l)) || sandwich.diagonalShare() == 0) {
+                if (!s.isUpper(j) || l < 0 || a == 0 || linkPairs.contains(key(u, l))
+                        || (elements && shearEdges.contains(key(u, j)))) {
                     continue;
                 }
                 double e = TwoSurfaces.distance(mesh, u, j);

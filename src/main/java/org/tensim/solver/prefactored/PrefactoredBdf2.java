@@ -105,6 +105,16 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         return this;
     }
 
+    /** Newton iterations per step. */
+    public int newtonIterations() {
+        return newtonIterations;
+    }
+
+    /** Cap on CG iterations per Newton iteration. */
+    public int krylovIterations() {
+        return krylovIterations;
+    }
+
     /** Cap on CG iterations per Newton iteration (>= 1). */
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
