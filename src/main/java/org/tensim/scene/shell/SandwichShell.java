@@ -11,7 +11,8 @@ package org.tensim.scene.shell;
  * the faces have the material's nu, so {@code c = t^2 / (6 s^2)}; the mid-surface triangle (corners
  * at the midpoints of each upper node and its partner) carries {@code 1 - 2c - d} without bending
  * stiffness (bending leaves the mid-surface unstretched to first order); the diagonals carry
- * {@code d = }{@link #SHEAR_SHARE} (0: the transverse shear elements resist the faces' sliding). The paragraphs below describe the
+ * {@code d = }{@link #SHEAR_SHARE} (0: the transverse shear elements resist the faces' sliding; where a
+ * mesh's pairs cannot carry one, the diaphragm's shell keeps diagonals, {@code ShellNetwork.FALLBACK_DIAGONAL_SHARE}). The paragraphs below describe the
  * edge-spring identification ({@link #of}, the springs model).
  *
  * <p><b>Bending.</b> Two faces each of membrane modulus {@code c E t} (a spring network, whose own
