@@ -51,7 +51,7 @@ public final class SceneRun {
         if (scene.equals("diaphragm")) {
             f.addAll(List.of("dome_excursion_mm", "apex_descent_mm", "ap_extent_change_mm",
                     "transverse_extent_change_mm", "vertical_extent_change_mm", "ap_extent_change_all_nodes_mm",
-                    "transverse_extent_change_all_nodes_mm", "thorax_vertical_change_mm"));
+                    "transverse_extent_change_all_nodes_mm", "thorax_vertical_change_mm", "largest_descent_mm"));
         } else {
             f.addAll(List.of("mss_peak_y_m", "ts_peak_y_m"));
         }

@@ -31,6 +31,8 @@ public final class BreathingMetrics implements StepListener {
     private double apexMax = Double.NEGATIVE_INFINITY;
     private double apexAtExp = Double.NaN;
     private double apexAtInsp = Double.NaN;
+    private double[] heightsExp;
+    private double largestDescent = Double.NaN;
 
     /**
      * @param runSeconds length of the run, s (> 0); the breathing is measured only when the run reaches
@@ -69,11 +71,19 @@ public final class BreathingMetrics implements StepListener {
             extentsExp = extents(s, null);
             originsExp = extents(s, origin);
             apexAtExp = s.x[3 * apex + 2];
+            heightsExp = new double[nodes]; // once per run, at the measured cycle's start
+            for (int i = 0; i < nodes; i++) {
+                heightsExp[i] = s.x[3 * i + 2];
+            }
         }
         if (extentsInsp == null && t >= inspirationEnd - 1e-12) {
             extentsInsp = extents(s, null);
             originsInsp = extents(s, origin);
             apexAtInsp = s.x[3 * apex + 2];
+            largestDescent = Double.NEGATIVE_INFINITY;
+            for (int i = 0; i < nodes; i++) {
+                largestDescent = Math.max(largestDescent, heightsExp[i] - s.x[3 * i + 2]);
+            }
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
             double z = s.x[3 * apex + 2];
@@ -148,6 +158,15 @@ public final class BreathingMetrics implements StepListener {
         return extentsInsp[2] - extentsExp[2];
     }
 
+    /**
+     * The largest descent of any diaphragm node from end-expiration to end-inspiration, m (positive
+     * down). On the 10-ring double dome it is 1.76 times the dome excursion;
+     * far more means that a region has snapped through (inverted) under the muscle's load.
+     */
+    public double largestDescentM() {
+        return largestDescent;
+    }
+
     /** Extents {x, y, z} at end-expiration, m. */
     public double[] extentsAtExpiration() {
         return extentsExp.clone();
@@ -165,6 +184,7 @@ public final class BreathingMetrics implements StepListener {
             f.put("ap_extent_change_mm", 1e3 * apChangeM());
             f.put("transverse_extent_change_mm", 1e3 * transverseChangeM());
             f.put("vertical_extent_change_mm", 1e3 * verticalChangeM());
+            f.put("largest_descent_mm", 1e3 * largestDescentM());
             f.put("ap_extent_change_all_nodes_mm", 1e3 * apChangeAllM());
             f.put("transverse_extent_change_all_nodes_mm", 1e3 * transverseChangeAllM());
             f.put("thorax_vertical_change_mm", -1e3 * apexDescentM());
