@@ -50,7 +50,8 @@ public final class CalibrationReader {
     }
 
     private CalibrationSpec spec(JsonNode root) throws SpecException {
-        r.allowOnly(root, "", Set.of("scene", "mesh", "boxes", "fixed", "solver", "fit", "optimizer", "targets"));
+        r.allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "fixed", "solver", "fit", "optimizer",
+                "targets"));
         RunSetup setup = r.setup(root);
         JsonNode fit = root.get("fit");
         if (fit == null || !fit.isObject() || fit.size() == 0) {

@@ -20,6 +20,8 @@ import java.util.Map;
  * @param rings       rings per face of the generated double dome (when there is no mesh file)
  * @param boxesFile   rib and sternum boxes (millimetres, BodyParts3D frame), or null for the project's parametric
  *                    rib cage (the GUI's default)
+ * @param muscleLoad  diaphragm muscle load model as on the command line ({@code pressure}, the default,
+ *                    {@code fibres}, {@code paper-nodes}); null for the default
  * @param integrator  integrator name, as the GUI's (e.g. {@code rk2}, {@code implicit-euler-cg1e-3})
  * @param dtS         time step, s; 0 for the scene's own (see {@link SceneRun})
  * @param seconds     simulated time of each run, s
@@ -27,7 +29,7 @@ import java.util.Map;
  * @param measures    extra measures taken during each run; they add fields to the summary
  */
 public record RunSetup(String scene, String meshFile, String units, double thicknessMm, int rings, String boxesFile,
-        String integrator, double dtS, double seconds, Map<String, Double> fixed, List<Measure> measures)
+        String muscleLoad, String integrator, double dtS, double seconds, Map<String, Double> fixed, List<Measure> measures)
         implements Serializable {
     private static final long serialVersionUID = 1L;
 
@@ -38,14 +40,15 @@ public record RunSetup(String scene, String meshFile, String units, double thick
 
     /** The same setup with other measures (calibration adds its targets'). */
     public RunSetup withMeasures(List<Measure> m) {
-        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, integrator, dtS, seconds, fixed, m);
+        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, muscleLoad, integrator, dtS, seconds,
+                fixed, m);
     }
 
     /** The same setup with more fixed values (they replace existing ones with the same key). */
     public RunSetup withFixed(Map<String, Double> more) {
         Map<String, Double> f = new LinkedHashMap<>(fixed);
         f.putAll(more);
-        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, integrator, dtS, seconds, f,
+        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, muscleLoad, integrator, dtS, seconds, f,
                 measures);
     }
 
@@ -54,6 +57,7 @@ public record RunSetup(String scene, String meshFile, String units, double thick
         if (!scene.equals("diaphragm")) {
             return scene;
         }
-        return meshFile != null ? "diaphragm mesh " + meshFile : "generated double dome, " + rings + " rings";
+        String g = meshFile != null ? "diaphragm mesh " + meshFile : "generated double dome, " + rings + " rings";
+        return muscleLoad == null ? g : g + ", muscle load " + muscleLoad;
     }
 }

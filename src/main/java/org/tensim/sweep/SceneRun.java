@@ -161,10 +161,10 @@ public final class SceneRun {
 
     private static SceneFactory factory(RunSetup s) {
         String key = s.scene() + "|" + s.meshFile() + "|" + s.units() + "|" + s.thicknessMm() + "|" + s.rings() + "|"
-                + s.boxesFile();
+                + s.boxesFile() + "|" + s.muscleLoad();
         return FACTORIES.computeIfAbsent(key, k -> GuiScenes.factory(s.scene(), new GuiScenes.Source(
                 s.meshFile() == null ? null : Path.of(s.meshFile()), s.units(), s.thicknessMm(), s.rings(),
-                s.boxesFile() == null ? null : Path.of(s.boxesFile()))));
+                s.boxesFile() == null ? null : Path.of(s.boxesFile()), s.muscleLoad())));
     }
 
     private static String message(Throwable e) {

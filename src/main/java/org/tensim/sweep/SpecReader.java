@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.Set;
 import org.tensim.app.gui.GuiScenes;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
 
 /**
@@ -70,7 +71,8 @@ public final class SpecReader {
 
     /** A sweep spec from its JSON object. */
     public SweepSpec sweep(JsonNode root) throws SpecException {
-        allowOnly(root, "", Set.of("scene", "mesh", "boxes", "parameters", "sampling", "fixed", "solver", "outputs"));
+        allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "parameters", "sampling", "fixed", "solver",
+                "outputs"));
         RunSetup setup = setup(root);
         SweepSpec.Sampling sampling = sampling(root.get("sampling"));
         JsonNode params = root.get("parameters");
@@ -131,6 +133,18 @@ public final class SpecReader {
         }
         // No boxes: the project's parametric rib cage (as in the GUI).
         Path boxes = root.has("boxes") ? existing("boxes", text(root, "boxes", null)) : null;
+        String muscleLoad = null;
+        if (root.has("muscleLoad")) {
+            if (!scene.equals("diaphragm")) {
+                throw fail("muscleLoad", root.get("muscleLoad"), "no muscleLoad: scene '" + scene + "' has no muscle");
+            }
+            muscleLoad = text(root, "muscleLoad", null);
+            try {
+                BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad);
+            } catch (IllegalArgumentException e) {
+                throw fail("muscleLoad", root.get("muscleLoad"), e.getMessage());
+            }
+        }
         JsonNode solver = root.get("solver");
         String integrator = "rk2";
         double dt = 0;
@@ -167,7 +181,8 @@ public final class SpecReader {
                 fixed.put(e.getKey(), v);
             }
         }
-        return new RunSetup(scene, file, units, thicknessMm, rings, boxes == null ? null : boxes.toString(), integrator,
+        return new RunSetup(scene, file, units, thicknessMm, rings, boxes == null ? null : boxes.toString(), muscleLoad,
+                integrator,
                 dt, seconds, fixed,
                 List.of());
     }

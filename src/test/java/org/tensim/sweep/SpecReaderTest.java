@@ -54,6 +54,7 @@ class SpecReaderTest {
         "unknown integrator | \"parameters\": {\"forceAmplitudeN\": {\"values\": [1]}}, \"solver\": {\"integrator\": \"rk9\"} | solver.integrator",
         "negative seconds | \"parameters\": {\"forceAmplitudeN\": {\"values\": [1]}}, \"solver\": {\"seconds\": -1} | solver.seconds",
         "mesh on the cube | \"parameters\": {\"forceAmplitudeN\": {\"values\": [1]}}, \"mesh\": {\"rings\": 8} | mesh",
+        "muscle load on the cube | \"parameters\": {\"forceAmplitudeN\": {\"values\": [1]}}, \"muscleLoad\": \"fibres\" | muscleLoad",
     })
     void refusesNamingTheField(String what, String body, String field) throws IOException {
         String outputs = "\"outputs\": [\"mss_peak_y_m\"]";
@@ -62,6 +63,18 @@ class SpecReaderTest {
         assertTrue(e.getMessage().contains("'" + field + "'"), what + ": message names " + field + ": "
                 + e.getMessage());
         assertTrue(e.getMessage().startsWith(f.toString()), "message names the file: " + e.getMessage());
+    }
+
+    @Test
+    void readsTheDiaphragmsMuscleLoadAndRefusesAnUnknownOne() throws Exception {
+        String body = "\"scene\": \"diaphragm\", \"mesh\": {\"rings\": 6}, \"parameters\":"
+                + " {\"muscleActionPa\": {\"values\": [15000]}}, \"outputs\": [\"dome_excursion_mm\"]";
+        assertEquals("fibres", SpecReader.readSweep(spec("{" + body + ", \"muscleLoad\": \"fibres\"}")).setup()
+                .muscleLoad());
+        assertEquals(null, SpecReader.readSweep(spec("{" + body + "}")).setup().muscleLoad(), "the default, pressure");
+        Path f = spec("{" + body + ", \"muscleLoad\": \"fibers\"}");
+        String m = assertThrows(SpecReader.SpecException.class, () -> SpecReader.readSweep(f)).getMessage();
+        assertTrue(m.contains("'muscleLoad'") && m.contains("fibres") && m.contains("pressure"), m);
     }
 
     @Test

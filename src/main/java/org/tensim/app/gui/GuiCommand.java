@@ -48,6 +48,12 @@ public final class GuiCommand implements Callable<Integer> {
                     + " rib cage, placed on the generated dome)")
     Path boxes;
 
+    @Option(names = "--muscle-load", paramLabel = "MODEL",
+            description = "diaphragm muscle load: pressure (vertical traction per unit area, 2.6 kPa), fibres (active"
+                    + " tension along the muscle fibres, 15 kPa) or paper-nodes (the paper's per-node forces);"
+                    + " as `tensim diaphragm --muscle-load` (default: pressure)")
+    String muscleLoad;
+
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
     Path preset;
 
@@ -115,7 +121,8 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
         }
         // Bad names and files fail here, before any window.
-        SceneFactory factory = GuiScenes.factory(scene, new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes));
+        SceneFactory factory = GuiScenes.factory(scene,
+                new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad));
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);

@@ -6,6 +6,7 @@ import java.util.List;
 import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
@@ -23,8 +24,15 @@ public final class GuiScenes {
      * @param thicknessMm thickness given to a single-surface mesh, mm
      * @param rings       resolution of the generated double dome, rings per face
      * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
+     * @param muscleLoad  the diaphragm's muscle load model as on the command line ({@code pressure},
+     *                    {@code fibres}, {@code paper-nodes}), or null for the default (pressure)
      */
-    public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
+    public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes, String muscleLoad) {
+        /** With the default muscle load. */
+        public Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
+            this(mesh, units, thicknessMm, rings, boxes, null);
+        }
+
         /**
          * The defaults: the generated dome at the resolution the resolution study picked
          * ({@link ResolutionPick}, meshes/resolution-pick.json; the paper's 43 rings when there is none),
@@ -59,6 +67,10 @@ public final class GuiScenes {
     public static SceneFactory factory(String name, Source src) {
         switch (name) {
             case "cube":
+                if (src.muscleLoad() != null) {
+                    throw new IllegalArgumentException("--muscle-load " + src.muscleLoad() + ": the cube has no muscle;"
+                            + " --muscle-load applies to the diaphragm");
+                }
                 if (src.mesh() != null) {
                     throw new IllegalArgumentException("--mesh " + src.mesh() + ": the cube scene is built in and reads"
                             + " no mesh; --mesh applies to the diaphragm");
@@ -73,8 +85,12 @@ public final class GuiScenes {
                 }
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());
+                BoundaryConditions bc = BoundaryConditions.defaults();
+                if (src.muscleLoad() != null && name.equals("diaphragm")) {
+                    bc = bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, src.muscleLoad()));
+                }
                 return DiaphragmViewScene.factory(src.mesh(), MeshUnits.parse(src.units()), src.thicknessMm() * 1e-3,
-                        src.rings(), src.boxes());
+                        src.rings(), src.boxes(), bc);
             default:
                 throw new IllegalArgumentException("--scene '" + name + "' is not a scene; expected one of " + names());
         }

@@ -9,6 +9,7 @@ import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Vec3;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -132,6 +133,16 @@ public final class DiaphragmViewScene implements ViewScene {
      *                   parametric rib cage
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
+        return factory(mesh, units, thicknessM, rings, boxes, BoundaryConditions.defaults());
+    }
+
+    /**
+     * As {@link #factory(Path, MeshUnits, double, int, Path)} with the attachment and muscle-load models; the
+     * muscle action's default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 15 kPa of active fibre
+     * stress, 2.6 kPa of pressure).
+     */
+    public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes,
+            BoundaryConditions bc) {
         return new SceneFactory() {
             // Read or generated once; every scene, the first included, is then built from these surfaces by
             // the same call, outside the lock: the same values give the same scene whatever was built before,
@@ -161,10 +172,10 @@ public final class DiaphragmViewScene implements ViewScene {
                 double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
                 BreathingCycle cycle = new BreathingCycle(period, EXPIRATION_RATIO);
                 DiaphragmControls controls = new DiaphragmControls(values.getOrDefault(RIB_AMPLITUDE, 1.0),
-                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.DEFAULT_MUSCLE_PA));
+                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.defaultMusclePa(bc.muscleLoad())));
                 try {
                     DiaphragmScene s = DiaphragmScene.build(surfaces(), DiaphragmSetup.boxes(boxes), P, cycle,
-                            controls, null);
+                            controls, null, bc);
                     return new DiaphragmViewScene(s, tensegrityTendon);
                 } catch (IOException e) {
                     throw new UncheckedIOException(e.getMessage(), e);

@@ -1,0 +1,34 @@
+package org.tensim.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A sweep's {@code muscleLoad} reaches the scene: with the active fibre tension (15 kPa, its default
+ * amplitude) the coarse double dome descends by a physiological amount, while the same 15 kPa as the
+ * vertical traction of the default load drives it several times as far.
+ */
+class SceneRunMuscleLoadTest {
+    private static RunSetup setup(String muscleLoad) {
+        return new RunSetup("diaphragm", null, "mm", 2.5, 6, null, muscleLoad, "implicit-euler-cg1e-3", 0.01, 1.34,
+                Map.of(), List.of());
+    }
+
+    @Test
+    void theFibresLoadIsTheOneRun() {
+        List<String> names = List.of("muscleActionPa");
+        Point p = new Point(0, new double[] {15000});
+        PointResult fibres = SceneRun.run(setup("fibres"), names, p);
+        PointResult pressure = SceneRun.run(setup(null), names, p);
+        assertEquals(PointResult.OK, fibres.status(), fibres.message());
+        double f = fibres.fields().get("dome_excursion_mm");
+        assertTrue(f > 8 && f < 30, "fibres at 15 kPa: dome excursion " + f + " mm");
+        double q = PointResult.OK.equals(pressure.status()) ? pressure.fields().get("dome_excursion_mm")
+                : Double.POSITIVE_INFINITY;
+        assertTrue(q > 2 * f, "the same 15 kPa as a vertical traction: " + q + " mm against " + f + " mm");
+    }
+}
