@@ -86,8 +86,13 @@ public final class GuiScenes {
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());
                 BoundaryConditions bc = BoundaryConditions.defaults();
-                if (src.muscleLoad() != null && name.equals("diaphragm")) {
-                    bc = bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, src.muscleLoad()));
+                if (src.muscleLoad() != null) {
+                    try {
+                        bc = bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
+                                src.muscleLoad()));
+                    } catch (IllegalArgumentException e) {
+                        throw new IllegalArgumentException("--muscle-load: " + e.getMessage(), e);
+                    }
                 }
                 return DiaphragmViewScene.factory(src.mesh(), MeshUnits.parse(src.units()), src.thicknessMm() * 1e-3,
                         src.rings(), src.boxes(), bc);

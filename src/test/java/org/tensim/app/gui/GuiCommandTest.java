@@ -42,6 +42,13 @@ class GuiCommandTest {
         StringWriter err4 = new StringWriter();
         assertEquals(2, run(err4, "gui", "--scene", "diaphragm", "--resolution", "1"));
         assertTrue(err4.toString().contains("--resolution"), err4.toString());
+        StringWriter err5 = new StringWriter();
+        assertEquals(2, run(err5, "gui", "--scene", "diaphragm", "--muscle-load", "fibers"));
+        assertTrue(err5.toString().contains("--muscle-load") && err5.toString().contains("'fibers'")
+                && err5.toString().contains("fibres"), err5.toString());
+        StringWriter err6 = new StringWriter();
+        assertEquals(2, run(err6, "gui", "--scene", "cube", "--muscle-load", "fibres"));
+        assertTrue(err6.toString().contains("--muscle-load") && err6.toString().contains("cube"), err6.toString());
     }
 
     @Test
