@@ -41,6 +41,23 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
     public static final RealTimeSetting DEFAULT_MESH = new RealTimeSetting("rk2", 0, 1, 1, 2, 0, 0, 0, 0.005,
             "2026-11-23 18:00-18:15 UTC, load average 10-12 on 2 cores; 0.014 of real time per CPU second");
 
+    /**
+     * The default mesh's setting with the muscle's active fibre tension ({@code --muscle-load fibres}), from the
+     * study of {@link #measured()}: without the pressure's compressed muscle and its fast event at 1.0-1.1 s, BDF2
+     * at 5 ms with its default iterations is within the tolerance (4.5 % at end-inspiration, 4.8 % at the worst
+     * moment, 0.75 s), 12 times faster than RK2 by the wall clock in the same study; at 10 and 20 ms it is 6.4-8.3 %
+     * off (docs/diaphragm.md, "Active fibre tension: measured").
+     */
+    public static final RealTimeSetting DEFAULT_MESH_FIBRES = new RealTimeSetting("bdf2", 0.005,
+            PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS, PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, 2, 0.0448, 0.0480,
+            0.06, 0.244, "2026-11-23 21:04-21:06 UTC, --muscle-load fibres, load average 1.0-1.3 on 2 cores;"
+                    + " 0.206 of real time per CPU second");
+
+    /** The setting measured for a muscle-load model as on the command line (the pressure's for any but fibres). */
+    public static RealTimeSetting forMuscleLoad(String model) {
+        return "fibres".equals(model) ? DEFAULT_MESH_FIBRES : DEFAULT_MESH;
+    }
+
     /** A new integrator of this setting. */
     public Integrator newIntegrator() {
         Integrator in = Integrators.create(integrator);
