@@ -143,8 +143,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic: all cores from "
-                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, membrane triangles and shear"
-                    + " elements together, else 1 (default: ${DEFAULT-VALUE})")
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
     int threads = 0;
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
@@ -352,9 +351,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
         int n = threads > 0 ? threads
                 : setting != null ? org.tensim.solver.parallel.Parallelism.availableCores()
-                        : org.tensim.solver.parallel.Parallelism.automaticThreads(built.scene().topology().springs()
-                                .size() + built.scene().topology().triangles().size()
-                                + built.scene().topology().shears().size());
+                        : org.tensim.solver.parallel.Parallelism.automaticThreads(
+                                built.scene().topology().springs().size());
         if (setting != null) {
             System.out.println("realtime: " + setting.describe()
                     + (mesh.equals(DiaphragmSetup.DEFAULT_MESH) ? "" : "; this mesh (" + mesh + ") was not measured"));

@@ -97,9 +97,7 @@ class DiaphragmCommandTest {
         // displacements.csv: a header and one row per diaphragm node per time (two times by default)
         long rows = Files.lines(out.resolve("displacements.csv")).count() - 1;
         assertEquals(2L * ((Number) s.get("diaphragm_nodes")).longValue(), rows);
-        int elements = ((Number) s.get("springs")).intValue() + ((Number) s.get("membrane_triangles")).intValue()
-                + ((Number) s.get("shear_elements")).intValue();
-        assertEquals(elements >= Parallelism.AUTO_PARALLEL_SPRINGS
+        assertEquals(((Number) s.get("springs")).intValue() >= Parallelism.AUTO_PARALLEL_SPRINGS
                 ? Parallelism.availableCores() : 1, ((Number) s.get("threads")).intValue(),
                 "automatic: one thread for a small scene, all cores from the threshold");
 

@@ -54,7 +54,7 @@ final class BodyThreads {
     }
 
     private Parallelism install(Simulation s) {
-        int n = requested > 0 ? requested : Parallelism.automaticThreads(s.state());
+        int n = requested > 0 ? requested : Parallelism.automaticThreads(s.state().springCount());
         threads = Math.max(threads, n);
         return n > 1 ? Parallelism.install(s, n) : null;
     }

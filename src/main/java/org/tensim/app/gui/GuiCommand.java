@@ -86,8 +86,7 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic, as diaphragm --threads 0: all cores from "
-                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, triangles and shear"
-                    + " elements, else 1"
+                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1"
                     + " (default: ${DEFAULT-VALUE})")
     int threads = 0;
 

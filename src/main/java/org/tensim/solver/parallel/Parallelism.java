@@ -87,11 +87,9 @@ public final class Parallelism implements AutoCloseable {
     }
 
     /**
-     * Force elements (springs, membrane triangles and transverse shear elements together) from which
-     * {@link #automaticThreads(int)} uses every core: the real-time study (docs/diaphragm.md) measured two
-     * threads 11-24 % faster at 24,733 springs (20 rings, when springs were all the elements) and up, and a
-     * third slower at 12,144 (14 rings) and below. Counting springs alone, the default diaphragm (18,556
-     * springs, 33,132 triangles, 10,903 shear elements) fell to one thread once its shell became triangles.
+     * Springs from which {@link #automaticThreads(int)} uses every core: the real-time study
+     * (docs/diaphragm.md) measured two threads 11-24 % faster at 24,733 springs (20 rings) and
+     * up, and a third slower at 12,144 (14 rings) and below.
      */
     public static final int AUTO_PARALLEL_SPRINGS = 20_000;
 
@@ -101,17 +99,11 @@ public final class Parallelism implements AutoCloseable {
     }
 
     /**
-     * The automatic thread count of a scene with {@code elements} force elements (springs, membrane
-     * triangles, shear elements): every core from {@link #AUTO_PARALLEL_SPRINGS}, else 1 (below it a
-     * dispatch costs more than it saves).
+     * The automatic thread count of a scene with {@code springs} springs: every core from
+     * {@link #AUTO_PARALLEL_SPRINGS}, else 1 (below it a dispatch costs more than it saves).
      */
-    public static int automaticThreads(int elements) {
-        return elements >= AUTO_PARALLEL_SPRINGS ? availableCores() : 1;
-    }
-
-    /** {@link #automaticThreads(int)} of a compiled state: its springs, triangles and shear elements. */
-    public static int automaticThreads(org.tensim.solver.SystemState s) {
-        return automaticThreads(s.springCount() + s.triangleCount() + s.shears.count());
+    public static int automaticThreads(int springs) {
+        return springs >= AUTO_PARALLEL_SPRINGS ? availableCores() : 1;
     }
 
     public int threads() {
