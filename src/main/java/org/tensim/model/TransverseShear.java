@@ -70,7 +70,7 @@ public final class TransverseShear {
         }
         double[] cot = new double[3];
         double[] s = new double[3];
-        Vec3 normal = cross(rest[1].minus(rest[0]), rest[2].minus(rest[0])).normalized();
+        Vec3 normal = rest[1].minus(rest[0]).cross(rest[2].minus(rest[0])).normalized();
         for (int k = 0; k < 3; k++) {
             Vec3 a = rest[k];
             Vec3 b = rest[(k + 1) % 3];
@@ -83,7 +83,7 @@ public final class TransverseShear {
             Vec3 o = rest[(k + 2) % 3];
             Vec3 u = a.minus(o);
             Vec3 w = b.minus(o);
-            double cross = cross(u, w).norm();
+            double cross = u.cross(w).norm();
             if (!(cross > 1e-12 * u.norm() * w.norm()) || !(s[k] > 0)) {
                 throw new IllegalArgumentException(name + " is degenerate: its upper corners are collinear or a "
                         + "column has zero length (" + s[k] + " m); expected a triangle and columns of positive size");
@@ -100,10 +100,6 @@ public final class TransverseShear {
             }
         }
         this.nodes = nodes.clone();
-    }
-
-    private static Vec3 cross(Vec3 u, Vec3 w) {
-        return new Vec3(u.y() * w.z() - u.z() * w.y(), u.z() * w.x() - u.x() * w.z(), u.x() * w.y() - u.y() * w.x());
     }
 
     /**

@@ -53,6 +53,11 @@ public record Vec3(double x, double y, double z) {
         return x * o.x + y * o.y + z * o.z;
     }
 
+    /** Returns the cross product {@code this x o} as a new vector. */
+    public Vec3 cross(Vec3 o) {
+        return new Vec3(y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x);
+    }
+
     public double distance(Vec3 o) {
         return minus(o).norm();
     }

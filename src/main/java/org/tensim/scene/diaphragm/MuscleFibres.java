@@ -76,12 +76,12 @@ final class MuscleFibres {
                 continue;
             }
             Vec3 g = y[0].plus(y[1]).plus(y[2]).times(1.0 / 3);
-            Vec3 n = cross(y[1].minus(y[0]), y[2].minus(y[0])).normalized();
+            Vec3 n = y[1].minus(y[0]).cross(y[2].minus(y[0])).normalized();
             Vec3 r = new Vec3(g.x() - cx, g.y() - cy, 0);
             if (!(r.norm() > 0)) {
                 continue;
             }
-            Vec3 f = cross(n, cross(new Vec3(0, 0, 1), r.normalized()));
+            Vec3 f = n.cross(new Vec3(0, 0, 1).cross(r.normalized()));
             if (f.norm() < MIN_MERIDIAN) {
                 continue;
             }
@@ -115,9 +115,5 @@ final class MuscleFibres {
             }
         }
         throw new IllegalStateException("unreachable: a cut triangle has a corner alone on its side");
-    }
-
-    private static Vec3 cross(Vec3 a, Vec3 b) {
-        return new Vec3(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(), a.x() * b.y() - a.y() * b.x());
     }
 }
