@@ -65,9 +65,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double ribAmplitude = 1;
 
     @Option(names = "--muscle-force", paramLabel = "PA",
-            description = "peak muscle action, Pa, 0..20000: force per unit area of diaphragm (--muscle-load"
-                    + " pressure, paper-nodes; default " + DiaphragmSetup.DEFAULT_MUSCLE_PA + ") or active fibre"
-                    + " stress (fibres; default " + DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA + ")")
+            description = "peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
+                    + " default " + DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA + ") or force per unit area of diaphragm"
+                    + " (pressure, paper-nodes; default " + DiaphragmSetup.DEFAULT_MUSCLE_PA + ")")
     Double musclePa;
 
     @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: ${DEFAULT-VALUE})")
@@ -97,10 +97,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "pressure (action-line traction integrated over the muscle's area), paper-nodes (the"
-                    + " paper's per-node forces) or fibres (active tension along the fibres to the central tendon)"
-                    + " (default: ${DEFAULT-VALUE})")
-    String muscleLoad = "pressure";
+            description = "fibres (active tension along the fibres to the central tendon, 15 kPa of fibre stress),"
+                    + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
+                    + " paper's per-node forces, 2.6 kPa) (default: ${DEFAULT-VALUE})")
+    String muscleLoad = BoundaryConditions.DEFAULT_MUSCLE_LOAD;
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
             description = "mesh cleaning: vertices closer than this are merged, mm (default: ${DEFAULT-VALUE})")

@@ -21,7 +21,7 @@ final class DiaphragmBenchScene {
     static DiaphragmScene build() throws Exception {
         DiaphragmParameters p = DiaphragmParameters.defaults();
         BreathingCycle cycle = new BreathingCycle(4, 2);
-        DiaphragmControls controls = new DiaphragmControls(1, DiaphragmSetup.DEFAULT_MUSCLE_PA);
+        DiaphragmControls controls = new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa());
         if (!Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH)) {
             return DiaphragmSetup.generated(43, null, p, cycle, controls).scene();
         }

@@ -3,6 +3,7 @@ package org.tensim.bench;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
@@ -29,7 +30,8 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
         double endError,
         double worstError, double apexDifferenceMm, double realtimeFactor, String measured) {
     /**
-     * The default mesh's setting, from the study of {@link #measured()} (membrane triangles, damped transverse
+     * The default mesh's setting with the pressure load ({@code --muscle-load pressure} or {@code paper-nodes}),
+     * from the study of {@link #measured()} (membrane triangles, damped transverse
      * shear elements, the shear's sliding modes in BDF2's prefactored matrix): every large-step configuration
      * measured ends the inspiration close to RK2 (BDF2 at 5 ms: 2.0 %; at 5 ms with 2 Newton x 8 CG: 0.06 %; at
      * 10 or 20 ms with 2 Newton x 8 CG: 1.7-2.0 %), but none stays within the tolerance at the worst moment:
@@ -42,7 +44,8 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
             "2026-11-23 18:00-18:15 UTC, load average 10-12 on 2 cores; 0.014 of real time per CPU second");
 
     /**
-     * The default mesh's setting with the muscle's active fibre tension ({@code --muscle-load fibres}), from the
+     * The default mesh's setting with the muscle's active fibre tension ({@code --muscle-load fibres}, the default
+     * load), from the
      * study of {@link #measured()}: without the pressure's compressed muscle and its fast event at 1.0-1.1 s, BDF2
      * at 5 ms with its default iterations is within the tolerance (4.5 % at end-inspiration, 4.8 % at the worst
      * moment, 0.75 s), 12 times faster than RK2 by the wall clock in the same study; at 10 and 20 ms it is 6.4-8.3 %
@@ -53,9 +56,14 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
             0.06, 0.244, "2026-11-23 21:04-21:06 UTC, --muscle-load fibres, load average 1.0-1.3 on 2 cores;"
                     + " 0.206 of real time per CPU second");
 
-    /** The setting measured for a muscle-load model as on the command line (the pressure's for any but fibres). */
+    /**
+     * The setting measured for a muscle-load model as on the command line: the fibres' for {@code fibres} or null
+     * (the default load, {@link BoundaryConditions#defaults()}), the pressure's for the others.
+     */
     public static RealTimeSetting forMuscleLoad(String model) {
-        return "fibres".equals(model) ? DEFAULT_MESH_FIBRES : DEFAULT_MESH;
+        String m = model == null ? BoundaryConditions.DEFAULT_MUSCLE_LOAD : model;
+        return m.equals(BoundaryConditions.name(BoundaryConditions.MuscleLoad.FIBRES)) ? DEFAULT_MESH_FIBRES
+                : DEFAULT_MESH;
     }
 
     /** A new integrator of this setting. */

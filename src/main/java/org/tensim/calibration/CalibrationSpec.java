@@ -9,6 +9,7 @@ import org.tensim.sweep.RunSetup;
  * <pre>
  * {
  *   "scene": "diaphragm", "mesh": { "rings": 8 },
+ *   "muscleLoad": "pressure",     // absent: "fibres", the default (muscleActionPa an active fibre stress)
  *   "solver": { "integrator": "implicit-euler-cg1e-3", "dtS": 0.01, "seconds": 1.4 },
  *   "fixed": { "tissueDampingRatio": 0.9 },
  *   "fit": { "muscleActionPa": { "min": 1000, "max": 5000, "start": 2000 }, ... },
@@ -21,7 +22,8 @@ import org.tensim.sweep.RunSetup;
  * }
  * </pre>
  *
- * @param setup       scene, mesh, solver and fixed values, as a sweep's (the targets' measures added)
+ * @param setup       scene, mesh, muscle load, solver and fixed values, as a sweep's ({@link
+ *                    org.tensim.sweep.SweepSpec}: no muscleLoad means fibres; the targets' measures added)
  * @param free        the parameters fitted, with their bounds and start
  * @param optimizer   CMA-ES settings
  * @param targets     what is fitted

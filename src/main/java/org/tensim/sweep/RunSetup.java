@@ -6,6 +6,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 
 /**
  * What every point of a sweep shares, sent as is to the workers (hence serializable,
@@ -20,8 +21,8 @@ import java.util.Map;
  * @param rings       rings per face of the generated double dome (when there is no mesh file)
  * @param boxesFile   rib and sternum boxes (millimetres, BodyParts3D frame), or null for the project's parametric
  *                    rib cage (the GUI's default)
- * @param muscleLoad  diaphragm muscle load model as on the command line ({@code pressure}, the default,
- *                    {@code fibres}, {@code paper-nodes}); null for the default
+ * @param muscleLoad  diaphragm muscle load model as on the command line ({@code fibres}, the default,
+ *                    {@code pressure}, {@code paper-nodes}); null for the default, fibres
  * @param integrator  integrator name, as the GUI's (e.g. {@code rk2}, {@code implicit-euler-cg1e-3})
  * @param dtS         time step, s; 0 for the scene's own (see {@link SceneRun})
  * @param seconds     simulated time of each run, s
@@ -58,6 +59,7 @@ public record RunSetup(String scene, String meshFile, String units, double thick
             return scene;
         }
         String g = meshFile != null ? "diaphragm mesh " + meshFile : "generated double dome, " + rings + " rings";
-        return muscleLoad == null ? g : g + ", muscle load " + muscleLoad;
+        return g + ", muscle load " + (muscleLoad == null
+                ? BoundaryConditions.DEFAULT_MUSCLE_LOAD + " (default)" : muscleLoad);
     }
 }

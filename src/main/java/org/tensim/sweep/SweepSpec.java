@@ -11,6 +11,7 @@ import java.util.Map;
  * {
  *   "scene": "diaphragm",
  *   "mesh": { "rings": 10 },                  // or { "file": "x.obj", "units": "mm", "thicknessMm": 2.5 }
+ *   "muscleLoad": "pressure",                 // muscleActionPa in Pa of pressure; absent: "fibres", the default
  *   "parameters": {
  *     "muscleActionPa":     { "min": 1000, "max": 4000, "steps": 4 },
  *     "ribAmplitudeFactor": { "values": [0.5, 1, 1.5] }
@@ -24,7 +25,10 @@ import java.util.Map;
  *
  * Parameter names are the scene's tunable parameters, as in the GUI and its presets
  * ({@code ./tensim gui}, docs/gui.md), with their units in their names and their valid
- * ranges from there.
+ * ranges from there. {@code muscleLoad} (diaphragm only) is the muscle-load model as
+ * {@code tensim diaphragm --muscle-load}: {@code fibres} when absent (the default, whose
+ * {@code muscleActionPa} is an active fibre stress, 15 kPa by default), {@code pressure} or
+ * {@code paper-nodes} (a pressure, 2.6 kPa by default).
  *
  * @param setup      what every point shares: scene, mesh, solver, fixed values, measures
  * @param parameters the swept parameters, in column order

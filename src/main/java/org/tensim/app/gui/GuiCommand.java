@@ -49,9 +49,10 @@ public final class GuiCommand implements Callable<Integer> {
     Path boxes;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "diaphragm muscle load: pressure (vertical traction per unit area, 2.6 kPa), fibres (active"
-                    + " tension along the muscle fibres, 15 kPa) or paper-nodes (the paper's per-node forces);"
-                    + " as `tensim diaphragm --muscle-load` (default: pressure)")
+            description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 15 kPa of fibre"
+                    + " stress), pressure (vertical traction per unit area, 2.6 kPa) or paper-nodes (the paper's"
+                    + " per-node forces, 2.6 kPa); as `tensim diaphragm --muscle-load` (default: fibres; last-used"
+                    + " parameters made with another load are then not restored)")
     String muscleLoad;
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
@@ -130,7 +131,7 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
-                GuiScenes.opensInRealTime(scene));
+                GuiScenes.opensInRealTime(scene), muscleLoad != null);
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();
@@ -182,14 +183,25 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime) throws Exception {
+        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, false);
+    }
+
+    /**
+     * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean)}; with {@code loadGiven} (the muscle
+     * load named on the command line) the last-used parameters are restored only when they were tuned with that
+     * load (a preset given with {@code --preset} still applies its own, rebuilding the scene).
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
+            boolean realTime, boolean loadGiven) throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
-                IntegratorCatalog.available());
+                IntegratorCatalog.available(), factory.muscleLoad());
         if (realTime) {
             tuning.setIntegrator(IntegratorCatalog.REAL_TIME);
             tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
         }
-        String note = restoreDir == null ? null : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()));
+        String note = restoreDir == null ? null
+                : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()), loadGiven);
         if (preset != null) {
             try {
                 tuning.apply(PresetFile.read(preset, tuning), preset.toString());
@@ -199,11 +211,12 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // The first scene was made with the defaults: make it again if what was restored needs a new one.
         boolean remake = factory.hasTendonChoice() && !tuning.tensegrityTendon();
+        remake |= tuning.muscleLoad() != null && !tuning.muscleLoad().equals(factory.muscleLoad());
         for (org.tensim.scene.tunable.TunableParameter p : first.parameters()) {
             remake |= p.restarts() && tuning.get(p.key()) != p.defaultValue();
         }
         if (remake) {
-            first = factory.create(tuning.tensegrityTendon(), tuning.snapshot().values());
+            first = factory.create(tuning.tensegrityTendon(), tuning.muscleLoad(), tuning.snapshot().values());
         }
         ViewScene start = first;
         AtomicReference<GuiWindow> w = new AtomicReference<>();
@@ -213,11 +226,24 @@ public final class GuiCommand implements Callable<Integer> {
 
     /** Restores last-used parameters; returns a note for the status bar when they could not be used. */
     static String restore(Tuning tuning, Path file) {
+        return restore(tuning, file, false);
+    }
+
+    /**
+     * As {@link #restore(Tuning, Path)}; with {@code keepLoad} (a muscle load named on the command line) parameters
+     * tuned with another muscle load are left alone, with a note: they would replace the load asked for.
+     */
+    static String restore(Tuning tuning, Path file, boolean keepLoad) {
         if (!Files.exists(file)) {
             return null;
         }
         try {
-            tuning.apply(PresetFile.read(file, tuning), file.toString());
+            Settings s = PresetFile.read(file, tuning);
+            if (keepLoad && s.muscleLoad() != null && !s.muscleLoad().equals(tuning.muscleLoad())) {
+                return "Last-used parameters not restored: they were tuned with muscle load " + s.muscleLoad()
+                        + ", and --muscle-load " + tuning.muscleLoad() + " was given (" + file + ")";
+            }
+            tuning.apply(s, file.toString());
             return null;
         } catch (PresetFile.PresetException | IllegalArgumentException e) {
             // Keep the file for the user to inspect, out of the way of the next save.

@@ -24,8 +24,9 @@ public final class GuiScenes {
      * @param thicknessMm thickness given to a single-surface mesh, mm
      * @param rings       resolution of the generated double dome, rings per face
      * @param boxes       rib and sternum boxes file, or null for the project's parametric rib cage
-     * @param muscleLoad  the diaphragm's muscle load model as on the command line ({@code pressure},
-     *                    {@code fibres}, {@code paper-nodes}), or null for the default (pressure)
+     * @param muscleLoad  the diaphragm's muscle load model as on the command line ({@code fibres},
+     *                    {@code pressure}, {@code paper-nodes}), or null for the default
+     *                    ({@link BoundaryConditions#DEFAULT_MUSCLE_LOAD}, fibres)
      */
     public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes, String muscleLoad) {
         /** With the default muscle load. */

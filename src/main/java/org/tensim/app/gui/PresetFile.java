@@ -18,13 +18,20 @@ import org.tensim.io.Json;
  * <pre>
  * {
  *   "format" : "tensim-gui-preset",
- *   "version" : 1,
- *   "scene" : "cube",
+ *   "version" : 2,
+ *   "scene" : "diaphragm",
  *   "integrator" : "rk2",
  *   "tendon" : "tensegrity",
- *   "parameters" : { "forceAmplitudeN" : 400.0, "timeStepS" : 0.001, ... }
+ *   "muscleLoad" : "fibres",
+ *   "parameters" : { "muscleActionPa" : 15000.0, "timeStepS" : 0.001, ... }
  * }
  * </pre>
+ *
+ * {@code muscleLoad} (version 2, scenes with a muscle only) names the muscle-load model the values were tuned
+ * with, since it sets what {@code muscleActionPa} means (an active fibre stress or a pressure); loading the
+ * preset rebuilds the scene with it, as for the tendon. Version 1 did not record it: every version-1 preset
+ * was made with the then default load, the pressure, and a version-1 preset of a scene with a muscle is read
+ * as {@code "muscleLoad": "pressure"}, so that it gives what it gave when it was saved.
  *
  * Parameter keys carry their unit. A preset may list only some parameters; the
  * others keep their current values. Files are written to a temporary file then
@@ -34,7 +41,9 @@ import org.tensim.io.Json;
  */
 public final class PresetFile {
     public static final String FORMAT = "tensim-gui-preset";
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
+    /** The muscle load every preset of version 1 was made with (the default load until version 2). */
+    static final String VERSION_1_MUSCLE_LOAD = "pressure";
 
     /** A preset that cannot be used; the message names the file, the field and what was expected. */
     public static final class PresetException extends Exception {
@@ -54,6 +63,9 @@ public final class PresetFile {
         root.put("scene", s.scene());
         root.put("integrator", s.integrator());
         root.put("tendon", s.tensegrityTendon() ? "tensegrity" : "mass-spring");
+        if (s.muscleLoad() != null) {
+            root.put("muscleLoad", s.muscleLoad());
+        }
         root.put("parameters", new LinkedHashMap<>(s.values()));
         Json.write(file, root);
     }
@@ -102,7 +114,22 @@ public final class PresetFile {
             throw new IllegalArgumentException(where + ": field 'version' must be a whole number from 1 to " + VERSION
                     + ", got " + version);
         }
+        int presetVersion = version == null ? VERSION : version.asInt();
         String scene = text(root, "scene", where, now.scene());
+        String muscleLoad = now.muscleLoad();
+        if (presetVersion == 1) {
+            if (root.has("muscleLoad")) {
+                throw new IllegalArgumentException(where + ": field 'muscleLoad' needs \"version\": 2 or more, got"
+                        + " version 1 (whose presets were all made with the pressure load)");
+            }
+            muscleLoad = muscleLoad == null ? null : VERSION_1_MUSCLE_LOAD;
+        } else if (root.has("muscleLoad")) {
+            if (muscleLoad == null) {
+                throw new IllegalArgumentException(where + ": field 'muscleLoad': scene '" + current.scene()
+                        + "' has no muscle");
+            }
+            muscleLoad = text(root, "muscleLoad", where, muscleLoad);
+        }
         String integrator = text(root, "integrator", where, now.integrator());
         String tendonText = text(root, "tendon", where, now.tensegrityTendon() ? "tensegrity" : "mass-spring");
         boolean tensegrity;
@@ -141,12 +168,12 @@ public final class PresetFile {
         for (Iterator<String> it = root.fieldNames(); it.hasNext();) {
             String f = it.next();
             if (!f.equals("format") && !f.equals("version") && !f.equals("scene") && !f.equals("integrator")
-                    && !f.equals("tendon") && !f.equals("parameters")) {
+                    && !f.equals("tendon") && !f.equals("muscleLoad") && !f.equals("parameters")) {
                 throw new IllegalArgumentException(where + ": unknown field '" + f
-                        + "'; expected format, version, scene, integrator, tendon, parameters");
+                        + "'; expected format, version, scene, integrator, tendon, muscleLoad, parameters");
             }
         }
-        return new Settings(scene, integrator, tensegrity, values);
+        return new Settings(scene, integrator, tensegrity, values, muscleLoad);
     }
 
     private static String text(JsonNode root, String field, String where, String fallback) {

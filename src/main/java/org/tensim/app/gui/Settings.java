@@ -12,9 +12,17 @@ import java.util.Map;
  * @param integrator       integrator name, e.g. {@code rk2}
  * @param tensegrityTendon true when the tendon has rigid links (ignored by scenes without the choice)
  * @param values           parameter key to value (in the unit its key names), time step included
+ * @param muscleLoad       the diaphragm's muscle-load model as on the command line ({@code fibres},
+ *                         {@code pressure}, {@code paper-nodes}); null for a scene without a muscle
  */
-public record Settings(String scene, String integrator, boolean tensegrityTendon, Map<String, Double> values) {
+public record Settings(String scene, String integrator, boolean tensegrityTendon, Map<String, Double> values,
+        String muscleLoad) {
     public Settings {
         values = Collections.unmodifiableMap(new LinkedHashMap<>(values));
+    }
+
+    /** Settings of a scene without a muscle. */
+    public Settings(String scene, String integrator, boolean tensegrityTendon, Map<String, Double> values) {
+        this(scene, integrator, tensegrityTendon, values, null);
     }
 }

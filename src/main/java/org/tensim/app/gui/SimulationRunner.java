@@ -210,12 +210,17 @@ public final class SimulationRunner implements Tuning.Target {
         rebuild();
     }
 
+    @Override
+    public void applyMuscleLoad(String load) {
+        rebuild(); // the settings carry the new load
+    }
+
     private static boolean restarts(ViewScene s, String key) {
         return s.parameters().stream().anyMatch(p -> p.key().equals(key) && p.restarts());
     }
 
     private void rebuild() {
-        install(() -> factory.create(tensegrityTendon, settings.get().values()));
+        install(() -> factory.create(tensegrityTendon, settings.get().muscleLoad(), settings.get().values()));
     }
 
     private void install(Supplier<ViewScene> source) {

@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
 
 /**
@@ -28,6 +29,11 @@ public final class Tuning {
 
         /** A change that needs a new topology: the scene is rebuilt. */
         void applyTendonModel(boolean tensegrity);
+
+        /** A new muscle-load model (as on the command line): the scene is rebuilt with it. */
+        default void applyMuscleLoad(String muscleLoad) {
+            throw new UnsupportedOperationException("this target cannot change the muscle load to " + muscleLoad);
+        }
     }
 
     private final String scene;
@@ -39,6 +45,7 @@ public final class Tuning {
     // Read by the simulation thread through snapshot(): volatile, and the map is guarded by itself.
     private volatile IntegratorChoice integrator;
     private volatile boolean tensegrityTendon = true;
+    private volatile String muscleLoad;
     private volatile Target target;
 
     /**
@@ -62,6 +69,17 @@ public final class Tuning {
                 throw new IllegalArgumentException("parameter key '" + p.key() + "' appears twice");
             }
         }
+    }
+
+    /**
+     * As the constructor above for a scene with a muscle-load choice (the diaphragm).
+     *
+     * @param muscleLoad the scene's muscle-load model as on the command line, or null for a scene without a muscle
+     */
+    public Tuning(String scene, List<TunableParameter> sceneParameters, double defaultDtS, boolean tendonChoice,
+            List<IntegratorChoice> integrators, String muscleLoad) {
+        this(scene, sceneParameters, defaultDtS, tendonChoice, integrators);
+        this.muscleLoad = muscleLoad;
     }
 
     /** The time step parameter, s, log scale from 10 us to 50 ms, defaulting to the scene's. */
@@ -172,10 +190,46 @@ public final class Tuning {
         fire();
     }
 
+    /** The muscle-load model as on the command line, or null for a scene without a muscle. */
+    public String muscleLoad() {
+        return muscleLoad;
+    }
+
+    /**
+     * Switches the muscle-load model; the scene is rebuilt (the load's topology changes), so the simulation
+     * restarts. The muscle action keeps its value: set it too when it was tuned for the other load.
+     *
+     * @throws IllegalArgumentException for an unknown model or a scene without a muscle; nothing changes then
+     */
+    public void setMuscleLoad(String load) {
+        checkMuscleLoad(load, null);
+        if (load.equals(muscleLoad)) {
+            return;
+        }
+        muscleLoad = load;
+        if (target != null) {
+            target.applyMuscleLoad(load);
+        }
+        fire();
+    }
+
+    private void checkMuscleLoad(String load, String source) {
+        String where = source == null ? "" : source + ": field 'muscleLoad': ";
+        if (muscleLoad == null) {
+            throw new IllegalArgumentException(where + "muscle load '" + load + "': scene '" + scene
+                    + "' has no muscle");
+        }
+        try {
+            BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, load);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(where + e.getMessage(), e);
+        }
+    }
+
     /** The current values as a settings record. */
     public Settings snapshot() {
         synchronized (values) {
-            return new Settings(scene, integrator.name(), tensegrityTendon, values);
+            return new Settings(scene, integrator.name(), tensegrityTendon, values, muscleLoad);
         }
     }
 
@@ -185,9 +239,12 @@ public final class Tuning {
      */
     public void apply(Settings s, String source) {
         validate(s, source);
-        // Checked: now apply, tendon first (it rebuilds the scene, which then takes the values below).
+        // Checked: now apply, tendon and muscle load first (they rebuild the scene, which then takes the values below).
         if (tendonChoice) {
             setTensegrityTendon(s.tensegrityTendon());
+        }
+        if (s.muscleLoad() != null) {
+            setMuscleLoad(s.muscleLoad());
         }
         if (!integrator.name().equals(s.integrator())) {
             setIntegrator(s.integrator());
@@ -210,6 +267,9 @@ public final class Tuning {
                     + scene + "'");
         }
         integratorNamed(s.integrator(), source + ": field 'integrator'");
+        if (s.muscleLoad() != null) {
+            checkMuscleLoad(s.muscleLoad(), source);
+        }
         for (Map.Entry<String, Double> e : s.values().entrySet()) {
             if (!values.containsKey(e.getKey())) {
                 throw new IllegalArgumentException(source + ": field 'parameters." + e.getKey()

@@ -14,8 +14,9 @@ import org.tensim.model.Check;
  *                            each node in the band gets {@code k_i = k_b A_i / 2 * taper(d_i)} (half per face)
  * @param bandTaperM          band: width over which the tie's stiffness falls smoothly to zero at the band's outer
  *                            edge (the attachment threshold), m; in [0, threshold]
- * @param muscleLoad          {@link MuscleLoad#PRESSURE} (default), the paper's {@link MuscleLoad#PAPER_NODES} or
- *                            active fibre tension {@link MuscleLoad#FIBRES}
+ * @param muscleLoad          active fibre tension {@link MuscleLoad#FIBRES} (default: it converges with the mesh, docs/diaphragm.md,
+ *                            "Active fibre tension"), a vertical traction {@link MuscleLoad#PRESSURE} or the paper's
+ *                            {@link MuscleLoad#PAPER_NODES}
  * @param costalOriginsOnly   band: attach only to the diaphragm's anatomical origins (ribs 7-12 and their
  *                            cartilages, the xiphoid, the spine) rather than to any cage segment
  */
@@ -72,9 +73,12 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         Check.nonNegative("attachment band taper", "m", bandTaperM);
     }
 
-    /** The defaults: an elastic band and an integrated pressure. */
+    /** The default muscle load's name as on the command line and in sweep specs and presets. */
+    public static final String DEFAULT_MUSCLE_LOAD = "fibres";
+
+    /** The defaults: an elastic band on the anatomical origins and the muscle's active fibre tension. */
     public static BoundaryConditions defaults() {
-        return new BoundaryConditions(Attachment.BAND, DEFAULT_BAND_PA_PER_M, DEFAULT_TAPER_M, MuscleLoad.PRESSURE,
+        return new BoundaryConditions(Attachment.BAND, DEFAULT_BAND_PA_PER_M, DEFAULT_TAPER_M, MuscleLoad.FIBRES,
                 true);
     }
 
@@ -101,16 +105,21 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, muscleLoad, only);
     }
 
+    /** A model's name as on the command line, e.g. "paper-nodes": the inverse of {@link #parse}. */
+    public static String name(Enum<?> model) {
+        return model.name().toLowerCase(Locale.ROOT).replace('_', '-');
+    }
+
     /** Parses a model name as given on the command line: "band", "paper-threshold", "pressure", "paper-nodes", "fibres". */
     public static <E extends Enum<E>> E parse(Class<E> type, String name) {
         for (E e : type.getEnumConstants()) {
-            if (e.name().toLowerCase(Locale.ROOT).replace('_', '-').equals(name)) {
+            if (name(e).equals(name)) {
                 return e;
             }
         }
         StringBuilder known = new StringBuilder();
         for (E e : type.getEnumConstants()) {
-            known.append(known.length() == 0 ? "" : ", ").append(e.name().toLowerCase(Locale.ROOT).replace('_', '-'));
+            known.append(known.length() == 0 ? "" : ", ").append(name(e));
         }
         throw new IllegalArgumentException("unknown " + type.getSimpleName() + " model '" + name + "'; expected one of "
                 + known);

@@ -12,15 +12,20 @@ import org.tensim.model.Check;
 public final class DiaphragmControls {
     /** Largest accepted rib amplitude factor: 3 times the physiological quiet-breathing rotation. */
     public static final double MAX_RIB_AMPLITUDE = 3;
-    /** Largest accepted muscle action amplitude, Pa (a forced inspiration reaches about 10 kPa). */
-    public static final double MAX_MUSCLE_PA = 20_000;
+    /**
+     * Largest accepted muscle action amplitude, Pa: covers both readings of the amplitude, a pressure (a forced
+     * inspiration reaches about 10 kPa) and an active fibre stress (15 kPa at quiet breathing on the default
+     * mesh, about twice that for a deep breath).
+     */
+    public static final double MAX_MUSCLE_PA = 30_000;
 
     private volatile double ribAmplitude;
     private volatile double musclePa;
 
     /**
      * @param ribAmplitude factor on the physiological rib rotations (1 = quiet breathing, 0 = ribs still)
-     * @param musclePa     peak muscle action, force per unit area of the diaphragm, Pa
+     * @param musclePa     peak muscle action, Pa: active fibre stress or force per unit area of the diaphragm,
+     *                     as the scene's muscle load reads it
      */
     public DiaphragmControls(double ribAmplitude, double musclePa) {
         setRibAmplitude(ribAmplitude);
@@ -42,17 +47,17 @@ public final class DiaphragmControls {
         ribAmplitude = factor;
     }
 
-    /** Peak muscle action at end-inspiration, N per m^2 of diaphragm (Pa). */
+    /** Peak muscle action at end-inspiration, Pa (an active fibre stress or a pressure, as the muscle load reads it). */
     public double muscleAmplitudePa() {
         return musclePa;
     }
 
-    /** Sets the peak muscle action, Pa; refuses values outside [0, 20 kPa]. */
+    /** Sets the peak muscle action, Pa; refuses values outside [0, 30 kPa]. */
     public void setMuscleAmplitudePa(double pa) {
         Check.nonNegative("muscle action amplitude", "Pa", pa);
         if (pa > MAX_MUSCLE_PA) {
             throw new IllegalArgumentException("muscle action amplitude must be at most " + MAX_MUSCLE_PA
-                    + " Pa, got " + pa);
+                    + " Pa (an active fibre stress or a pressure), got " + pa);
         }
         musclePa = pa;
     }

@@ -31,13 +31,22 @@ public final class DiaphragmSetup {
      */
     public static final Path BODYPARTS3D_BOXES = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
-    /** Default peak muscle action, Pa (docs/diaphragm.md: gives a quiet-breathing dome excursion). */
+    /**
+     * Default peak muscle pressure, Pa, for {@link BoundaryConditions.MuscleLoad#PRESSURE} and
+     * {@link BoundaryConditions.MuscleLoad#PAPER_NODES} (docs/diaphragm.md: gives a quiet-breathing dome excursion).
+     * Not the default load's: see {@link #defaultMusclePa()}.
+     */
     public static final double DEFAULT_MUSCLE_PA = 2600;
     /**
      * Default peak active fibre stress, Pa, for {@link BoundaryConditions.MuscleLoad#FIBRES} (docs/diaphragm.md,
      * "Active fibre tension": gives a quiet-breathing dome excursion on the default mesh).
      */
     public static final double DEFAULT_FIBRE_STRESS_PA = 15_000;
+
+    /** The default muscle amplitude of the default muscle load ({@link BoundaryConditions#defaults()}), Pa. */
+    public static double defaultMusclePa() {
+        return defaultMusclePa(BoundaryConditions.defaults().muscleLoad());
+    }
 
     /** The default muscle amplitude of a muscle-load model, Pa: an active stress for fibres, else a pressure. */
     public static double defaultMusclePa(BoundaryConditions.MuscleLoad model) {

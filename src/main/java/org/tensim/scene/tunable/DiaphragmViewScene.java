@@ -57,14 +57,29 @@ public final class DiaphragmViewScene implements ViewScene {
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
-    /** The tunable parameters (the sweep and calibration read their names and ranges here). */
-    public static final List<TunableParameter> PARAMETERS = List.of(
+    /**
+     * The tunable parameters with the default muscle load (the sweep and calibration read their names and ranges
+     * here; the ranges do not depend on the load).
+     */
+    public static final List<TunableParameter> PARAMETERS = parameters(BoundaryConditions.defaults().muscleLoad());
+
+    /**
+     * The tunable parameters of a scene with a muscle-load model: the muscle action's default and description are
+     * the load's (an active fibre stress for fibres, a pressure for the others; {@link DiaphragmSetup#defaultMusclePa}).
+     */
+    public static List<TunableParameter> parameters(BoundaryConditions.MuscleLoad load) {
+        String muscle = load == BoundaryConditions.MuscleLoad.FIBRES
+                ? "Peak active stress of the muscle fibres along their meridians to the central tendon, at"
+                        + " end-inspiration (muscle load: fibres)."
+                : "Peak contraction force of the action lines per unit area of diaphragm, at end-inspiration (muscle"
+                        + " load: " + BoundaryConditions.name(load) + ").";
+        return List.of(
             TunableParameter.linear(RIB_AMPLITUDE, "Rib motion amplitude", "x quiet", 0,
                     DiaphragmControls.MAX_RIB_AMPLITUDE, 1,
                     "Rib rotation about each rib's helical axis, times quiet breathing (0: ribs still)."),
-            TunableParameter.linear(MUSCLE_ACTION, "Muscle action amplitude", "Pa", 0, DiaphragmControls.MAX_MUSCLE_PA,
-                    DiaphragmSetup.DEFAULT_MUSCLE_PA,
-                    "Peak contraction force of the action lines per unit area of diaphragm, at end-inspiration."),
+            TunableParameter.linear(MUSCLE_ACTION, load == BoundaryConditions.MuscleLoad.FIBRES
+                    ? "Muscle fibre active stress" : "Muscle action pressure", "Pa", 0, DiaphragmControls.MAX_MUSCLE_PA,
+                    DiaphragmSetup.defaultMusclePa(load), muscle),
             TunableParameter.log(TISSUE_STIFFNESS, "Tissue stiffness (muscle E)", "Pa", 4e3, 4e5, P.muscleYoungPa(),
                     "Young's modulus of the muscle; the tendon's springs keep their ratio to it. Stiffer: smaller"
                             + " deformation and a smaller stable time step."),
@@ -75,8 +90,11 @@ public final class DiaphragmViewScene implements ViewScene {
             TunableParameter.linear(BREATHING_PERIOD, "Breathing period", "s", 2, 12, 4,
                     "Duration of one breath (inspiration:expiration 1:2). 4 s is 15 breaths per minute.")
                     .restarting());
+    }
 
     private final boolean tensegrity;
+    private final BoundaryConditions.MuscleLoad load;
+    private final List<TunableParameter> parameters;
     private final Simulation sim;
     private final List<Body> bodies;
     /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
@@ -84,7 +102,9 @@ public final class DiaphragmViewScene implements ViewScene {
     /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
     private volatile DiaphragmScene prepared;
 
-    private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity) {
+    private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load) {
+        this.load = load;
+        this.parameters = parameters(load);
         this.scene = scene;
         this.prepared = scene;
         this.tensegrity = tensegrity;
@@ -137,8 +157,9 @@ public final class DiaphragmViewScene implements ViewScene {
     }
 
     /**
-     * As {@link #factory(Path, MeshUnits, double, int, Path)} with the attachment and muscle-load models; the
-     * muscle action's default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 15 kPa of active fibre
+     * As {@link #factory(Path, MeshUnits, double, int, Path)} with the attachment and muscle-load models (the
+     * load can be changed per scene: {@link SceneFactory#create(boolean, String, Map)}); the muscle action's
+     * default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 15 kPa of active fibre
      * stress, 2.6 kPa of pressure).
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes,
@@ -168,15 +189,27 @@ public final class DiaphragmViewScene implements ViewScene {
             }
 
             @Override
+            public String muscleLoad() {
+                return BoundaryConditions.name(bc.muscleLoad());
+            }
+
+            @Override
             public ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
+                return create(tensegrityTendon, null, values);
+            }
+
+            @Override
+            public ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
+                BoundaryConditions b = muscleLoad == null ? bc
+                        : bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));
                 double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
                 BreathingCycle cycle = new BreathingCycle(period, EXPIRATION_RATIO);
                 DiaphragmControls controls = new DiaphragmControls(values.getOrDefault(RIB_AMPLITUDE, 1.0),
-                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.defaultMusclePa(bc.muscleLoad())));
+                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.defaultMusclePa(b.muscleLoad())));
                 try {
                     DiaphragmScene s = DiaphragmScene.build(surfaces(), DiaphragmSetup.boxes(boxes), P, cycle,
-                            controls, null, bc);
-                    return new DiaphragmViewScene(s, tensegrityTendon);
+                            controls, null, b);
+                    return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
                 } catch (IOException e) {
                     throw new UncheckedIOException(e.getMessage(), e);
                 } catch (MeshFormatException e) {
@@ -199,7 +232,8 @@ public final class DiaphragmViewScene implements ViewScene {
     @Override
     public String title() {
         return "Diaphragm: " + scene.diaphragmNodes() + " nodes, muscle (red) mass-spring, tendon (pale) "
-                + (sim.state().linkCount() > 0 ? "tensegrity" : "mass-spring");
+                + (sim.state().linkCount() > 0 ? "tensegrity" : "mass-spring") + ", muscle load "
+                + BoundaryConditions.name(load);
     }
 
     @Override
@@ -209,7 +243,7 @@ public final class DiaphragmViewScene implements ViewScene {
 
     @Override
     public List<TunableParameter> parameters() {
-        return PARAMETERS;
+        return parameters;
     }
 
     @Override
@@ -268,7 +302,7 @@ public final class DiaphragmViewScene implements ViewScene {
             case BREATHING_PERIOD -> throw new IllegalStateException(BREATHING_PERIOD
                     + " is fixed when the scene is built: make a new scene with it");
             default -> throw new IllegalArgumentException("diaphragm scene has no parameter '" + key + "'; known: "
-                    + PARAMETERS.stream().map(TunableParameter::key).toList());
+                    + parameters.stream().map(TunableParameter::key).toList());
         }
     }
 

@@ -27,6 +27,29 @@ public interface SceneFactory {
      */
     ViewScene create(boolean tensegrityTendon, Map<String, Double> values);
 
+    /**
+     * The muscle-load model this factory builds by default, as on the command line ({@code fibres},
+     * {@code pressure}, {@code paper-nodes}); null for a scene without a muscle.
+     */
+    default String muscleLoad() {
+        return null;
+    }
+
+    /**
+     * A new scene at rest with a muscle-load model, as {@link #create(boolean, Map)}: a change of the model
+     * changes the loads' topology (the fibres' directions, the pressure's weights), so the scene is rebuilt.
+     *
+     * @param muscleLoad the model as on the command line, or null for the factory's own ({@link #muscleLoad()})
+     * @throws IllegalArgumentException for an unknown model, or any model for a scene without a muscle
+     */
+    default ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
+        if (muscleLoad != null && !muscleLoad.equals(muscleLoad())) {
+            throw new IllegalArgumentException("muscle load '" + muscleLoad + "': scene '" + name()
+                    + "' has no muscle load to choose");
+        }
+        return create(tensegrityTendon, values);
+    }
+
     /** A new scene at rest with every parameter at its default. */
     default ViewScene create(boolean tensegrityTendon) {
         return create(tensegrityTendon, Map.of());
