@@ -134,7 +134,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
             description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
-                    + " several (default: one through the top of each dome, R = 0.3 x the mesh width)")
+                    + " several (default: one through the top of each dome, R = 0.3 x the mesh width); for"
+                    + " --muscle-load pressure and paper-nodes (the fibres' tension has no action lines)")
     List<ActionLines.Line> actionLines;
 
     @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
@@ -281,6 +282,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--attachment, --band-stiffness,"
                     + " --muscle-load: " + e.getMessage());
         }
+        if (actionLines != null && !actionLines.isEmpty() && bc.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--action-line: the muscle load '"
+                    + muscleLoad + "' (the active fibre tension) has no action lines; they place the traction of"
+                    + " --muscle-load pressure or paper-nodes");
+        }
         MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
         List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
@@ -358,6 +364,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + (mesh.equals(DiaphragmSetup.DEFAULT_MESH) ? "" : "; this mesh (" + mesh + ") was not measured"));
         }
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
+        // muscle_force_pa is an active fibre stress or a pressure: the load says which.
+        fields.put("muscle_load", BoundaryConditions.name(bc.muscleLoad()));
         if (setting != null) {
             fields.put("realtime_setting", setting.toMap());
         }

@@ -88,8 +88,11 @@ class DiaphragmCommandTest {
             assertTrue(s.containsKey(k), k);
         }
         assertTrue(((Number) s.get("dome_excursion_mm")).doubleValue() > 5);
-        // No region of the double dome snaps through at the default load: its largest descent was 1.76
-        // times the dome excursion here (25.7 against 14.6 mm, 2026-11-23); a snapped region goes far
+        // the default muscle load: the fibres' active tension at its 15 kPa
+        assertEquals("fibres", s.get("muscle_load"), s.toString());
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, ((Number) s.get("muscle_force_pa")).doubleValue(), 0);
+        // No region of the double dome snaps through at the default load: with the pressure its largest descent
+        // was 1.76 times the dome excursion here (25.7 against 14.6 mm, 2026-11-23); a snapped region goes far
         // lower (BodyParts3D at 7.5 kPa: 100 mm against 18).
         double largest = ((Number) s.get("largest_descent_mm")).doubleValue();
         assertTrue(largest >= ((Number) s.get("apex_descent_mm")).doubleValue()
@@ -122,14 +125,16 @@ class DiaphragmCommandTest {
         Path mesh = coarseMesh(16);
         Path a = dir.resolve("a");
         String[] r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", a.toString(),
-                "--vtk-per-cycle", "0", "--tendon-fraction", "0.2", "--threads", "1");
+                "--vtk-per-cycle", "0", "--tendon-fraction", "0.2", "--threads", "1", "--muscle-load", "pressure");
         assertEquals("0", r[0], r[2]);
         Map<String, Object> sa = Json.readMap(a.resolve("summary.json"));
         assertEquals(0.2, ((Number) sa.get("tendon_area_fraction")).doubleValue(), 0.03);
-        // One narrow action line far outside the diaphragm: the muscle pulls nothing, the dome stays up.
+        // One narrow action line far outside the diaphragm: the muscle pulls nothing, the dome stays up. Action
+        // lines place the pressure's traction (the fibres' tension has none): both runs with the pressure load,
+        // which the figures below were measured with.
         Path b = dir.resolve("b");
         r = run("diaphragm", "--mesh", mesh.toString(), "--seconds", "1.4", "--out", b.toString(),
-                "--vtk-per-cycle", "0", "--action-line", "500,500,10", "--threads", "1");
+                "--vtk-per-cycle", "0", "--action-line", "500,500,10", "--threads", "1", "--muscle-load", "pressure");
         assertEquals("0", r[0], r[2]);
         Map<String, Object> sb = Json.readMap(b.resolve("summary.json"));
         // The apex at end-inspiration (its travel over the run also counts the ribs' transient lift:
@@ -141,6 +146,8 @@ class DiaphragmCommandTest {
         assertTrue(r[2].contains("--tendon-normal must not be the zero vector"), r[2]);
         r = run("diaphragm", "--action-line", "1,2");
         assertTrue(r[2].contains("expected X,Y,R in mm"), r[2]);
+        r = run("diaphragm", "--action-line", "500,500,10");
+        assertTrue(r[2].contains("--action-line") && r[2].contains("'fibres'") && r[2].contains("pressure"), r[2]);
     }
 
     @Test
@@ -170,7 +177,7 @@ class DiaphragmCommandTest {
         DiaphragmSetup.Built b = DiaphragmSetup.load(mesh, org.tensim.io.mesh.MeshUnits.MM, 0.002,
                 null, org.tensim.scene.diaphragm.DiaphragmParameters.defaults(),
                 org.tensim.scene.diaphragm.BreathingCycle.quiet(),
-                new org.tensim.scene.diaphragm.DiaphragmControls(1, 2600));
+                new org.tensim.scene.diaphragm.DiaphragmControls(1, DiaphragmSetup.defaultMusclePa()));
         assertEquals(DiaphragmSetup.SurfaceMode.OFFSET, b.mode());
         assertEquals(0.002, b.scene().surfaces().thicknessM(), 1e-4);
     }

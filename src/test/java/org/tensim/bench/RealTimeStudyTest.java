@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -24,7 +25,9 @@ class RealTimeStudyTest {
     @Test
     @SuppressWarnings("unchecked")
     void reportsEveryConfigurationAndItsErrors(@TempDir Path out) throws IOException {
+        // With the pressure load, which the figures below were measured with.
         Map<String, Object> s = RealTimeStudy.run(new int[] {6, 8}, null, null, DiaphragmParameters.defaults(),
+                BoundaryConditions.defaults().withMuscleLoad(BoundaryConditions.MuscleLoad.PRESSURE),
                 BreathingCycle.quiet(), new DiaphragmControls(1, 2600), 0.4, out, null);
         List<Map<String, Object>> runs = (List<Map<String, Object>>) s.get("runs");
         int configs = RealTimeStudy.configs().size();

@@ -10,7 +10,8 @@ import org.junit.jupiter.api.Test;
 /**
  * A sweep's {@code muscleLoad} reaches the scene: with the active fibre tension (15 kPa, its default
  * amplitude) the coarse double dome descends by a physiological amount, while the same 15 kPa as the
- * vertical traction of the default load drives it several times as far.
+ * vertical traction of the pressure load drives it several times as far; a spec without a muscle load
+ * runs the fibres, the default.
  */
 class SceneRunMuscleLoadTest {
     private static RunSetup setup(String muscleLoad) {
@@ -23,12 +24,15 @@ class SceneRunMuscleLoadTest {
         List<String> names = List.of("muscleActionPa");
         Point p = new Point(0, new double[] {15000});
         PointResult fibres = SceneRun.run(setup("fibres"), names, p);
-        PointResult pressure = SceneRun.run(setup(null), names, p);
+        PointResult pressure = SceneRun.run(setup("pressure"), names, p);
+        PointResult byDefault = SceneRun.run(setup(null), names, p);
         assertEquals(PointResult.OK, fibres.status(), fibres.message());
         double f = fibres.fields().get("dome_excursion_mm");
         assertTrue(f > 8 && f < 30, "fibres at 15 kPa: dome excursion " + f + " mm");
         double q = PointResult.OK.equals(pressure.status()) ? pressure.fields().get("dome_excursion_mm")
                 : Double.POSITIVE_INFINITY;
         assertTrue(q > 2 * f, "the same 15 kPa as a vertical traction: " + q + " mm against " + f + " mm");
+        assertEquals(PointResult.OK, byDefault.status(), byDefault.message());
+        assertEquals(f, byDefault.fields().get("dome_excursion_mm"), 0, "no muscleLoad: the fibres, the default");
     }
 }

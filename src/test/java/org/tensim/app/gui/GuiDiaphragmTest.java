@@ -98,17 +98,18 @@ class GuiDiaphragmTest {
             waitFor("the reset", () -> w.runner().steps() == 0 && w.runner().simTime() == 0);
             GuiWindowTest.clickSteps(w, 100);
             double quiet = apexZ(w);
-            onEdt(() -> w.controls().control(DiaphragmViewScene.MUSCLE_ACTION).enter("20000"));
-            assertEquals(20000, w.tuning().get(DiaphragmViewScene.MUSCLE_ACTION));
+            onEdt(() -> w.controls().control(DiaphragmViewScene.MUSCLE_ACTION).enter("30000"));
+            assertEquals(30000, w.tuning().get(DiaphragmViewScene.MUSCLE_ACTION));
             click(w, "reset");
             waitFor("the reset", () -> w.runner().steps() == 0 && w.runner().simTime() == 0);
             GuiWindowTest.clickSteps(w, 100);
             double forced = apexZ(w);
             // 100 steps are 13 ms from rest: the apex has barely moved (the ribs may even lift it a little),
-            // but 17.4 kPa more muscle action must already have pulled it down by more than 0.1 micrometre.
+            // but twice the default fibre stress (30 against 15 kPa) must already have pulled it down by more than
+            // 0.1 micrometre.
             assertTrue(forced < quiet - 1e-7 && forced < 0, "more muscle action lowers the apex further: " + forced
                     + " m against " + quiet + " m");
-            assertEquals(20000, ((DiaphragmViewScene) w.scene()).scene().controls().muscleAmplitudePa(),
+            assertEquals(30000, ((DiaphragmViewScene) w.scene()).scene().controls().muscleAmplitudePa(),
                     "the value reaches the rebuilt scene's controls");
         } finally {
             onEdt(w::close);

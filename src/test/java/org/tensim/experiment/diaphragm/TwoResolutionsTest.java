@@ -27,10 +27,11 @@ import org.tensim.scene.diaphragm.TwoSurfaces;
  * interpolated transfer is exact for a displacement linear in space (the nearest node is not).
  */
 class TwoResolutionsTest {
+    /** With the pressure load, which the figures below were measured with. */
     private static ResolutionStudy.Setup setup() throws Exception {
         BreathingCycle cycle = BreathingCycle.quiet();
-        return new ResolutionStudy.Setup(DiaphragmSetup.boxes(null),
-                DiaphragmParameters.defaults(), BoundaryConditions.defaults(), cycle,
+        return new ResolutionStudy.Setup(DiaphragmSetup.boxes(null), DiaphragmParameters.defaults(),
+                BoundaryConditions.defaults().withMuscleLoad(BoundaryConditions.MuscleLoad.PRESSURE), cycle,
                 new DiaphragmControls(1, DiaphragmSetup.DEFAULT_MUSCLE_PA), cycle.inspirationS(),
                 ResolutionStudy.TOLERANCE, null);
     }

@@ -26,7 +26,7 @@ class BoundaryConditionsTest {
         return DiaphragmScene.build(
                 TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(rings))),
                 SceneFixture.boxes(), DiaphragmParameters.defaults().withAbdominalSupport(0), BreathingCycle.quiet(),
-                new DiaphragmControls(1, 2600), null, bc);
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa(bc.muscleLoad())), null, bc);
     }
 
     /** Sum of the stiffness of the springs from diaphragm nodes to anchors and to the cage, N/m. */

@@ -53,7 +53,7 @@ class DiaphragmBdf2Test {
     @Test
     void agreesWithRk2AtSmallStepsAndConvergesToIt() throws Exception {
         DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600,
-                DiaphragmParameters.defaults().withTissueModel(TissueModel.SPRINGS));
+                DiaphragmParameters.defaults().withTissueModel(TissueModel.SPRINGS), SceneFixture.PRESSURE);
         double[] rk2 = run(scene, null, 0);
         double e1 = relativeRms(run(scene, new PrefactoredBdf2(), 1e-3), rk2);
         double e2 = relativeRms(run(scene, new PrefactoredBdf2(), 2e-3), rk2);
@@ -76,7 +76,7 @@ class DiaphragmBdf2Test {
      */
     @Test
     void agreesWithRk2OnTheMembraneTrianglesAsTheStepFalls() throws Exception {
-        DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600);
+        DiaphragmScene scene = SceneFixture.coarse(RINGS, 1, 2600, SceneFixture.PRESSURE);
         double seconds = 0.5;
         double[] rk2 = run(scene, null, scene.recommendedTimeStep() / 2, seconds);
         double e8 = relativeRms(run(scene, new PrefactoredBdf2(), 8e-3, seconds), rk2);

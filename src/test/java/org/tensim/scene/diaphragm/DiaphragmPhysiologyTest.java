@@ -22,7 +22,8 @@ class DiaphragmPhysiologyTest {
      * (9 to 24 mm from 11 to 13 rings), so those are not used (docs/diaphragm.md, resolution study).
      */
     static final int RINGS = 16;
-    static final double PA = 2600;
+    /** The default load's amplitude (fibres: 15 kPa of active fibre stress). */
+    static final double PA = DiaphragmSetup.defaultMusclePa();
     private Outcome base;
 
     /**

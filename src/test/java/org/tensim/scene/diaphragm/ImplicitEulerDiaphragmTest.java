@@ -27,7 +27,7 @@ class ImplicitEulerDiaphragmTest {
 
     @Test
     void convergesToTheRk2Solution() throws IOException {
-        DiaphragmScene scene = SceneFixture.coarse(10, 1, 2600);
+        DiaphragmScene scene = SceneFixture.coarse(10, 1, 2600, SceneFixture.PRESSURE);
         double ti = scene.cycle().inspirationS();
         double[] steps = {1e-3, 5e-4, 2.5e-4};
         Simulation rk2 = scene.newSimulation();

@@ -76,7 +76,7 @@ class ParametricRibCageTest {
 
     @Test
     void theDefaultSceneAttachesItsRimToRibsSternumAndSpine() throws Exception {
-        DiaphragmScene s = SceneFixture.coarse(12, 1, 2600);
+        DiaphragmScene s = SceneFixture.coarse(12, 1, DiaphragmSetup.defaultMusclePa());
         assertTrue(s.attachedToRibs() > 50, "ribs: " + s.attachedToRibs());
         assertTrue(s.attachedToCartilage() > 20, "cartilage and sternum: " + s.attachedToCartilage());
         assertTrue(s.attachedToSpine() > 5, "spine (crura): " + s.attachedToSpine());

@@ -16,6 +16,13 @@ final class SceneFixture {
     static final Path BODYPARTS3D_BOXES = Path.of("..", "shared", "meshes", "bodyparts3d",
             "rib-sternum-bounds-mm.json");
 
+    /**
+     * The defaults with the pressure load ({@code --muscle-load pressure}), for the tests whose figures were
+     * measured with it (it was the default load until the fibres' tension replaced it).
+     */
+    static final BoundaryConditions PRESSURE = BoundaryConditions.defaults()
+            .withMuscleLoad(BoundaryConditions.MuscleLoad.PRESSURE);
+
     private SceneFixture() {
     }
 
@@ -31,7 +38,7 @@ final class SceneFixture {
         return BoxesJson.read(BODYPARTS3D_BOXES, 1e-3);
     }
 
-    /** A coarse double dome (rings per face) with the default parameters. */
+    /** A coarse double dome (rings per face) with the default parameters and muscle load. */
     static DiaphragmScene coarse(int rings, double ribAmplitude, double musclePa) throws IOException {
         return coarse(rings, ribAmplitude, musclePa, DiaphragmParameters.defaults());
     }

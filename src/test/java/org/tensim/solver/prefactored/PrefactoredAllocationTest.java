@@ -32,7 +32,7 @@ class PrefactoredAllocationTest {
     @ValueSource(ints = {1, 2})
     void bdf2StepOnACoarseDiaphragmAllocatesNothing(int threads) throws Exception {
         Simulation sim = DiaphragmSetup.generated(8, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
-                new DiaphragmControls(1, DiaphragmSetup.DEFAULT_MUSCLE_PA)).scene().newSimulation();
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
         sim.setIntegrator(new PrefactoredBdf2());
         assertNoAllocation(sim, threads, 0.02, 500);
     }

@@ -1,0 +1,177 @@
+package org.tensim.app.gui;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.scene.tunable.ViewScene;
+
+/**
+ * The GUI's muscle load: the fibres' tension by default, with their amplitude; presets of version 2 record the
+ * load, and a version-1 preset (all made with the pressure, the default load until then) loads as the pressure
+ * at its amplitude, giving the same motion as the scene it was saved from.
+ */
+class MuscleLoadPresetTest {
+    @TempDir
+    Path dir;
+
+    private final List<String> applied = new ArrayList<>();
+
+    private Tuning tuning(ViewScene s, SceneFactory f) {
+        Tuning t = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), f.hasTendonChoice(),
+                IntegratorCatalog.available(), f.muscleLoad());
+        t.bind(new Tuning.Target() {
+            @Override
+            public void applyParameter(String key, double value) {
+                applied.add(key + "=" + value);
+            }
+
+            @Override
+            public void applyIntegrator(IntegratorChoice choice) {
+                applied.add("integrator=" + choice.name());
+            }
+
+            @Override
+            public void applyTendonModel(boolean tensegrity) {
+                applied.add("tendon=" + tensegrity);
+            }
+
+            @Override
+            public void applyMuscleLoad(String load) {
+                applied.add("muscleLoad=" + load);
+            }
+        });
+        return t;
+    }
+
+    private static TunableParameter muscleAction(ViewScene s) {
+        return s.parameters().stream().filter(p -> p.key().equals(DiaphragmViewScene.MUSCLE_ACTION)).findFirst()
+                .orElseThrow();
+    }
+
+    @Test
+    void theDefaultLoadIsTheFibresAtTheirActiveStress() {
+        SceneFactory f = ParameterBindingTest.coarseDiaphragm();
+        assertEquals("fibres", f.muscleLoad());
+        DiaphragmViewScene s = (DiaphragmViewScene) f.create(true);
+        TunableParameter m = muscleAction(s);
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, m.defaultValue());
+        assertTrue(m.description().contains("active stress of the muscle fibres"), m.description());
+        assertTrue(m.max() >= 30_000, "the fibres' range reaches 30 kPa: " + m.max());
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, s.scene().controls().muscleAmplitudePa());
+        assertTrue(s.title().contains("muscle load fibres"), s.title());
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, muscleAction(DiaphragmViewScene.PARAMETERS));
+        // the pressure by name, with its own amplitude and wording
+        DiaphragmViewScene p = (DiaphragmViewScene) f.create(true, "pressure", Map.of());
+        assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, muscleAction(p).defaultValue());
+        assertTrue(muscleAction(p).description().contains("per unit area"), muscleAction(p).description());
+        assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, p.scene().controls().muscleAmplitudePa());
+        assertThrows(IllegalArgumentException.class, () -> f.create(true, "fibers", Map.of()));
+        SceneFactory cube = CubeViewScene.factory();
+        assertNull(cube.muscleLoad());
+        assertThrows(IllegalArgumentException.class, () -> cube.create(true, "fibres", Map.of()));
+    }
+
+    private static double muscleAction(List<TunableParameter> ps) {
+        return ps.stream().filter(p -> p.key().equals(DiaphragmViewScene.MUSCLE_ACTION)).findFirst().orElseThrow()
+                .defaultValue();
+    }
+
+    @Test
+    void aVersion1PresetLoadsAsThePressureAndMovesAsTheSceneItWasSavedFrom() throws Exception {
+        SceneFactory f = ParameterBindingTest.coarseDiaphragm();
+        Tuning t = tuning(f.create(true), f);
+        Path v1 = dir.resolve("v1.json");
+        Files.writeString(v1, "{\"format\": \"tensim-gui-preset\", \"version\": 1, \"scene\": \"diaphragm\","
+                + " \"integrator\": \"rk2\", \"tendon\": \"tensegrity\", \"parameters\": {\"muscleActionPa\": 3000.0}}");
+        Settings read = PresetFile.read(v1, t);
+        assertEquals("pressure", read.muscleLoad());
+        t.apply(read, v1.toString());
+        assertEquals("pressure", t.muscleLoad());
+        assertEquals(List.of("muscleLoad=pressure", "muscleActionPa=3000.0"), applied,
+                "the load first (it rebuilds the scene), then the values");
+        // What the user had: the pressure scene at 3 kPa, as built when the pressure was the default.
+        SceneFactory pressureFactory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 6,
+                GuiScenes.Source.defaults().boxes(), "pressure"));
+        ViewScene before = pressureFactory.create(true, Map.of(DiaphragmViewScene.MUSCLE_ACTION, 3000.0));
+        ViewScene loaded = f.create(t.tensegrityTendon(), t.muscleLoad(), t.snapshot().values());
+        double dt = before.defaultTimeStep();
+        assertArrayEquals(ParameterBindingTest.run(before, dt, 150), ParameterBindingTest.run(loaded, dt, 150), 0,
+                "the same motion");
+        // ... and not what the fibres would do at the same value
+        ViewScene fibres = f.create(true, Map.of(DiaphragmViewScene.MUSCLE_ACTION, 3000.0));
+        double[] a = ParameterBindingTest.run(fibres, dt, 150);
+        double[] b = ParameterBindingTest.run(f.create(true, "pressure", t.snapshot().values()), dt, 150);
+        assertTrue(!java.util.Arrays.equals(a, b), "the fibres at 3 kPa move otherwise");
+        // a version-1 file cannot name a load
+        Files.writeString(v1, "{\"version\": 1, \"scene\": \"diaphragm\", \"muscleLoad\": \"fibres\"}");
+        String m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(v1, t)).getMessage();
+        assertTrue(m.contains("'muscleLoad'") && m.contains("version"), m);
+    }
+
+    @Test
+    void aVersion2PresetRecordsTheLoadAndRoundTrips() throws Exception {
+        SceneFactory f = ParameterBindingTest.coarseDiaphragm();
+        Tuning t = tuning(f.create(true), f);
+        t.setMuscleLoad("pressure");
+        t.set(DiaphragmViewScene.MUSCLE_ACTION, 3100);
+        Settings saved = t.snapshot();
+        Path p = dir.resolve("v2.json");
+        PresetFile.write(p, saved);
+        String text = Files.readString(p);
+        assertTrue(text.contains("\"version\" : 2") && text.contains("\"muscleLoad\" : \"pressure\""), text);
+        Tuning other = tuning(f.create(true), f);
+        assertEquals("fibres", other.muscleLoad());
+        Settings read = PresetFile.read(p, other);
+        assertEquals(saved, read);
+        other.apply(read, p.toString());
+        assertEquals(saved, other.snapshot());
+        assertEquals("pressure", other.muscleLoad());
+        // a preset of the fibres written now reads back as the fibres
+        other.setMuscleLoad("fibres");
+        PresetFile.write(p, other.snapshot());
+        assertEquals("fibres", PresetFile.read(p, t).muscleLoad());
+        // an unknown load, or a load for the cube, is refused naming the field
+        Files.writeString(p, "{\"version\": 2, \"scene\": \"diaphragm\", \"muscleLoad\": \"fibers\"}");
+        String m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(p, t)).getMessage();
+        assertTrue(m.contains("'muscleLoad'") && m.contains("'fibers'") && m.contains("pressure"), m);
+        ViewScene cube = CubeViewScene.create();
+        Tuning c = new Tuning(cube.name(), cube.parameters(), cube.defaultTimeStep(), false,
+                IntegratorCatalog.available());
+        Files.writeString(p, "{\"version\": 2, \"scene\": \"cube\", \"muscleLoad\": \"fibres\"}");
+        m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(p, c)).getMessage();
+        assertTrue(m.contains("'muscleLoad'") && m.contains("no muscle"), m);
+    }
+
+    @Test
+    void lastUsedParametersOfAnotherLoadAreNotRestoredOverAnExplicitMuscleLoad() throws Exception {
+        SceneFactory f = ParameterBindingTest.coarseDiaphragm();
+        Path last = dir.resolve("last-diaphragm.json");
+        Files.writeString(last, "{\"version\": 1, \"scene\": \"diaphragm\", \"parameters\": {\"muscleActionPa\": 2600}}");
+        Tuning explicit = tuning(f.create(true), f);
+        String note = GuiCommand.restore(explicit, last, true);
+        assertTrue(note != null && note.contains("muscle load pressure") && note.contains("--muscle-load fibres"),
+                note);
+        assertEquals("fibres", explicit.muscleLoad());
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, explicit.get(DiaphragmViewScene.MUSCLE_ACTION));
+        assertTrue(Files.exists(last), "a valid file is kept where it is");
+        Tuning restored = tuning(f.create(true), f);
+        assertNull(GuiCommand.restore(restored, last, false));
+        assertEquals("pressure", restored.muscleLoad());
+        assertEquals(2600, restored.get(DiaphragmViewScene.MUSCLE_ACTION));
+    }
+}
