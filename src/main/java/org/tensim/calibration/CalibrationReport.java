@@ -13,6 +13,7 @@ import org.tensim.app.gui.Tuning;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 
 /**
  * Writes what a calibration found: {@code best-preset.json} (a GUI preset with the fitted
@@ -36,8 +37,11 @@ public final class CalibrationReport {
         if (spec.setup().dtS() > 0) {
             values.put(Tuning.TIME_STEP, spec.setup().dtS());
         }
+        // The muscle load goes with the values: it sets what muscleActionPa means.
+        String load = !spec.setup().scene().equals("diaphragm") ? null
+                : spec.setup().muscleLoad() != null ? spec.setup().muscleLoad() : BoundaryConditions.DEFAULT_MUSCLE_LOAD;
         PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
-                spec.setup().integrator(), true, values));
+                spec.setup().integrator(), true, values, load));
 
         List<String> header = new ArrayList<>(List.of("generation", "runs", "best_of_generation", "best_so_far",
                 "wall_s"));

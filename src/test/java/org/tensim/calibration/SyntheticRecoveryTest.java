@@ -24,7 +24,8 @@ class SyntheticRecoveryTest {
     @Test
     void recoversKnownParametersFromANoisySurface() throws Exception {
         Path spec = dir.resolve("synthetic.json");
-        Files.writeString(spec, "{\"scene\": \"diaphragm\", \"mesh\": {\"rings\": 6},"
+        // The pressure load, which the figures below were measured with.
+        Files.writeString(spec, "{\"scene\": \"diaphragm\", \"mesh\": {\"rings\": 6}, \"muscleLoad\": \"pressure\","
                 + " \"solver\": {\"integrator\": \"implicit-euler-cg1e-3\", \"dtS\": 0.01, \"seconds\": 1.34},"
                 + " \"fit\": {\"muscleActionPa\": {\"min\": 1000, \"max\": 4000, \"start\": 1800},"
                 + " \"ribAmplitudeFactor\": {\"min\": 0.3, \"max\": 2.0, \"start\": 0.8}},"
@@ -56,5 +57,7 @@ class SyntheticRecoveryTest {
         }
         String preset = Files.readString(dir.resolve("out/best-preset.json"));
         assertTrue(preset.contains("\"muscleActionPa\" : " + best[0]), preset);
+        assertTrue(preset.contains("\"muscleLoad\" : \"pressure\""), "the preset names the load it was fitted with: "
+                + preset);
     }
 }
