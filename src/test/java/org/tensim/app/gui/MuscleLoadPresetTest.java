@@ -34,27 +34,7 @@ class MuscleLoadPresetTest {
     private Tuning tuning(ViewScene s, SceneFactory f) {
         Tuning t = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), f.hasTendonChoice(),
                 IntegratorCatalog.available(), f.muscleLoad());
-        t.bind(new Tuning.Target() {
-            @Override
-            public void applyParameter(String key, double value) {
-                applied.add(key + "=" + value);
-            }
-
-            @Override
-            public void applyIntegrator(IntegratorChoice choice) {
-                applied.add("integrator=" + choice.name());
-            }
-
-            @Override
-            public void applyTendonModel(boolean tensegrity) {
-                applied.add("tendon=" + tensegrity);
-            }
-
-            @Override
-            public void applyMuscleLoad(String load) {
-                applied.add("muscleLoad=" + load);
-            }
-        });
+        t.bind(new RecordingTarget(applied));
         return t;
     }
 

@@ -29,22 +29,7 @@ class PresetFileTest {
         ViewScene s = CubeViewScene.create();
         tuning = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), false, IntegratorCatalog.available());
         applied = new java.util.ArrayList<>();
-        tuning.bind(new Tuning.Target() {
-            @Override
-            public void applyParameter(String key, double value) {
-                applied.add(key + "=" + value);
-            }
-
-            @Override
-            public void applyIntegrator(IntegratorChoice choice) {
-                applied.add("integrator=" + choice.name());
-            }
-
-            @Override
-            public void applyTendonModel(boolean tensegrity) {
-                applied.add("tendon=" + tensegrity);
-            }
-        });
+        tuning.bind(new RecordingTarget(applied));
     }
 
     @Test
