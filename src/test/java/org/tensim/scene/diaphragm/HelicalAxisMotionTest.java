@@ -2,6 +2,7 @@ package org.tensim.scene.diaphragm;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -74,7 +75,10 @@ class HelicalAxisMotionTest {
         assertThrows(IllegalArgumentException.class, () -> k.setRibAmplitude(-0.1));
         assertThrows(IllegalArgumentException.class, () -> k.setRibAmplitude(3.5));
         assertThrows(IllegalArgumentException.class, () -> k.setMuscleAmplitudePa(Double.NaN));
-        assertThrows(IllegalArgumentException.class, () -> k.setMuscleAmplitudePa(25_000));
+        String m = assertThrows(IllegalArgumentException.class, () -> k.setMuscleAmplitudePa(35_000)).getMessage();
+        assertTrue(m.contains("30000.0 Pa") && m.contains("35000.0"), m);
+        k.setMuscleAmplitudePa(25_000); // within the fibres' range (an active stress up to 30 kPa)
+        k.setMuscleAmplitudePa(1000);
         assertEquals(1, k.ribAmplitude());
         assertEquals(1000, k.muscleAmplitudePa());
     }
