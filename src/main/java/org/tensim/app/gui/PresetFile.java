@@ -11,6 +11,8 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.tunable.DiaphragmViewScene;
 
 /**
  * Presets as JSON files, read and written through Jackson:
@@ -164,6 +166,12 @@ public final class PresetFile {
                 current.parameter(e.getKey()).validate(v, where + ": field '" + field + "'");
                 values.put(e.getKey(), v);
             }
+        }
+        // A version-1 preset without the muscle action meant the pressure's default amplitude, not the window's.
+        if (presetVersion == 1 && muscleLoad != null && !muscleLoad.equals(now.muscleLoad())
+                && values.containsKey(DiaphragmViewScene.MUSCLE_ACTION)
+                && (params == null || !params.has(DiaphragmViewScene.MUSCLE_ACTION))) {
+            values.put(DiaphragmViewScene.MUSCLE_ACTION, DiaphragmSetup.DEFAULT_MUSCLE_PA);
         }
         for (Iterator<String> it = root.fieldNames(); it.hasNext();) {
             String f = it.next();

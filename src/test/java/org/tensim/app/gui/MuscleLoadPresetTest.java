@@ -97,6 +97,11 @@ class MuscleLoadPresetTest {
         double[] a = ParameterBindingTest.run(fibres, dt, 150);
         double[] b = ParameterBindingTest.run(f.create(true, "pressure", t.snapshot().values()), dt, 150);
         assertTrue(!java.util.Arrays.equals(a, b), "the fibres at 3 kPa move otherwise");
+        // a version-1 preset without the muscle action meant the pressure's default amplitude
+        Files.writeString(v1, "{\"version\": 1, \"scene\": \"diaphragm\", \"parameters\": {\"timeStepS\": 0.01}}");
+        Settings partial = PresetFile.read(v1, tuning(f.create(true), f));
+        assertEquals("pressure", partial.muscleLoad());
+        assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, partial.values().get(DiaphragmViewScene.MUSCLE_ACTION));
         // a version-1 file cannot name a load
         Files.writeString(v1, "{\"version\": 1, \"scene\": \"diaphragm\", \"muscleLoad\": \"fibres\"}");
         String m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(v1, t)).getMessage();
