@@ -51,8 +51,9 @@ public final class GuiCommand implements Callable<Integer> {
     @Option(names = "--muscle-load", paramLabel = "MODEL",
             description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 15 kPa of fibre"
                     + " stress), pressure (vertical traction per unit area, 2.6 kPa) or paper-nodes (the paper's"
-                    + " per-node forces, 2.6 kPa); as `tensim diaphragm --muscle-load` (default: fibres; last-used"
-                    + " parameters made with another load are then not restored)")
+                    + " per-node forces, 2.6 kPa); as `tensim diaphragm --muscle-load` (default: fibres, or the load"
+                    + " of the restored last-used parameters; given, last-used parameters of another load are not"
+                    + " restored)")
     String muscleLoad;
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
