@@ -25,7 +25,7 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
     /** Default band stiffness, Pa/m (docs/diaphragm.md: boundary layer sqrt(E t / k_b) near 2 mm). */
     public static final double DEFAULT_BAND_PA_PER_M = 2.5e7;
     /** Default taper of the band's outer edge, m. */
-    public static final double DEFAULT_TAPER_M = 0.005;
+    public static final double DEFAULT_TAPER_M = 0.001;
 
     /** How the diaphragm is attached to the cage. */
     public enum Attachment {
