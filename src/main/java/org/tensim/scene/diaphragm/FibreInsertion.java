@@ -22,7 +22,9 @@ import org.tensim.io.mesh.TriangleMesh;
  * dome) it pulled the free edge up by 16 mm. Ramped over a length that the coarse meshes resolve,
  * the load enters the band as a smooth body force {@code ~ T / L} per unit area and the free edge
  * carries none. The transmitted force is unchanged: the same tension reaches the band along each
- * fibre; only where it is handed over changes. Measured (docs/diaphragm.md, "Fibre insertion").
+ * fibre; only where it is handed over changes. On a real mesh the rim includes the boundaries of
+ * its holes (foramina or meshing gaps): no fibre pulls across a hole. Measured (docs/diaphragm.md,
+ * "Fibre insertion and the band's edge").
  */
 final class FibreInsertion {
     /** Default insertion length L, m: one and a half times the band's 20 mm width (measured choice). */
