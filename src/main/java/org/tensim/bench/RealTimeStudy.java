@@ -60,7 +60,7 @@ public final class RealTimeStudy {
     /** CG relative residual for the implicit steps: 1e-2 and 1e-3 gave the same field to 4 digits here. */
     static final double CG_TOLERANCE = 1e-3;
     /** BDF2 steps tried, s (a multiple of each divides {@link StudyRun#SAMPLE_S} or the run). */
-    static final double[] BDF2_STEPS = {0.005, 0.01, 0.02, 0.025};
+    static final double[] BDF2_STEPS = {0.005, 0.01, 0.02, 0.025, 1.0 / 30, 0.05};
     /** CG iterations per step of the more accurate BDF2 rows (the default is {@link PrefactoredBdf2#DEFAULT_KRYLOV_ITERATIONS}). */
     static final int BDF2_MORE_CG = 8;
     /** Newton iterations of the most accurate BDF2 rows (the default is one: a linearly implicit step). */

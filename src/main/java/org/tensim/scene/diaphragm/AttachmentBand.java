@@ -45,6 +45,7 @@ final class AttachmentBand {
         double[] weight = new double[b.nv];
         RibCage.Segment[] nearest = new RibCage.Segment[b.nv];
         double[][] share = new double[b.nv][];
+        b.originDistance = new double[b.nv];
         for (int v = 0; v < b.nv; v++) {
             Vec3 q = b.t.node(v).position();
             double bestD = Double.POSITIVE_INFINITY;
@@ -61,6 +62,7 @@ final class AttachmentBand {
                 }
             }
             weight[v] = taper(bestD, w, taper);
+            b.originDistance[v] = bestD;
             if (sum > 0) {
                 for (int i = 0; i < own.length; i++) {
                     own[i] /= sum;

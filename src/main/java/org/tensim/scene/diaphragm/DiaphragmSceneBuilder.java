@@ -85,6 +85,8 @@ final class DiaphragmSceneBuilder {
     double[] area;
     RibCage cage;
     boolean[] attached;
+    /** Per diaphragm node, distance to the nearest cage segment the band ties to, m (null: no band). */
+    double[] originDistance;
     int attachedRibs;
     int attachedCartilage;
     int attachedSpine;
@@ -284,7 +286,8 @@ final class DiaphragmSceneBuilder {
             for (int v = 0; v < nv; v++) {
                 tendon[v] = labels[v] == DiaphragmScene.TENDON;
             }
-            MuscleFibres.add(t, mesh, p.tendonNormal(), tendonCut, tendon, area, thickness, lines);
+            MuscleFibres.add(t, mesh, p.tendonNormal(), tendonCut, tendon, area, thickness, lines,
+                    FibreInsertion.activation(mesh, surfaces, originDistance, FibreInsertion.DEFAULT_LENGTH_M));
             return;
         }
         double[] w = MusclePressure.weights(mesh, lines, bc.muscleLoad(), p.tendonNormal(), tendonCut, labels, area);

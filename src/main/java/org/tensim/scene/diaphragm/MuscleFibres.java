@@ -12,8 +12,10 @@ import org.tensim.model.Vec3;
  * load) and active stress {@code sigma_a(t) = P s(t)}, P the live muscle amplitude of
  * {@link DiaphragmControls} read as an active stress (Pa) and s(t) the breathing level. The tension
  * {@code T = sigma_a t} (N/m) is the same on every muscle triangle: along one fibre the tension of a
- * contracting muscle does not vary, so no weighting by the action lines applies. A triangle cut by
- * the tendon plane counts with its muscle area fraction (exact for a plane cutting a linear triangle).
+ * contracting muscle does not vary, so no weighting by the action lines applies, except over the
+ * insertion length at its ends, where it is handed to the origins ({@link FibreInsertion}). A triangle
+ * cut by the tendon plane counts with its muscle area fraction (exact for a plane cutting a linear
+ * triangle).
  *
  * <p>Fibre direction: the meridian towards the tendon. The diaphragm's costal, sternal and crural
  * fibres run from their origins on the ribs, the xiphoid and the spine up the zone of apposition
@@ -41,9 +43,11 @@ final class MuscleFibres {
      * @param tendon  per vertex: tendon (true) or muscle
      * @param area    vertex area shares, m^2 (weights of the tendon's centre)
      * @param thicknessM the diaphragm's thickness t, m
+     * @param activation per vertex, the share of the active stress in [0, 1] ({@link FibreInsertion}); a
+     *                   triangle takes its corners' mean; null: 1 everywhere
      */
     static int add(Topology t, TriangleMesh m, Vec3 normal, double cut, boolean[] tendon, double[] area,
-            double thicknessM, ActionLines lines) {
+            double thicknessM, ActionLines lines, double[] activation) {
         double cx = 0;
         double cy = 0;
         double w = 0;
@@ -85,7 +89,11 @@ final class MuscleFibres {
             if (f.norm() < MIN_MERIDIAN) {
                 continue;
             }
-            t.addFibre(c, c, f, 0.5 * thicknessM * fraction, stress);
+            double share = activation == null ? 1 : (activation[c[0]] + activation[c[1]] + activation[c[2]]) / 3;
+            if (share == 0) {
+                continue;
+            }
+            t.addFibre(c, c, f, 0.5 * thicknessM * fraction * share, stress);
             added++;
         }
         return added;
