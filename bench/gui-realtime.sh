@@ -4,13 +4,13 @@
 # headroom), between two headless runs of the same integrator and step as a reference of the
 # machine's speed at that moment (the machine is shared: compare ratios, not raw figures).
 # Usage: bench/gui-realtime.sh [SECONDS]   (default 60; takes about 2 x SECONDS + 2 minutes)
-# GUI_ARGS and HEADLESS_ARGS choose the configuration; the defaults are the GUI's (bdf2 at 20 ms).
+# GUI_ARGS and HEADLESS_ARGS choose the configuration; the defaults are the GUI's (bdf2 at 25 ms, as --realtime).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 S=${1:-60}
 GUI_ARGS=${GUI_ARGS:-"--scene diaphragm"}
-HEADLESS_ARGS=${HEADLESS_ARGS:-"--integrator bdf2 --dt 0.02"}
+HEADLESS_ARGS=${HEADLESS_ARGS:-"--realtime"}
 OUT=out/perf/gui-realtime
 mkdir -p "$OUT"
 CFG=$(mktemp -d)

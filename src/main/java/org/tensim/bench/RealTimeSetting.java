@@ -45,16 +45,15 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
 
     /**
      * The default mesh's setting with the muscle's active fibre tension ({@code --muscle-load fibres}, the default
-     * load), from the
-     * study of {@link #measured()}: without the pressure's compressed muscle and its fast event at 1.0-1.1 s, BDF2
-     * at 5 ms with its default iterations is within the tolerance (4.5 % at end-inspiration, 4.8 % at the worst
-     * moment, 0.75 s), 12 times faster than RK2 by the wall clock in the same study; at 10 and 20 ms it is 6.4-8.3 %
-     * off (docs/diaphragm.md, "Active fibre tension: measured").
+     * load, with its insertion), from the study of {@link #measured()}: BDF2 at 25 ms with its default iterations
+     * is within the tolerance (4.2 % at end-inspiration, 5.0 % at the worst moment, 1.2 s; apex 0.02 mm from RK2's)
+     * at 1.19 of real time by the wall clock, scene-graph sync included; at 20 ms 3.7 % / 4.5 % at 0.89, at 5 ms
+     * 0.3 % / 0.5 % at 0.26; at 33 ms 5.6 % / 5.7 %, outside (docs/diaphragm.md, "Real time with the fibres").
      */
-    public static final RealTimeSetting DEFAULT_MESH_FIBRES = new RealTimeSetting("bdf2", 0.005,
-            PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS, PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, 2, 0.0448, 0.0480,
-            0.06, 0.244, "2026-11-23 21:04-21:06 UTC, --muscle-load fibres, load average 1.0-1.3 on 2 cores;"
-                    + " 0.206 of real time per CPU second");
+    public static final RealTimeSetting DEFAULT_MESH_FIBRES = new RealTimeSetting("bdf2", 0.025,
+            PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS, PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, 2, 0.0418, 0.0498,
+            0.02, 1.19, "2026-11-23 22:58-23:00 UTC, load average 1.3-1.4 on 2 cores; 1.03 of real time per CPU"
+                    + " second");
 
     /**
      * The setting measured for a muscle-load model as on the command line: the fibres' for {@code fibres} or null

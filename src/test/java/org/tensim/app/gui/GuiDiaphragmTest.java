@@ -54,9 +54,8 @@ class GuiDiaphragmTest {
             waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
             assertEquals(IntegratorCatalog.REAL_TIME, w.tuning().integrator().name());
             assertEquals(IntegratorCatalog.REAL_TIME_STEP_S, w.runner().timeStep());
-            var running = (org.tensim.solver.prefactored.PrefactoredBdf2) w.scene().bodies().get(0).simulation()
-                    .integrator();
-            assertEquals(IntegratorCatalog.REAL_TIME_KRYLOV, running.krylovIterations(), "the running simulation's");
+            assertEquals(IntegratorCatalog.REAL_TIME,
+                    w.scene().bodies().get(0).simulation().integrator().name(), "the running simulation's");
             assertEquals(2, w.runner().threads(), "--threads 2 reaches the step");
             // BDF2 estimates its error once two steps of the same size are behind it.
             waitFor("an error estimate", () -> Double.isFinite(w.runner().errorEstimate()) && w.runner().steps() > 3);

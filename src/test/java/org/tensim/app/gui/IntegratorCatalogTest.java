@@ -18,19 +18,14 @@ class IntegratorCatalogTest {
     void offersEveryRegisteredIntegratorThePapersFirst() {
         var l = IntegratorCatalog.available();
         assertEquals("rk2", l.get(0).name());
-        assertEquals(Integrators.names().size() + 3, l.size(),
-                "the registry's, the real-time implicit Euler, the real-time BDF2 and BDF2 with two Newton iterations");
+        assertEquals(Integrators.names().size() + 2, l.size(),
+                "the registry's, the real-time implicit Euler and BDF2 with two Newton iterations");
         for (IntegratorChoice c : l) {
             if (c.name().equals(IntegratorCatalog.REAL_TIME_IMPLICIT)) {
                 ImplicitEuler ie = (ImplicitEuler) c.create();
                 assertEquals("implicit-euler", ie.name());
                 // It stops its CG at 1e-3: on a stiff system it needs fewer products than the registry's.
                 assertEquals(IntegratorCatalog.REAL_TIME_CG_TOLERANCE, ie.tolerance());
-            } else if (c.name().equals(IntegratorCatalog.REAL_TIME)) {
-                PrefactoredBdf2 b = (PrefactoredBdf2) c.create();
-                assertEquals("bdf2", b.name());
-                assertEquals(1, b.newtonIterations());
-                assertEquals(IntegratorCatalog.REAL_TIME_KRYLOV, b.krylovIterations());
             } else if (c.name().equals(IntegratorCatalog.LARGE_STEP_ACCURATE)) {
                 PrefactoredBdf2 b = (PrefactoredBdf2) c.create();
                 assertEquals("bdf2", b.name());
