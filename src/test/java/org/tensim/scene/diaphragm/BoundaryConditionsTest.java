@@ -144,7 +144,8 @@ class BoundaryConditionsTest {
         e = assertThrows(IllegalArgumentException.class, () -> DiaphragmScene.build(
                 TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(6))),
                 SceneFixture.boxes(), DiaphragmParameters.defaults().withAttachThreshold(0.004), BreathingCycle.quiet(),
-                new DiaphragmControls(1, 2600), null, BAND));
+                new DiaphragmControls(1, 2600), null, new BoundaryConditions(BoundaryConditions.Attachment.BAND,
+                        BoundaryConditions.DEFAULT_BAND_PA_PER_M, 0.005, BoundaryConditions.MuscleLoad.PRESSURE, true)));
         assertTrue(e.getMessage().contains("taper (5.0 mm)") && e.getMessage().contains("threshold (4.0 mm)"),
                 e.getMessage());
     }
