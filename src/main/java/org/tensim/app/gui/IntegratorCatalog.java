@@ -33,9 +33,11 @@ public final class IntegratorCatalog {
      */
     public static final String REAL_TIME = PrefactoredBdf2.NAME;
     /**
-     * {@link #REAL_TIME} with 2 Newton iterations of up to 8 CG iterations a step: one Newton iteration is
-     * not enough from 10 ms on the default mesh (20.6 % from RK2 at end-inspiration), two end within 2 %
-     * of it at 10 and 20 ms (docs/diaphragm.md, real-time study); about three times the cost of a step.
+     * {@link #REAL_TIME} with 2 Newton iterations of up to 8 CG iterations a step: with the muscle pressure
+     * one Newton iteration is not enough from 10 ms on the default mesh (20.6 % from RK2 at end-inspiration),
+     * two end within 2 % of it at 10 and 20 ms; with the fibres (the default load) 0.3 % at end-inspiration
+     * and 1.9 % at the worst moment at 20 ms, against 3.7 % and 4.5 % with one (docs/diaphragm.md, real-time
+     * study); about three times the cost of a step.
      */
     public static final String LARGE_STEP_ACCURATE = "bdf2-newton2";
     /** Newton iterations per step of {@link #LARGE_STEP_ACCURATE}. */
