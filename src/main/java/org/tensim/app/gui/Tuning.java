@@ -31,9 +31,7 @@ public final class Tuning {
         void applyTendonModel(boolean tensegrity);
 
         /** A new muscle-load model (as on the command line): the scene is rebuilt with it. */
-        default void applyMuscleLoad(String muscleLoad) {
-            throw new UnsupportedOperationException("this target cannot change the muscle load to " + muscleLoad);
-        }
+        void applyMuscleLoad(String muscleLoad);
     }
 
     private final String scene;

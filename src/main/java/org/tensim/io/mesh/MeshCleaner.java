@@ -232,8 +232,8 @@ public final class MeshCleaner {
         return parent;
     }
 
-    /** {boundary edges, non-manifold edges, boundary loops}. */
-    static int[] edgeStatistics(int[] tri, int nv) {
+    /** How many triangles use each edge, keyed {@code min * nv + max} of its two vertices. */
+    private static Map<Long, Integer> edgeUses(int[] tri, int nv) {
         Map<Long, Integer> uses = new HashMap<>();
         for (int t = 0; t < tri.length / 3; t++) {
             for (int k = 0; k < 3; k++) {
@@ -242,6 +242,25 @@ public final class MeshCleaner {
                 uses.merge(Math.min(a, b) * (long) nv + Math.max(a, b), 1, Integer::sum);
             }
         }
+        return uses;
+    }
+
+    /** Per vertex: an end of a boundary edge (an edge used by one triangle only): on a hole or an open rim. */
+    public static boolean[] boundaryVertices(TriangleMesh m) {
+        int nv = m.vertexCount();
+        boolean[] onBoundary = new boolean[nv];
+        for (Map.Entry<Long, Integer> e : edgeUses(m.triangles(), nv).entrySet()) {
+            if (e.getValue() == 1) {
+                onBoundary[(int) (e.getKey() / nv)] = true;
+                onBoundary[(int) (e.getKey() % nv)] = true;
+            }
+        }
+        return onBoundary;
+    }
+
+    /** {boundary edges, non-manifold edges, boundary loops}. */
+    static int[] edgeStatistics(int[] tri, int nv) {
+        Map<Long, Integer> uses = edgeUses(tri, nv);
         int boundary = 0;
         int nonManifold = 0;
         int[] parent = new int[nv];

@@ -1,5 +1,6 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.TriangleMesh;
 
 /**
@@ -48,15 +49,11 @@ final class FibreInsertion {
      * (an open surface's boundary).
      */
     static boolean[] rim(TriangleMesh m, TwoSurfaces s) {
-        boolean[] rim = new boolean[m.vertexCount()];
-        java.util.Map<Long, Integer> edgeUse = new java.util.HashMap<>();
+        boolean[] rim = MeshCleaner.boundaryVertices(m);
         for (int t = 0; t < m.triangleCount(); t++) {
             int upper = 0;
             for (int k = 0; k < 3; k++) {
                 upper += s.isUpper(m.corner(t, k)) ? 1 : 0;
-                int i = m.corner(t, k);
-                int j = m.corner(t, (k + 1) % 3);
-                edgeUse.merge(((long) Math.min(i, j) << 32) | Math.max(i, j), 1, Integer::sum);
             }
             if (upper == 1 || upper == 2) {
                 for (int k = 0; k < 3; k++) {
@@ -64,12 +61,6 @@ final class FibreInsertion {
                 }
             }
         }
-        edgeUse.forEach((edge, uses) -> {
-            if (uses == 1) {
-                rim[(int) (edge >>> 32)] = true;
-                rim[(int) (edge & 0xffffffffL)] = true;
-            }
-        });
         return rim;
     }
 

@@ -55,6 +55,11 @@ class ParameterBindingTest {
         public void applyTendonModel(boolean tensegrity) {
             throw new UnsupportedOperationException("not needed here");
         }
+
+        @Override
+        public void applyMuscleLoad(String muscleLoad) {
+            throw new UnsupportedOperationException("not needed here");
+        }
     }
 
     static Stream<Arguments> sceneParameters() {
