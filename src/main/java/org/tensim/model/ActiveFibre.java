@@ -3,9 +3,9 @@ package org.tensim.model;
 import java.util.function.DoubleUnaryOperator;
 
 /**
- * An active fibre tension on a triangle: a muscle's contraction as a constant membrane tension
- * along the fibre direction, whatever the fibre's length (the active part of a Hill-type muscle at
- * the plateau of its force-length curve).
+ * An active fibre tension on a triangle: a muscle's contraction as a membrane tension along the
+ * fibre direction, scaled by the active force-length relation f_L ({@link ForceLength}: the full
+ * tension at and above the rest length, less as the fibre shortens, none below 0.4 of it).
  *
  * <p>Corners as in {@link TriangleElement}: corner k is the midpoint of nodes {@code p[k]} and
  * {@code q[k]}. With the rest corners Y_k, the unit fibre direction f0 in the rest triangle's plane
@@ -14,7 +14,8 @@ import java.util.function.DoubleUnaryOperator;
  * and its stretch {@code lambda = |F f0|}. The energy and the forces are
  *
  * <pre>
- *   W = sigma_a(t) t A0 lambda,    f_k = -dW/dy_k:   f_1 = -T A0 c_1 u,  f_2 = -T A0 c_2 u,  f_0 = -(f_1 + f_2)
+ *   W = sigma_a(t) t A0 Phi(lambda),   Phi' = f_L,
+ *   f_k = -dW/dy_k:   f_1 = -T f_L A0 c_1 u,  f_2 = -T f_L A0 c_2 u,  f_0 = -(f_1 + f_2)
  * </pre>
  *
  * with {@code u = F f0 / lambda}, sigma_a(t) the active stress (Pa, &gt;= 0), t the thickness the

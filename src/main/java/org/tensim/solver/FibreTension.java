@@ -3,19 +3,23 @@ package org.tensim.solver;
 import java.util.List;
 import java.util.function.DoubleUnaryOperator;
 import org.tensim.model.ActiveFibre;
+import org.tensim.model.ForceLength;
 
 /**
  * The active fibre tensions of a {@link SystemState} ({@link ActiveFibre}) on flat arrays allocated
  * once: forces, energy and tangent stiffness. Fibre e has corner weights {@code g = (-(c_1 + c_2),
  * c_1, c_2)} (each shared equally by a corner's two nodes), volume {@code V = t A0} (m^3) and active
- * stress sigma_a(t) (Pa):
+ * stress sigma_a(t) (Pa), scaled by the force-length relation f_L ({@link ForceLength}, with its
+ * integral Phi):
  *
  * <pre>
- *   a = sum_k g_k y_k = F f0,   lambda = |a|,   u = a / lambda,   W = sigma_a V lambda,
- *   f_k = -sigma_a V g_k u,     K_kl = d^2 W / dy_k dy_l = sigma_a V g_k g_l (I - u u^T) / lambda
+ *   a = sum_k g_k y_k = F f0,   lambda = |a|,   u = a / lambda,   W = sigma_a V Phi(lambda),
+ *   f_k = -sigma_a V f_L(lambda) g_k u,
+ *   K_kl = d^2 W / dy_k dy_l = sigma_a V g_k g_l (f_L(lambda) (I - u u^T) / lambda + f_L'(lambda) u u^T)
  * </pre>
  *
- * K is positive semi-definite for sigma_a &gt;= 0 (a tensed string's geometric stiffness).
+ * K is positive semi-definite for sigma_a &gt;= 0: a tensed string's geometric stiffness plus the
+ * ascending limb's axial stiffness (f_L' &gt;= 0).
  */
 public final class FibreTension {
     private final int[] p3; // per fibre and corner: 3 x node id
@@ -24,7 +28,8 @@ public final class FibreTension {
     private final double[] volume; // per fibre: t A0, m^3
     private final DoubleUnaryOperator[] stress;
     private final double[] dir; // tangent: u per fibre
-    private final double[] scale; // tangent: sigma_a V / lambda per fibre, N/m
+    private final double[] scale; // tangent: sigma_a V f_L / lambda per fibre, N/m
+    private final double[] axial; // tangent: sigma_a V f_L' per fibre, N/m
     private final double[] scratch = new double[3];
 
     FibreTension(List<ActiveFibre> fibres) {
@@ -36,6 +41,7 @@ public final class FibreTension {
         stress = new DoubleUnaryOperator[n];
         dir = new double[3 * n];
         scale = new double[n];
+        axial = new double[n];
         for (int e = 0; e < n; e++) {
             ActiveFibre f = fibres.get(e);
             for (int k = 0; k < 3; k++) {
@@ -85,7 +91,7 @@ public final class FibreTension {
             if (!(len > 0)) {
                 continue;
             }
-            final double m = s * volume[e] / len;
+            final double m = s * volume[e] * ForceLength.value(len) / len;
             final double c1 = coef[2 * e];
             final double c2 = coef[2 * e + 1];
             final int o = 3 * e;
@@ -110,7 +116,8 @@ public final class FibreTension {
         double sum = 0;
         for (int e = 0; e < volume.length; e++) {
             image(e, x, a);
-            sum += stress[e].applyAsDouble(t) * volume[e] * Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+            sum += stress[e].applyAsDouble(t) * volume[e]
+                    * ForceLength.integral(Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]));
         }
         return sum;
     }
@@ -122,7 +129,9 @@ public final class FibreTension {
             image(e, px, a);
             final double len = Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
             final double s = stress[e].applyAsDouble(t);
-            scale[e] = len > 0 ? Math.max(0, s) * volume[e] / len : 0;
+            final double sv = Math.max(0, s) * volume[e];
+            scale[e] = len > 0 ? sv * ForceLength.value(len) / len : 0;
+            axial[e] = len > 0 ? sv * ForceLength.slope(len) : 0;
             for (int d = 0; d < 3; d++) {
                 dir[3 * e + d] = len > 0 ? a[d] / len : 0;
             }
@@ -136,7 +145,8 @@ public final class FibreTension {
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
         for (int e = 0; e < volume.length; e++) {
             final double sc = scale[e] * weight;
-            if (sc == 0) {
+            final double sa = axial[e] * weight;
+            if (sc == 0 && sa == 0) {
                 continue;
             }
             final int o = 3 * e;
@@ -161,9 +171,9 @@ public final class FibreTension {
             final double uy = dir[o + 1];
             final double uz = dir[o + 2];
             final double uw = ux * wx + uy * wy + uz * wz;
-            final double px = sc * (wx - uw * ux);
-            final double py = sc * (wy - uw * uy);
-            final double pz = sc * (wz - uw * uz);
+            final double px = sc * (wx - uw * ux) + sa * uw * ux;
+            final double py = sc * (wy - uw * uy) + sa * uw * uy;
+            final double pz = sc * (wz - uw * uz) + sa * uw * uz;
             for (int k = 0; k < 3; k++) {
                 final double g = 0.5 * (k == 0 ? g0 : k == 1 ? g1 : g2);
                 for (int end = 0; end < 2; end++) {

@@ -11,9 +11,10 @@ import org.tensim.model.Vec3;
 
 /**
  * The active fibre tension ({@link org.tensim.model.ActiveFibre}, {@link FibreTension}) as physics:
- * forces are minus the gradient of {@code W = sigma t A0 |F f0|}, they are internal (no net force,
- * no net moment), W ignores rigid motions, the tension shortens the fibre, a strip pulled by its
- * fibres carries {@code sigma t} per unit width, and the tangent is the forces' derivative.
+ * forces are minus the gradient of {@code W = sigma t A0 Phi(|F f0|)} (Phi the integral of the
+ * force-length relation), they are internal (no net force, no net moment), W ignores rigid motions,
+ * the tension shortens the fibre, a strip pulled by its fibres carries {@code f_L sigma t} per unit
+ * width, and the tangent is the forces' derivative.
  */
 class FibreTensionTest {
     private static final double SIGMA = 20e3;
@@ -142,7 +143,8 @@ class FibreTensionTest {
     @Test
     void aStripPulledByItsFibresCarriesSigmaTimesThicknessPerUnitWidth() {
         // A strip L x B in the plane z = 0 of two triangles, fibres along x: the nodes at x = L are pulled
-        // back towards x = 0 by sigma t B in total, the nodes at x = 0 forward by the same, whatever the stretch.
+        // back towards x = 0 by f_L(stretch) sigma t B in total, the nodes at x = 0 forward by the same: the
+        // full sigma t B on the plateau (stretch >= 1), less on the ascending limb, none below 0.4.
         double len = 0.03;
         double width = 0.02;
         Topology t = new Topology();
@@ -153,13 +155,17 @@ class FibreTensionTest {
         t.addFibre(new int[] {0, 1, 2}, new int[] {0, 1, 2}, new Vec3(1, 0, 0), T, time -> SIGMA);
         t.addFibre(new int[] {0, 2, 3}, new int[] {0, 2, 3}, new Vec3(1, 0, 0), T, time -> SIGMA);
         SystemState s = SystemState.compile(t);
-        for (double stretch : new double[] {1, 1.3, 0.8}) {
+        double[] stretches = {1, 1.3, 0.8, 0.5, 0.3};
+        double[] share = {1, 1, 1 - 4 * 0.2 * 0.2, 9 * 0.1 * 0.1, 0}; // Blemker et al. 2005's curve, by hand
+        for (int i = 0; i < stretches.length; i++) {
+            double stretch = stretches[i];
             double[] x = s.x.clone();
             x[3] = x[6] = stretch * len;
             double[] f = new double[x.length];
             s.fibres.forces(0, x, f);
-            assertEquals(-SIGMA * T * width, f[3] + f[6], 1e-9 * SIGMA * T * width, "stretch " + stretch);
-            assertEquals(SIGMA * T * width, f[0] + f[9], 1e-9 * SIGMA * T * width, "stretch " + stretch);
+            double pull = share[i] * SIGMA * T * width;
+            assertEquals(-pull, f[3] + f[6], 1e-9 * SIGMA * T * width, "stretch " + stretch);
+            assertEquals(pull, f[0] + f[9], 1e-9 * SIGMA * T * width, "stretch " + stretch);
             assertEquals(0, f[1] + f[4] + f[7] + f[10], 1e-9 * SIGMA * T * width);
         }
     }
