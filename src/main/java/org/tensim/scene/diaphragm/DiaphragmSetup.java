@@ -41,7 +41,7 @@ public final class DiaphragmSetup {
      * Default peak active fibre stress, Pa, for {@link BoundaryConditions.MuscleLoad#FIBRES} (docs/diaphragm.md,
      * "Active fibre tension": gives a quiet-breathing dome excursion on the default mesh).
      */
-    public static final double DEFAULT_FIBRE_STRESS_PA = 15_000;
+    public static final double DEFAULT_FIBRE_STRESS_PA = 18_000;
 
     /** The default muscle amplitude of the default muscle load ({@link BoundaryConditions#defaults()}), Pa. */
     public static double defaultMusclePa() {
