@@ -97,7 +97,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "fibres (active tension along the fibres to the central tendon, 15 kPa of fibre stress),"
+            description = "fibres (active tension along the fibres to the central tendon, 18 kPa of fibre stress),"
                     + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
                     + " paper's per-node forces, 2.6 kPa) (default: ${DEFAULT-VALUE})")
     String muscleLoad = BoundaryConditions.DEFAULT_MUSCLE_LOAD;

@@ -45,14 +45,15 @@ public record RealTimeSetting(String integrator, double dtS, int newtonIteration
 
     /**
      * The default mesh's setting with the muscle's active fibre tension ({@code --muscle-load fibres}, the default
-     * load, with its insertion), from the study of {@link #measured()}: BDF2 at 25 ms with its default iterations
-     * is within the tolerance (4.2 % at end-inspiration, 5.0 % at the worst moment, 1.2 s; apex 0.02 mm from RK2's)
-     * at 1.19 of real time by the wall clock, scene-graph sync included; at 20 ms 3.7 % / 4.5 % at 0.89, at 5 ms
-     * 0.3 % / 0.5 % at 0.26; at 33 ms 5.6 % / 5.7 %, outside (docs/diaphragm.md, "Real time with the fibres").
+     * load, with its insertion and the force-length relation), from the study of {@link #measured()}: BDF2 at 25 ms
+     * with its default iterations is within the tolerance (2.7 % at end-inspiration, 4.9 % at the worst moment,
+     * 1.1 s; apex 0.01 mm from RK2's) at 1.45 of real time by the wall clock, scene-graph sync included; at 20 ms
+     * 2.5 % / 4.4 % at 1.09, at 5 ms 0.2 % / 0.5 % at 0.28; at 33 ms 4.6 % / 5.3 %, outside (docs/diaphragm.md,
+     * "Real time with the fibres").
      */
     public static final RealTimeSetting DEFAULT_MESH_FIBRES = new RealTimeSetting("bdf2", 0.025,
-            PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS, PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, 2, 0.0418, 0.0498,
-            0.02, 1.19, "2026-11-23 22:58-23:00 UTC, load average 1.3-1.4 on 2 cores; 1.03 of real time per CPU"
+            PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS, PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, 2, 0.0268, 0.0487,
+            0.01, 1.45, "2026-11-24 00:23-00:24 UTC, load average 0.9-1.5 on 2 cores; 1.27 of real time per CPU"
                     + " second");
 
     /**

@@ -49,7 +49,7 @@ public final class GuiCommand implements Callable<Integer> {
     Path boxes;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 15 kPa of fibre"
+            description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 18 kPa of fibre"
                     + " stress), pressure (vertical traction per unit area, 2.6 kPa) or paper-nodes (the paper's"
                     + " per-node forces, 2.6 kPa); as `tensim diaphragm --muscle-load` (default: fibres, or the load"
                     + " of the restored last-used parameters; given, last-used parameters of another load are not"

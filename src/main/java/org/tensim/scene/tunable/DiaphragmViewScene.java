@@ -159,7 +159,7 @@ public final class DiaphragmViewScene implements ViewScene {
     /**
      * As {@link #factory(Path, MeshUnits, double, int, Path)} with the attachment and muscle-load models (the
      * load can be changed per scene: {@link SceneFactory#create(boolean, String, Map)}); the muscle action's
-     * default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 15 kPa of active fibre
+     * default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 18 kPa of active fibre
      * stress, 2.6 kPa of pressure).
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes,
