@@ -26,6 +26,9 @@ final class RealTimeChart {
                 "relative RMS displacement error (o end, \u25c6 worst moment)", 1100, 700);
         c.getStyler().setXAxisLogarithmic(true);
         c.getStyler().setYAxisLogarithmic(true);
+        // Two decades or so on each axis: label 1-9 times each power of ten, not the decades alone.
+        c.getStyler().setXAxisLogarithmicDecadeOnly(false);
+        c.getStyler().setYAxisLogarithmicDecadeOnly(false);
         List<String> labels = new ArrayList<>();
         for (Map<String, Object> r : rows) {
             if (!labels.contains((String) r.get("config")) && !r.get("config").equals(rows.get(0).get("config"))) {

@@ -126,6 +126,10 @@ final class ResolutionAnalysis {
                 "mean edge length, mm", "relative RMS displacement error at end-inspiration", 900, 600);
         c.getStyler().setXAxisLogarithmic(true);
         c.getStyler().setYAxisLogarithmic(true);
+        // About a decade of element sizes and errors: label 1-9 times each power of ten, not the decades alone
+        // (one labelled tick per axis otherwise).
+        c.getStyler().setXAxisLogarithmicDecadeOnly(false);
+        c.getStyler().setYAxisLogarithmicDecadeOnly(false);
         List<String> families = new ArrayList<>();
         for (Map<String, Object> r : rows) {
             if (!families.contains((String) r.get("family"))) {
