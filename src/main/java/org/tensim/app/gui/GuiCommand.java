@@ -195,8 +195,11 @@ public final class GuiCommand implements Callable<Integer> {
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime, boolean loadGiven) throws Exception {
         ViewScene first = factory.create(true);
-        Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
-                IntegratorCatalog.available(), factory.muscleLoad());
+        Tuning tuning = factory.muscleLoad() == null
+                ? new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
+                        IntegratorCatalog.available())
+                : new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
+                        IntegratorCatalog.available(), factory.muscleLoad(), factory::parameters);
         if (realTime) {
             tuning.setIntegrator(IntegratorCatalog.REAL_TIME);
             tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);

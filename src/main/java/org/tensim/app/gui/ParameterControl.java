@@ -22,7 +22,8 @@ final class ParameterControl extends JPanel {
     private static final int TICKS = 1000;
     private static final Color BAD = new Color(255, 205, 205);
 
-    private final TunableParameter p;
+    private TunableParameter p; // the tuning's description of the parameter, replaced when the muscle load changes
+    private final JLabel label = new JLabel();
     private final Tuning tuning;
     private final Consumer<String> errors;
     private final JSlider slider = new JSlider(0, TICKS);
@@ -30,24 +31,16 @@ final class ParameterControl extends JPanel {
     private final Color normal;
     private boolean updating;
 
-    ParameterControl(TunableParameter p, Tuning tuning, Consumer<String> errors) {
+    ParameterControl(TunableParameter param, Tuning tuning, Consumer<String> errors) {
         super(new BorderLayout(4, 0));
-        this.p = p;
+        this.p = param;
         this.tuning = tuning;
         this.errors = errors;
-        setName("param." + p.key());
-        slider.setName("slider." + p.key());
-        field.setName("field." + p.key());
+        setName("param." + param.key());
+        slider.setName("slider." + param.key());
+        field.setName("field." + param.key());
         normal = field.getBackground();
-        JLabel label = new JLabel(p.labelWithUnit() + (p.restarts() ? ", restarts" : ""));
-        String tip = "<html>" + p.description() + "<br>Range " + TunableParameter.format(p.min()) + " to "
-                + TunableParameter.format(p.max()) + " " + p.unit() + (p.logarithmic() ? " (log scale)" : "")
-                + "; default " + TunableParameter.format(p.defaultValue()) + ". Preset key: " + p.key()
-                + (p.restarts() ? "<br><b>A change restarts the simulation from rest</b> (it needs a new scene)." : "")
-                + "</html>";
-        label.setToolTipText(tip);
-        slider.setToolTipText(tip);
-        field.setToolTipText(tip);
+        describe();
         slider.setPreferredSize(new Dimension(150, slider.getPreferredSize().height));
         add(label, BorderLayout.NORTH);
         add(slider, BorderLayout.CENTER);
@@ -68,10 +61,33 @@ final class ParameterControl extends JPanel {
         refresh();
     }
 
+    /** The label and the tooltips from the parameter's description. */
+    private void describe() {
+        label.setText(p.labelWithUnit() + (p.restarts() ? ", restarts" : ""));
+        String tip = "<html>" + p.description() + "<br>Range " + TunableParameter.format(p.min()) + " to "
+                + TunableParameter.format(p.max()) + " " + p.unit() + (p.logarithmic() ? " (log scale)" : "")
+                + "; default " + TunableParameter.format(p.defaultValue()) + ". Preset key: " + p.key()
+                + (p.restarts() ? "<br><b>A change restarts the simulation from rest</b> (it needs a new scene)." : "")
+                + "</html>";
+        label.setToolTipText(tip);
+        slider.setToolTipText(tip);
+        field.setToolTipText(tip);
+    }
+
+    /** The label shown above the slider (for tests). */
+    String labelText() {
+        return label.getText();
+    }
+
     /** Shows the tuning's current value. */
     void refresh() {
         updating = true;
         try {
+            TunableParameter now = tuning.parameter(p.key());
+            if (now != p) {
+                p = now;
+                describe();
+            }
             double v = tuning.get(p.key());
             slider.setValue((int) Math.round(p.toFraction(v) * TICKS));
             field.setText(TunableParameter.format(v));

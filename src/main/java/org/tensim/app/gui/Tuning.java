@@ -35,7 +35,9 @@ public final class Tuning {
     }
 
     private final String scene;
-    private final List<TunableParameter> parameters;
+    // Replaced (same keys and ranges) when the muscle load changes; read on any thread.
+    private volatile List<TunableParameter> parameters;
+    private java.util.function.Function<String, List<TunableParameter>> parametersForLoad;
     private final List<IntegratorChoice> integrators;
     private final boolean tendonChoice;
     private final Map<String, Double> values = new LinkedHashMap<>();
@@ -78,6 +80,19 @@ public final class Tuning {
             List<IntegratorChoice> integrators, String muscleLoad) {
         this(scene, sceneParameters, defaultDtS, tendonChoice, integrators);
         this.muscleLoad = muscleLoad;
+    }
+
+    /**
+     * As the constructor above, with the scene's parameters for each muscle-load model
+     * ({@link org.tensim.scene.tunable.SceneFactory#parameters(String)}): a change of the load then also changes
+     * the parameters' labels, defaults and descriptions (the muscle action is an active stress with the fibres,
+     * a pressure otherwise), as the rebuilt scene has them.
+     */
+    public Tuning(String scene, List<TunableParameter> sceneParameters, double defaultDtS, boolean tendonChoice,
+            List<IntegratorChoice> integrators, String muscleLoad,
+            java.util.function.Function<String, List<TunableParameter>> parametersForLoad) {
+        this(scene, sceneParameters, defaultDtS, tendonChoice, integrators, muscleLoad);
+        this.parametersForLoad = parametersForLoad;
     }
 
     /** The time step parameter, s, log scale from 10 us to 50 ms, defaulting to the scene's. */
@@ -205,10 +220,30 @@ public final class Tuning {
             return;
         }
         muscleLoad = load;
+        if (parametersForLoad != null) {
+            describe(parametersForLoad.apply(load));
+        }
         if (target != null) {
             target.applyMuscleLoad(load);
         }
         fire();
+    }
+
+    /** Takes the scene's parameters' descriptions (same keys, the time step kept); values are unchanged. */
+    private void describe(List<TunableParameter> sceneParameters) {
+        List<TunableParameter> all = new ArrayList<>(sceneParameters);
+        all.add(parameter(TIME_STEP));
+        if (all.size() != parameters.size()) {
+            throw new IllegalStateException("the scene's parameters for another muscle load differ in number: "
+                    + all.size() + " against " + parameters.size());
+        }
+        for (int i = 0; i < all.size(); i++) {
+            if (!all.get(i).key().equals(parameters.get(i).key())) {
+                throw new IllegalStateException("the scene's parameters for another muscle load differ: '"
+                        + all.get(i).key() + "' where '" + parameters.get(i).key() + "' was");
+            }
+        }
+        parameters = List.copyOf(all);
     }
 
     private void checkMuscleLoad(String load, String source) {

@@ -199,6 +199,12 @@ public final class DiaphragmViewScene implements ViewScene {
             }
 
             @Override
+            public List<TunableParameter> parameters(String muscleLoad) {
+                return DiaphragmViewScene.parameters(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
+                        muscleLoad));
+            }
+
+            @Override
             public ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
                 BoundaryConditions b = muscleLoad == null ? bc
                         : bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));

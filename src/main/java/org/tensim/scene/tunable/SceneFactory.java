@@ -50,6 +50,18 @@ public interface SceneFactory {
         return create(tensegrityTendon, values);
     }
 
+    /**
+     * The scene's parameters with a muscle-load model (their labels, defaults and descriptions depend on it: the
+     * muscle action is an active stress with the fibres, a pressure otherwise), without building a scene.
+     *
+     * @param muscleLoad the model as on the command line
+     * @throws IllegalArgumentException for an unknown model, or any model for a scene without a muscle
+     */
+    default java.util.List<TunableParameter> parameters(String muscleLoad) {
+        throw new IllegalArgumentException("muscle load '" + muscleLoad + "': scene '" + name()
+                + "' has no muscle load to choose");
+    }
+
     /** A new scene at rest with every parameter at its default. */
     default ViewScene create(boolean tensegrityTendon) {
         return create(tensegrityTendon, Map.of());

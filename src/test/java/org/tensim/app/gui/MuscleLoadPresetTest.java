@@ -159,4 +159,33 @@ class MuscleLoadPresetTest {
         assertEquals("pressure", restored.muscleLoad());
         assertEquals(2600, restored.get(DiaphragmViewScene.MUSCLE_ACTION));
     }
+
+    @Test
+    void aPresetThatSwitchesTheLoadRelabelsTheMuscleSlider() throws Exception {
+        SceneFactory f = ParameterBindingTest.coarseDiaphragm();
+        ViewScene first = f.create(true);
+        Tuning t = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), f.hasTendonChoice(),
+                IntegratorCatalog.available(), f.muscleLoad(), f::parameters);
+        t.bind(new RecordingTarget(applied));
+        ParameterControl slider = new ParameterControl(t.parameter(DiaphragmViewScene.MUSCLE_ACTION), t, m -> { });
+        t.addListener(slider::refresh);
+        assertTrue(slider.labelText().startsWith("Muscle fibre active stress"), slider.labelText());
+        Path v2 = dir.resolve("pressure.json");
+        Files.writeString(v2, "{\"format\": \"tensim-gui-preset\", \"version\": 2, \"scene\": \"diaphragm\","
+                + " \"muscleLoad\": \"pressure\", \"parameters\": {\"muscleActionPa\": 2000.0}}");
+        t.apply(PresetFile.read(v2, t), v2.toString());
+        assertEquals("pressure", t.muscleLoad());
+        assertTrue(slider.labelText().startsWith("Muscle action pressure"), slider.labelText());
+        TunableParameter m = t.parameter(DiaphragmViewScene.MUSCLE_ACTION);
+        assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, m.defaultValue(), "the pressure's default");
+        assertTrue(m.description().contains("per unit area"), m.description());
+        assertEquals(2000.0, t.get(DiaphragmViewScene.MUSCLE_ACTION), "the preset's value");
+        // and back: the fibres' wording and default again, the value kept as the load's setter says
+        t.setMuscleLoad("fibres");
+        assertTrue(slider.labelText().startsWith("Muscle fibre active stress"), slider.labelText());
+        assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, t.parameter(DiaphragmViewScene.MUSCLE_ACTION)
+                .defaultValue());
+        assertEquals(2000.0, t.get(DiaphragmViewScene.MUSCLE_ACTION));
+        assertEquals(t.parameters().size(), first.parameters().size() + 1, "the scene's parameters and the step");
+    }
 }
