@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.calibration.Calibration;
 import org.tensim.calibration.CalibrationReader;
+import org.tensim.calibration.CalibrationReport;
 import org.tensim.calibration.CalibrationSpec;
 import org.tensim.calibration.SyntheticTarget;
 import org.tensim.io.Json;
@@ -73,6 +74,9 @@ public final class CalibrateCommand implements Callable<Integer> {
             Calibration.Result r = Calibration.run(s, e, dir, System.out);
             System.out.println("wrote " + dir.resolve("best-preset.json") + ", history.csv, convergence.png,"
                     + " residuals.json, evaluations.csv");
+            for (String w : CalibrationReport.warnings(s, r.summary())) {
+                System.err.println("tensim calibrate: " + w);
+            }
             System.out.println(Json.line(r.summary()));
         }
         return 0;

@@ -19,9 +19,19 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
  * Writes what a calibration found: {@code best-preset.json} (a GUI preset with the fitted
  * and fixed values, opened by {@code ./tensim gui --preset}), {@code history.csv} and
  * {@code convergence.png} (best score per generation), {@code residuals.json} (each target's
- * residuals at the best candidate) and returns the summary.
+ * residuals at the best candidate, whether it is met, and which fitted parameters ended at a bound)
+ * and returns the summary.
+ *
+ * <p>A target is met when every one of its residuals, a measured error over its tolerance, is at
+ * most 1 in magnitude. A best value within {@link #AT_BOUND_FRACTION} of its fitted range from a
+ * bound is reported under {@code at_bounds}: the optimiser was stopped by the bound, and the
+ * targets may want a value beyond it (CMA-ES clips candidates to the bounds, so such a best is
+ * usually exactly the bound).
  */
 public final class CalibrationReport {
+    /** A best value this close to a bound, as a fraction of its fitted range, is reported as at the bound. */
+    public static final double AT_BOUND_FRACTION = 1e-3;
+
     private CalibrationReport() {
     }
 
@@ -78,6 +88,7 @@ public final class CalibrationReport {
         s.put("objective", best.fitness());
         s.put("best_status", best.result().status());
         List<Map<String, Object>> targets = new ArrayList<>();
+        int metCount = 0;
         for (Target t : spec.targets()) {
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("target", t.describe());
@@ -85,11 +96,15 @@ public final class CalibrationReport {
             double[] r = t.residuals(best.result());
             Map<String, Object> res = new LinkedHashMap<>();
             double contribution = 0;
+            boolean met = r.length > 0;
             for (int i = 0; i < r.length; i++) {
                 res.put(t.residualNames().get(i), r[i]);
                 contribution += t.weight() * r[i] * r[i];
+                met &= Math.abs(r[i]) <= 1; // false for NaN too
             }
             m.put("residuals", res);
+            m.put("met", met);
+            metCount += met ? 1 : 0;
             Map<String, Object> measured = new LinkedHashMap<>();
             for (String f : t.fields()) {
                 measured.put(f, best.result().field(f));
@@ -99,6 +114,9 @@ public final class CalibrationReport {
             targets.add(m);
         }
         s.put("targets", targets);
+        s.put("targets_met", metCount);
+        s.put("all_targets_met", metCount == spec.targets().size());
+        s.put("at_bounds", atBounds(spec.free(), best.values()));
         s.put("runs", o.evaluations().size());
         s.put("diverged_or_refused", o.evaluations().stream().filter(e -> !e.result().ok()).count());
         s.put("generations", o.history().size());
@@ -107,6 +125,49 @@ public final class CalibrationReport {
                 .getSystemLoadAverage() * 100) / 100.0);
         Json.write(out.resolve("residuals.json"), s);
         return s;
+    }
+
+    /**
+     * The fitted parameters whose value lies within {@link #AT_BOUND_FRACTION} of their range from a
+     * bound: name to {@code "min"} or {@code "max"}, in the spec's order.
+     */
+    static Map<String, String> atBounds(List<CalibrationSpec.Free> free, double[] values) {
+        Map<String, String> m = new LinkedHashMap<>();
+        for (int i = 0; i < free.size(); i++) {
+            double u = free.get(i).fraction(values[i]);
+            if (u <= AT_BOUND_FRACTION) {
+                m.put(free.get(i).name(), "min");
+            } else if (u >= 1 - AT_BOUND_FRACTION) {
+                m.put(free.get(i).name(), "max");
+            }
+        }
+        return m;
+    }
+
+    /**
+     * What a user should read before using the best parameters, one line each (empty when
+     * nothing): fitted values stopped at a bound, and targets not met.
+     */
+    @SuppressWarnings("unchecked")
+    public static List<String> warnings(CalibrationSpec spec, Map<String, Object> summary) {
+        List<String> out = new ArrayList<>();
+        Map<String, Double> best = (Map<String, Double>) summary.get("best");
+        Map<String, String> bounds = (Map<String, String>) summary.get("at_bounds");
+        for (CalibrationSpec.Free f : spec.free()) {
+            String side = bounds.get(f.name());
+            if (side != null) {
+                out.add("best " + f.name() + " = " + best.get(f.name()) + " is at the " + (side.equals("min")
+                        ? "lower" : "upper") + " bound of its fitted range [" + f.min() + ", " + f.max()
+                        + "]: the targets may want a value beyond it (widen the range in 'fit." + f.name()
+                        + "' if the parameter allows)");
+            }
+        }
+        for (Map<String, Object> t : (List<Map<String, Object>>) summary.get("targets")) {
+            if (!Boolean.TRUE.equals(t.get("met"))) {
+                out.add("target not met at the best candidate: " + t.get("target") + ", measured " + t.get("measured"));
+            }
+        }
+        return out;
     }
 
     private static Map<String, Double> valuesMap(List<String> names, double[] v) {

@@ -50,6 +50,50 @@ class CalibrationBehaviourTest {
     }
 
     @Test
+    @SuppressWarnings("unchecked")
+    void aBestStoppedAtABoundAndUnmetTargetsAreReported() throws Exception {
+        // The cube's mass-spring peak is -2.4 m at 300 N/m and -0.41 m at 1000 N/m (RK2, 10 ms, 300 N):
+        // -5 m needs a softer cube than the range allows, so the fit ends on the lower bound.
+        String spec = "{\"scene\": \"cube\", \"solver\": {\"integrator\": \"rk2\", \"dtS\": 0.01,"
+                + " \"seconds\": 2}, \"fixed\": {\"forceAmplitudeN\": 300},"
+                + " \"fit\": {\"stiffnessNPerM\": {\"min\": 300, \"max\": 1000, \"start\": 700}},"
+                + " \"optimizer\": {\"population\": 4, \"generations\": 4, \"sigma\": 0.3, \"seed\": 2},"
+                + " \"targets\": [{\"type\": \"summary\", \"field\": \"mss_peak_y_m\", \"value\": VALUE,"
+                + " \"tolerance\": TOL}]}";
+        Path far = dir.resolve("far.json");
+        Files.writeString(far, spec.replace("VALUE", "-5").replace("TOL", "0.01"));
+        CalibrationSpec s = CalibrationReader.read(far);
+        Calibration.Result r;
+        try (LocalEngine e = new LocalEngine(2)) {
+            r = Calibration.run(s, e, dir.resolve("far"), null);
+        }
+        java.util.Map<String, Object> sum = r.summary();
+        assertEquals(java.util.Map.of("stiffnessNPerM", "min"), sum.get("at_bounds"));
+        assertEquals(0, sum.get("targets_met"));
+        assertEquals(false, sum.get("all_targets_met"));
+        assertEquals(false, ((List<java.util.Map<String, Object>>) sum.get("targets")).get(0).get("met"));
+        List<String> w = CalibrationReport.warnings(s, sum);
+        assertEquals(2, w.size(), w.toString());
+        assertTrue(w.get(0).contains("stiffnessNPerM") && w.get(0).contains("lower bound"), w.get(0));
+        assertTrue(w.get(1).contains("not met") && w.get(1).contains("mss_peak_y_m"), w.get(1));
+        assertTrue(Files.readString(dir.resolve("far/residuals.json")).contains("\"at_bounds\""));
+
+        // Within reach and a loose tolerance: met, and no warning about it.
+        Path near = dir.resolve("near.json");
+        Files.writeString(near, spec.replace("VALUE", "-1").replace("TOL", "0.5"));
+        CalibrationSpec s2 = CalibrationReader.read(near);
+        try (LocalEngine e = new LocalEngine(2)) {
+            r = Calibration.run(s2, e, dir.resolve("near"), null);
+        }
+        sum = r.summary();
+        double peak = r.outcome().best().result().field("mss_peak_y_m");
+        assertTrue(Math.abs(peak + 1) <= 0.5, "best peak " + peak);
+        assertEquals(true, sum.get("all_targets_met"));
+        assertEquals(1, sum.get("targets_met"));
+        assertTrue(CalibrationReport.warnings(s2, sum).stream().noneMatch(x -> x.contains("not met")));
+    }
+
+    @Test
     void badTargetsAreRefusedBeforeAnyRunNamingTheField() throws Exception {
         Files.writeString(dir.resolve("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
         Files.writeString(dir.resolve("bad.csv"), "id,t,x,y,z\na,0,1,2,3\nb,0.1,1,zz,3\n");
