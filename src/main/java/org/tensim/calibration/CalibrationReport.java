@@ -164,7 +164,12 @@ public final class CalibrationReport {
         }
         for (Map<String, Object> t : (List<Map<String, Object>>) summary.get("targets")) {
             if (!Boolean.TRUE.equals(t.get("met"))) {
-                out.add("target not met at the best candidate: " + t.get("target") + ", measured " + t.get("measured"));
+                StringBuilder m = new StringBuilder();
+                for (Map.Entry<String, Object> e : ((Map<String, Object>) t.get("measured")).entrySet()) {
+                    m.append(m.length() == 0 ? "" : ", ").append(e.getKey()).append(" = ").append(e.getValue()
+                            instanceof Double d ? String.format(java.util.Locale.ROOT, "%.4g", d) : e.getValue());
+                }
+                out.add("target not met at the best candidate: " + t.get("target") + "; measured " + m);
             }
         }
         return out;
