@@ -2,6 +2,7 @@ package org.tensim.calibration;
 
 import java.util.List;
 import java.util.Map;
+import org.tensim.io.mesh.SurfaceDistance;
 import org.tensim.sweep.Measure;
 import org.tensim.sweep.PointResult;
 

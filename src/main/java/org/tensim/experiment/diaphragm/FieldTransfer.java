@@ -1,5 +1,7 @@
 package org.tensim.experiment.diaphragm;
 
+import org.tensim.io.mesh.SurfaceDistance;
+
 /**
  * The error of a coarse model's displacement field against a fine one's, with the coarse
  * field interpolated where each fine node lies (package-private, used by
@@ -60,7 +62,7 @@ final class FieldTransfer {
                 if (gap >= bd) {
                     continue;
                 }
-                double d = closest(coarseRest, coarseTriangles, t, p, w);
+                double d = SurfaceDistance.closest(coarseRest, coarseTriangles, t, p, w);
                 if (d < bd) {
                     bd = d;
                     bt = t;
@@ -79,67 +81,5 @@ final class FieldTransfer {
             }
         }
         return Math.sqrt(num / den);
-    }
-
-    /**
-     * Squared distance from p to triangle t, and in {@code w} the barycentric weights of the closest
-     * point (Ericson, Real-Time Collision Detection, 5.1.5).
-     */
-    static double closest(double[] x, int[] tri, int t, double[] p, double[] w) {
-        int ia = 3 * tri[3 * t];
-        int ib = 3 * tri[3 * t + 1];
-        int ic = 3 * tri[3 * t + 2];
-        double abx = x[ib] - x[ia], aby = x[ib + 1] - x[ia + 1], abz = x[ib + 2] - x[ia + 2];
-        double acx = x[ic] - x[ia], acy = x[ic + 1] - x[ia + 1], acz = x[ic + 2] - x[ia + 2];
-        double apx = p[0] - x[ia], apy = p[1] - x[ia + 1], apz = p[2] - x[ia + 2];
-        double d1 = abx * apx + aby * apy + abz * apz;
-        double d2 = acx * apx + acy * apy + acz * apz;
-        if (d1 <= 0 && d2 <= 0) {
-            return set(w, 1, 0, 0, x, ia, ib, ic, p);
-        }
-        double bpx = p[0] - x[ib], bpy = p[1] - x[ib + 1], bpz = p[2] - x[ib + 2];
-        double d3 = abx * bpx + aby * bpy + abz * bpz;
-        double d4 = acx * bpx + acy * bpy + acz * bpz;
-        if (d3 >= 0 && d4 <= d3) {
-            return set(w, 0, 1, 0, x, ia, ib, ic, p);
-        }
-        double vc = d1 * d4 - d3 * d2;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-            double v = d1 / (d1 - d3);
-            return set(w, 1 - v, v, 0, x, ia, ib, ic, p);
-        }
-        double cpx = p[0] - x[ic], cpy = p[1] - x[ic + 1], cpz = p[2] - x[ic + 2];
-        double d5 = abx * cpx + aby * cpy + abz * cpz;
-        double d6 = acx * cpx + acy * cpy + acz * cpz;
-        if (d6 >= 0 && d5 <= d6) {
-            return set(w, 0, 0, 1, x, ia, ib, ic, p);
-        }
-        double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-            double v = d2 / (d2 - d6);
-            return set(w, 1 - v, 0, v, x, ia, ib, ic, p);
-        }
-        double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-            double v = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-            return set(w, 0, 1 - v, v, x, ia, ib, ic, p);
-        }
-        double denom = 1 / (va + vb + vc);
-        double v = vb * denom;
-        double u = vc * denom;
-        return set(w, 1 - v - u, v, u, x, ia, ib, ic, p);
-    }
-
-    private static double set(double[] w, double a, double b, double c, double[] x, int ia, int ib, int ic,
-            double[] p) {
-        w[0] = a;
-        w[1] = b;
-        w[2] = c;
-        double d = 0;
-        for (int k = 0; k < 3; k++) {
-            double q = a * x[ia + k] + b * x[ib + k] + c * x[ic + k] - p[k];
-            d += q * q;
-        }
-        return d;
     }
 }

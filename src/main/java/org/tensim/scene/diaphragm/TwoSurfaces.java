@@ -1,6 +1,7 @@
 package org.tensim.scene.diaphragm;
 
 import java.util.Arrays;
+import org.tensim.io.mesh.SurfaceDistance;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 
@@ -36,21 +37,7 @@ public final class TwoSurfaces {
         this.mesh = mesh;
         this.upper = upper;
         this.partner = nearestOnOtherSide(mesh, upper);
-        int nv = mesh.vertexCount();
-        double[] d = new double[nv];
-        int k = 0;
-        for (int v = 0; v < nv; v++) {
-            if (partner[v] >= 0) {
-                d[k++] = distance(mesh, v, partner[v]);
-            }
-        }
-        if (k == 0) {
-            throw new IllegalArgumentException("the mesh has no vertex on one of its two surfaces: upper "
-                    + count(upper, true) + ", lower " + count(upper, false) + "; expected a thin closed shell");
-        }
-        double[] sorted = Arrays.copyOf(d, k);
-        Arrays.sort(sorted);
-        this.thicknessM = sorted[k / 2];
+        this.thicknessM = gap(mesh, upper, partner);
         int[] ut = new int[mesh.triangleCount()];
         int n = 0;
         for (int t = 0; t < mesh.triangleCount(); t++) {
@@ -157,7 +144,14 @@ public final class TwoSurfaces {
         return partner[v];
     }
 
-    /** Median distance between paired vertices, m: the shell's thickness. */
+    /**
+     * The shell's thickness, m: the median over the vertices of the distance to the other surface,
+     * to the closest point of its triangles (those with three corners on that side), not to the
+     * nearest vertex. Where the two faces were meshed apart (a real mesh) a vertex rarely lies opposite
+     * another, and the nearest vertex is farther than the face: on the BodyParts3D diaphragm the
+     * paired vertices' median is 3.19 mm and the faces' 2.98 mm. On faces that are offset copies of
+     * each other both give the offset to within its curvature's effect.
+     */
     public double thicknessM() {
         return thicknessM;
     }
@@ -181,6 +175,47 @@ public final class TwoSurfaces {
             c += x == value ? 1 : 0;
         }
         return c;
+    }
+
+    /**
+     * The median gap between the faces (see {@link #thicknessM()}); a side without a whole triangle
+     * falls back to the paired vertices' distances.
+     */
+    private static double gap(TriangleMesh mesh, boolean[] upper, int[] partner) {
+        int nv = mesh.vertexCount();
+        SurfaceDistance[] face = {face(mesh, upper, false), face(mesh, upper, true)};
+        double[] d = new double[nv];
+        int k = 0;
+        for (int v = 0; v < nv; v++) {
+            if (partner[v] < 0) {
+                continue;
+            }
+            SurfaceDistance other = face[upper[v] ? 0 : 1];
+            d[k++] = other == null ? distance(mesh, v, partner[v])
+                    : other.distance(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2));
+        }
+        if (k == 0) {
+            throw new IllegalArgumentException("the mesh has no vertex on one of its two surfaces: upper "
+                    + count(upper, true) + ", lower " + count(upper, false) + "; expected a thin closed shell");
+        }
+        double[] sorted = Arrays.copyOf(d, k);
+        Arrays.sort(sorted);
+        return sorted[k / 2];
+    }
+
+    /** The triangles whose three corners are on the given side, or null when there is none. */
+    private static SurfaceDistance face(TriangleMesh mesh, boolean[] upper, boolean side) {
+        int[] t = new int[3 * mesh.triangleCount()];
+        int n = 0;
+        for (int i = 0; i < mesh.triangleCount(); i++) {
+            if (upper[mesh.corner(i, 0)] == side && upper[mesh.corner(i, 1)] == side
+                    && upper[mesh.corner(i, 2)] == side) {
+                for (int c = 0; c < 3; c++) {
+                    t[n++] = mesh.corner(i, c);
+                }
+            }
+        }
+        return n == 0 ? null : new SurfaceDistance(mesh.coordinates(), Arrays.copyOf(t, n));
     }
 
     static double distance(TriangleMesh m, int a, int b) {

@@ -48,4 +48,45 @@ class TwoSurfacesTest {
         assertTrue(s.mesh().coord(up.vertexCount() + apex, 2) < s.mesh().coord(apex, 2));
         assertEquals(2 * up.triangleCount(), s.mesh().triangleCount());
     }
+
+    @Test
+    void thicknessIsTheGapBetweenTheFacesNotBetweenTheirNearestVertices() {
+        // Two parallel squares 3 mm apart, meshed apart: the lower grid is shifted by half a cell in
+        // x and y, so no vertex lies opposite another. The nearest vertex is sqrt(3^2 + 2 (h/2)^2)
+        // away, the face exactly 3 mm.
+        int n = 10;
+        double h = 0.004;
+        double gap = 0.003;
+        double[] xyz = new double[2 * 3 * (n + 1) * (n + 1)];
+        int[] tri = new int[2 * 6 * n * n];
+        int nv = (n + 1) * (n + 1);
+        int k = 0;
+        for (int f = 0; f < 2; f++) {
+            double shift = f == 0 ? 0 : h / 2;
+            for (int j = 0; j <= n; j++) {
+                for (int i = 0; i <= n; i++) {
+                    int v = f * nv + j * (n + 1) + i;
+                    xyz[3 * v] = i * h + shift;
+                    xyz[3 * v + 1] = j * h + shift;
+                    xyz[3 * v + 2] = f == 0 ? gap : 0;
+                }
+            }
+            for (int j = 0; j < n; j++) {
+                for (int i = 0; i < n; i++) {
+                    int a = f * nv + j * (n + 1) + i;
+                    int[] q = {a, a + 1, a + n + 2, a, a + n + 2, a + n + 1};
+                    for (int c = 0; c < 6; c++) {
+                        tri[k++] = q[c];
+                    }
+                }
+            }
+        }
+        boolean[] upper = new boolean[2 * nv];
+        java.util.Arrays.fill(upper, 0, nv, true);
+        TwoSurfaces s = TwoSurfaces.of(new TriangleMesh(xyz, tri), upper);
+        assertEquals(gap, s.thicknessM(), 1e-12);
+        int v = 5 * (n + 1) + 5; // an interior upper vertex
+        double pair = TwoSurfaces.distance(s.mesh(), v, s.partner(v));
+        assertEquals(Math.sqrt(gap * gap + h * h / 2), pair, 1e-12, "its nearest lower vertex is farther");
+    }
 }

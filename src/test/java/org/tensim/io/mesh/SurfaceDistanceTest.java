@@ -1,4 +1,4 @@
-package org.tensim.calibration;
+package org.tensim.io.mesh;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,4 +1,4 @@
-package org.tensim.calibration;
+package org.tensim.io.mesh;
 
 import java.util.Arrays;
 
@@ -104,49 +104,70 @@ public final class SurfaceDistance {
 
     /** Squared distance to triangle t (Ericson's closest point by Voronoi regions). */
     private double squaredToTriangle(double px, double py, double pz, int t) {
+        return closest(v, tri, t, new double[] {px, py, pz}, new double[3]);
+    }
+
+    /**
+     * Squared distance from p to triangle t of a surface (vertex coordinates x, 3 per vertex; corners
+     * tri, 3 per triangle), and in {@code w} the barycentric weights of the closest point: the region
+     * test of Ericson, Real-Time Collision Detection (2005), section 5.1.5.
+     */
+    public static double closest(double[] x, int[] tri, int t, double[] p, double[] w) {
         int ia = 3 * tri[3 * t];
         int ib = 3 * tri[3 * t + 1];
         int ic = 3 * tri[3 * t + 2];
-        double abx = v[ib] - v[ia], aby = v[ib + 1] - v[ia + 1], abz = v[ib + 2] - v[ia + 2];
-        double acx = v[ic] - v[ia], acy = v[ic + 1] - v[ia + 1], acz = v[ic + 2] - v[ia + 2];
-        double apx = px - v[ia], apy = py - v[ia + 1], apz = pz - v[ia + 2];
+        double abx = x[ib] - x[ia], aby = x[ib + 1] - x[ia + 1], abz = x[ib + 2] - x[ia + 2];
+        double acx = x[ic] - x[ia], acy = x[ic + 1] - x[ia + 1], acz = x[ic + 2] - x[ia + 2];
+        double apx = p[0] - x[ia], apy = p[1] - x[ia + 1], apz = p[2] - x[ia + 2];
         double d1 = abx * apx + aby * apy + abz * apz;
         double d2 = acx * apx + acy * apy + acz * apz;
         if (d1 <= 0 && d2 <= 0) {
-            return apx * apx + apy * apy + apz * apz; // vertex A
+            return set(w, 1, 0, 0, x, ia, ib, ic, p); // vertex A
         }
-        double bpx = px - v[ib], bpy = py - v[ib + 1], bpz = pz - v[ib + 2];
+        double bpx = p[0] - x[ib], bpy = p[1] - x[ib + 1], bpz = p[2] - x[ib + 2];
         double d3 = abx * bpx + aby * bpy + abz * bpz;
         double d4 = acx * bpx + acy * bpy + acz * bpz;
         if (d3 >= 0 && d4 <= d3) {
-            return bpx * bpx + bpy * bpy + bpz * bpz; // vertex B
+            return set(w, 0, 1, 0, x, ia, ib, ic, p); // vertex B
         }
         double vc = d1 * d4 - d3 * d2;
         if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-            double s = d1 / (d1 - d3); // edge AB
-            return sq(apx - s * abx) + sq(apy - s * aby) + sq(apz - s * abz);
+            double v = d1 / (d1 - d3); // edge AB
+            return set(w, 1 - v, v, 0, x, ia, ib, ic, p);
         }
-        double cpx = px - v[ic], cpy = py - v[ic + 1], cpz = pz - v[ic + 2];
+        double cpx = p[0] - x[ic], cpy = p[1] - x[ic + 1], cpz = p[2] - x[ic + 2];
         double d5 = abx * cpx + aby * cpy + abz * cpz;
         double d6 = acx * cpx + acy * cpy + acz * cpz;
         if (d6 >= 0 && d5 <= d6) {
-            return cpx * cpx + cpy * cpy + cpz * cpz; // vertex C
+            return set(w, 0, 0, 1, x, ia, ib, ic, p); // vertex C
         }
         double vb = d5 * d2 - d1 * d6;
         if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-            double w = d2 / (d2 - d6); // edge AC
-            return sq(apx - w * acx) + sq(apy - w * acy) + sq(apz - w * acz);
+            double v = d2 / (d2 - d6); // edge AC
+            return set(w, 1 - v, 0, v, x, ia, ib, ic, p);
         }
         double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-            double w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge BC
-            double bcx = v[ic] - v[ib], bcy = v[ic + 1] - v[ib + 1], bcz = v[ic + 2] - v[ib + 2];
-            return sq(bpx - w * bcx) + sq(bpy - w * bcy) + sq(bpz - w * bcz);
+        if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+            double v = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge BC
+            return set(w, 0, 1 - v, v, x, ia, ib, ic, p);
         }
         double denom = 1 / (va + vb + vc); // inside the face
-        double s = vb * denom;
-        double w = vc * denom;
-        return sq(apx - s * abx - w * acx) + sq(apy - s * aby - w * acy) + sq(apz - s * abz - w * acz);
+        double v = vb * denom;
+        double u = vc * denom;
+        return set(w, 1 - v - u, v, u, x, ia, ib, ic, p);
+    }
+
+    private static double set(double[] w, double a, double b, double c, double[] x, int ia, int ib, int ic,
+            double[] p) {
+        w[0] = a;
+        w[1] = b;
+        w[2] = c;
+        double d = 0;
+        for (int k = 0; k < 3; k++) {
+            double q = a * x[ia + k] + b * x[ib + k] + c * x[ic + k] - p[k];
+            d += q * q;
+        }
+        return d;
     }
 
     /** The value at the nearest-rank percentile q (0..100) of the values (sorted in place). */
