@@ -74,7 +74,7 @@ public final class CalibrateCommand implements Callable<Integer> {
             Calibration.Result r = Calibration.run(s, e, dir, System.out);
             System.out.println("wrote " + dir.resolve("best-preset.json") + ", history.csv, convergence.png,"
                     + " residuals.json, evaluations.csv");
-            for (String w : CalibrationReport.warnings(s, r.summary())) {
+            for (String w : CalibrationReport.warnings(s.free(), r.summary())) {
                 System.err.println("tensim calibrate: " + w);
             }
             System.out.println(Json.line(r.summary()));

@@ -80,7 +80,7 @@ public final class CalibrationReader {
             if (!(start >= min && start <= max)) {
                 throw r.fail(f + ".start", e.getValue().get("start"), "within [" + min + ", " + max + "]");
             }
-            free.add(new CalibrationSpec.Free(e.getKey(), min, max, start));
+            free.add(new CalibrationSpec.Free(e.getKey(), min, max, start, p.min(), p.max()));
         }
         CalibrationSpec.Optimizer o = optimizer(root.get("optimizer"), free.size());
         JsonNode t = root.get("targets");

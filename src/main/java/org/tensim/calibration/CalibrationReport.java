@@ -149,17 +149,21 @@ public final class CalibrationReport {
      * nothing): fitted values stopped at a bound, and targets not met.
      */
     @SuppressWarnings("unchecked")
-    public static List<String> warnings(CalibrationSpec spec, Map<String, Object> summary) {
+    public static List<String> warnings(List<CalibrationSpec.Free> free, Map<String, Object> summary) {
         List<String> out = new ArrayList<>();
         Map<String, Double> best = (Map<String, Double>) summary.get("best");
         Map<String, String> bounds = (Map<String, String>) summary.get("at_bounds");
-        for (CalibrationSpec.Free f : spec.free()) {
+        for (CalibrationSpec.Free f : free) {
             String side = bounds.get(f.name());
             if (side != null) {
-                out.add("best " + f.name() + " = " + best.get(f.name()) + " is at the " + (side.equals("min")
-                        ? "lower" : "upper") + " bound of its fitted range [" + f.min() + ", " + f.max()
-                        + "]: the targets may want a value beyond it (widen the range in 'fit." + f.name()
-                        + "' if the parameter allows)");
+                boolean low = side.equals("min");
+                boolean limit = low ? f.min() <= f.lowest() : f.max() >= f.highest();
+                out.add("best " + f.name() + " = " + best.get(f.name()) + " is at the " + (low ? "lower" : "upper")
+                        + " bound of its fitted range [" + f.min() + ", " + f.max() + "]: " + (limit
+                        ? "the " + (low ? "smallest" : "largest") + " value the parameter takes, so the targets"
+                                + " want one it cannot have (the model, not the range, stands between them)"
+                        : "the targets may want a value beyond it (widen the range in 'fit." + f.name() + "', up to "
+                                + (low ? f.lowest() : f.highest()) + ")"));
             }
         }
         for (Map<String, Object> t : (List<Map<String, Object>>) summary.get("targets")) {

@@ -41,8 +41,15 @@ public record CalibrationSpec(RunSetup setup, List<Free> free, Optimizer optimiz
      * @param min   lower bound, in the parameter's unit
      * @param max   upper bound (> min)
      * @param start first guess, within the bounds
+     * @param lowest  the smallest value the parameter takes at all (its own range), at most min
+     * @param highest the largest value the parameter takes at all, at least max
      */
-    public record Free(String name, double min, double max, double start) {
+    public record Free(String name, double min, double max, double start, double lowest, double highest) {
+        /** A fitted parameter whose own range is unbounded (or not known). */
+        public Free(String name, double min, double max, double start) {
+            this(name, min, max, start, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+        }
+
         public double value(double u) {
             return min + u * (max - min);
         }

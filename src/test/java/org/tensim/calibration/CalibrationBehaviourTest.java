@@ -72,9 +72,10 @@ class CalibrationBehaviourTest {
         assertEquals(0, sum.get("targets_met"));
         assertEquals(false, sum.get("all_targets_met"));
         assertEquals(false, ((List<java.util.Map<String, Object>>) sum.get("targets")).get(0).get("met"));
-        List<String> w = CalibrationReport.warnings(s, sum);
+        List<String> w = CalibrationReport.warnings(s.free(), sum);
         assertEquals(2, w.size(), w.toString());
-        assertTrue(w.get(0).contains("stiffnessNPerM") && w.get(0).contains("lower bound"), w.get(0));
+        assertTrue(w.get(0).contains("stiffnessNPerM") && w.get(0).contains("lower bound")
+                && w.get(0).contains("widen the range"), w.get(0));
         assertTrue(w.get(1).contains("not met") && w.get(1).contains("mss_peak_y_m"), w.get(1));
         assertTrue(Files.readString(dir.resolve("far/residuals.json")).contains("\"at_bounds\""));
 
@@ -90,7 +91,28 @@ class CalibrationBehaviourTest {
         assertTrue(Math.abs(peak + 1) <= 0.5, "best peak " + peak);
         assertEquals(true, sum.get("all_targets_met"));
         assertEquals(1, sum.get("targets_met"));
-        assertTrue(CalibrationReport.warnings(s2, sum).stream().noneMatch(x -> x.contains("not met")));
+        assertTrue(CalibrationReport.warnings(s2.free(), sum).stream().noneMatch(x -> x.contains("not met")));
+    }
+
+    @Test
+    void aBoundThatIsTheParametersOwnLimitIsNamedAsSuch() {
+        // muscleActionPa takes at most 30 kPa: a fit stopped there cannot be helped by wider bounds.
+        List<CalibrationSpec.Free> free = List.of(
+                new CalibrationSpec.Free("muscleActionPa", 5000, 30000, 18000, 0, 30000),
+                new CalibrationSpec.Free("ribAmplitudeFactor", 0.5, 2, 1, 0, 3));
+        double[] best = {30000, 0.5};
+        java.util.Map<String, String> at = CalibrationReport.atBounds(free, best);
+        assertEquals(java.util.Map.of("muscleActionPa", "max", "ribAmplitudeFactor", "min"), at);
+        java.util.Map<String, Object> summary = new java.util.LinkedHashMap<>();
+        summary.put("best", java.util.Map.of("muscleActionPa", 30000.0, "ribAmplitudeFactor", 0.5));
+        summary.put("at_bounds", at);
+        summary.put("targets", List.of());
+        List<String> w = CalibrationReport.warnings(free, summary);
+        assertEquals(2, w.size(), w.toString());
+        assertTrue(w.get(0).contains("largest value the parameter takes"), w.get(0));
+        assertTrue(w.get(1).contains("widen the range in 'fit.ribAmplitudeFactor', up to 0.0"), w.get(1));
+        // Inside the bounds (0.2 % of the range away): nothing to report.
+        assertTrue(CalibrationReport.atBounds(free, new double[] {29950, 0.504}).isEmpty());
     }
 
     @Test
