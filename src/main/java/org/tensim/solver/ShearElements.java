@@ -32,13 +32,20 @@ public final class ShearElements {
     /** Per element: Kelvin-Voigt damping time beta, s. */
     private final double[] beta;
     private boolean damped;
-    /** Tangent: per element, grad g_k on slot a along d at [54 e + 18 k + 3 a + d]. */
-    private final double[] grad;
+    /**
+     * Tangent: per element, e_k and S_k of each edge k at the linearisation, at [18 e + 6 k + d] and
+     * [18 e + 6 k + 3 + d]: grad g_k is made of them ({@link #gradient}), and a product needs no more.
+     */
+    private final double[] es;
     /** Tangent: per element, rho (3; 0 when the geometric term is dropped). */
     private final double[] rho;
     private final double[] dg = new double[3];
     private final double[] ev = new double[9];
     private final double[] sv = new double[9];
+    /** Product scratch: the element's six nodes' offsets, their z (18) and what they receive (18). */
+    private final int[] slot = new int[6];
+    private final double[] zs = new double[18];
+    private final double[] ys = new double[18];
 
     ShearElements(List<TransverseShear> shears, double[] x0) {
         int n = shears.size();
@@ -46,7 +53,7 @@ public final class ShearElements {
         k = new double[9 * n];
         g0 = new double[3 * n];
         beta = new double[n];
-        grad = new double[54 * n];
+        es = new double[18 * n];
         rho = new double[3 * n];
         for (int e = 0; e < n; e++) {
             TransverseShear ts = shears.get(e);
@@ -74,7 +81,7 @@ public final class ShearElements {
         g0 = other.g0;
         beta = other.beta;
         damped = other.damped;
-        grad = new double[other.grad.length];
+        es = new double[other.es.length];
         rho = new double[other.rho.length];
         linearise(px, false);
     }
@@ -101,7 +108,7 @@ public final class ShearElements {
         k = new double[9 * n];
         g0 = new double[3 * n];
         beta = new double[n];
-        grad = new double[54 * n];
+        es = new double[18 * n];
         rho = new double[3 * n];
         for (int i = 0; i < n; i++) {
             System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
@@ -254,25 +261,36 @@ public final class ShearElements {
      *                  the tangent positive semi-definite for conjugate gradients
      */
     public void linearise(double[] px, boolean geometric) {
-        java.util.Arrays.fill(grad, 0);
         for (int e = 0; e < count(); e++) {
             edges(e, px);
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
                 rho[3 * e + c] = geometric ? k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2] : 0;
-                final int base = 54 * e + 18 * c;
-                final int p = c;
-                final int q = (c + 1) % 3;
+                final int base = 18 * e + 6 * c;
                 for (int d = 0; d < 3; d++) {
-                    final double ed = ev[3 * c + d];
-                    final double sd = sv[3 * c + d];
-                    grad[base + 3 * p + d] = -sd - ed;
-                    grad[base + 3 * q + d] = sd - ed;
-                    grad[base + 3 * (3 + p) + d] = ed;
-                    grad[base + 3 * (3 + q) + d] = ed;
+                    es[base + d] = ev[3 * c + d];
+                    es[base + 3 + d] = sv[3 * c + d];
                 }
             }
         }
+    }
+
+    /**
+     * Component d of grad g_c on slot a of element e, as linearised: {@code -S_c - e_c} on p = c,
+     * {@code S_c - e_c} on q = c + 1, {@code e_c} on their partners, 0 on the third corner and its partner.
+     */
+    private double gradient(int e, int c, int a, int d) {
+        final double ed = es[18 * e + 6 * c + d];
+        final double sd = es[18 * e + 6 * c + 3 + d];
+        final int p = c;
+        final int q = (c + 1) % 3;
+        if (a == p) {
+            return -sd - ed;
+        }
+        if (a == q) {
+            return sd - ed;
+        }
+        return a == 3 + p || a == 3 + q ? ed : 0;
     }
 
     /**
@@ -293,54 +311,70 @@ public final class ShearElements {
         if (weight == 0 && dampingWeight == 0) {
             return;
         }
+        // Per element: its six nodes' offsets resolved once, z gathered once, and with
+        // A_c z = z_q - z_p and B_c z = z_p' + z_q' - z_p - z_q (p = c, q = c + 1):
+        //   grad g_c . z = S_c . A_c z + e_c . B_c z,
+        //   y += m_c grad g_c,  m_c = (weight + dampingWeight beta_e) (K dg)_c,
+        // plus weight rho_c H_c z; what the nodes receive is summed in ys and scattered once.
+        final int[] sl = slot;
+        final double[] zl = zs;
+        final double[] yl = ys;
         for (int e = 0; e < count(); e++) {
             final int o = 6 * e;
+            for (int a = 0; a < 6; a++) {
+                final int i = dof(node[o + a], offset);
+                sl[a] = i;
+                for (int d = 0; d < 3; d++) {
+                    zl[3 * a + d] = i < 0 ? 0 : z[i + d];
+                    yl[3 * a + d] = 0;
+                }
+            }
+            final int b = 18 * e;
             for (int c = 0; c < 3; c++) {
+                final int p = 3 * c;
+                final int q = 3 * ((c + 1) % 3);
                 double sum = 0;
-                final int base = 54 * e + 18 * c;
-                for (int a = 0; a < 6; a++) {
-                    final int i = dof(node[o + a], offset);
-                    if (i >= 0) {
-                        sum += grad[base + 3 * a] * z[i] + grad[base + 3 * a + 1] * z[i + 1]
-                                + grad[base + 3 * a + 2] * z[i + 2];
-                    }
+                for (int d = 0; d < 3; d++) {
+                    final double az = zl[q + d] - zl[p + d];
+                    final double bz = zl[9 + p + d] + zl[9 + q + d] - zl[p + d] - zl[q + d];
+                    sum += es[b + 6 * c + 3 + d] * az + es[b + 6 * c + d] * bz;
                 }
                 dg[c] = sum;
             }
+            final double w = weight + dampingWeight * beta[e];
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
-                final double m = (weight + dampingWeight * beta[e]) * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
-                final int base = 54 * e + 18 * c;
-                for (int a = 0; a < 6; a++) {
-                    final int i = dof(node[o + a], offset);
-                    if (i >= 0) {
-                        y[i] += m * grad[base + 3 * a];
-                        y[i + 1] += m * grad[base + 3 * a + 1];
-                        y[i + 2] += m * grad[base + 3 * a + 2];
-                    }
-                }
+                final double m = w * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
                 final double wr = weight * rho[3 * e + c];
-                if (wr != 0) {
-                    addGeometric(e, c, wr, z, y, offset);
+                final int p = 3 * c;
+                final int q = 3 * ((c + 1) % 3);
+                for (int d = 0; d < 3; d++) {
+                    final double ed = es[b + 6 * c + d];
+                    final double sd = es[b + 6 * c + 3 + d];
+                    double fp = m * (-sd - ed);
+                    double fq = m * (sd - ed);
+                    double fe = m * ed;
+                    if (wr != 0) { // y += wr H_c z
+                        final double az = zl[q + d] - zl[p + d];
+                        final double bz = zl[9 + p + d] + zl[9 + q + d] - zl[p + d] - zl[q + d];
+                        fp -= wr * (bz + az);
+                        fq += wr * (bz - az);
+                        fe += wr * az;
+                    }
+                    yl[p + d] += fp;
+                    yl[q + d] += fq;
+                    yl[9 + p + d] += fe;
+                    yl[9 + q + d] += fe;
                 }
             }
-        }
-    }
-
-    /** y += wr H_c z for edge c of element e. */
-    private void addGeometric(int e, int c, double wr, double[] z, double[] y, int[] offset) {
-        final int o = 6 * e;
-        final int p = dof(node[o + c], offset);
-        final int q = dof(node[o + (c + 1) % 3], offset);
-        final int p2 = dof(node[o + 3 + c], offset);
-        final int q2 = dof(node[o + 3 + (c + 1) % 3], offset);
-        for (int d = 0; d < 3; d++) {
-            final double az = at(z, q, d) - at(z, p, d);
-            final double bz = at(z, p2, d) + at(z, q2, d) - at(z, p, d) - at(z, q, d);
-            add(y, p, d, -wr * (bz + az));
-            add(y, q, d, wr * (bz - az));
-            add(y, p2, d, wr * az);
-            add(y, q2, d, wr * az);
+            for (int a = 0; a < 6; a++) {
+                final int i = sl[a];
+                if (i >= 0) {
+                    y[i] += yl[3 * a];
+                    y[i + 1] += yl[3 * a + 1];
+                    y[i + 2] += yl[3 * a + 2];
+                }
+            }
         }
     }
 
@@ -365,12 +399,12 @@ public final class ShearElements {
     double blockEntry(int e, int a, int d, int b, int f) {
         double sum = 0;
         for (int c = 0; c < 3; c++) {
-            final double gc = grad[54 * e + 18 * c + 3 * a + d];
+            final double gc = gradient(e, c, a, d);
             if (gc == 0) {
                 continue;
             }
             for (int l = 0; l < 3; l++) {
-                sum += k[9 * e + 3 * c + l] * gc * grad[54 * e + 18 * l + 3 * b + f];
+                sum += k[9 * e + 3 * c + l] * gc * gradient(e, l, b, f);
             }
         }
         return sum;
@@ -378,15 +412,5 @@ public final class ShearElements {
 
     private static int dof(int n, int[] offset) {
         return offset == null ? 3 * n : offset[n];
-    }
-
-    private static double at(double[] z, int o, int d) {
-        return o < 0 ? 0 : z[o + d];
-    }
-
-    private static void add(double[] y, int o, int d, double v) {
-        if (o >= 0) {
-            y[o + d] += v;
-        }
     }
 }
