@@ -157,13 +157,14 @@ public final class CalibrationReport {
             String side = bounds.get(f.name());
             if (side != null) {
                 boolean low = side.equals("min");
-                boolean limit = low ? f.min() <= f.lowest() : f.max() >= f.highest();
+                double limit = low ? f.lowest() : f.highest();
+                boolean atLimit = low ? f.min() <= limit : f.max() >= limit;
                 out.add("best " + f.name() + " = " + best.get(f.name()) + " is at the " + (low ? "lower" : "upper")
-                        + " bound of its fitted range [" + f.min() + ", " + f.max() + "]: " + (limit
-                        ? "the " + (low ? "smallest" : "largest") + " value the parameter takes, so the targets"
-                                + " want one it cannot have (the model, not the range, stands between them)"
-                        : "the targets may want a value beyond it (widen the range in 'fit." + f.name() + "', up to "
-                                + (low ? f.lowest() : f.highest()) + ")"));
+                        + " bound of its fitted range [" + f.min() + ", " + f.max() + "]: " + (atLimit
+                        ? "the " + (low ? "smallest" : "largest") + " value the parameter takes, so wider bounds"
+                                + " cannot help (the targets need other parameters, or another model)"
+                        : "the targets may want a value beyond it (widen the range in 'fit." + f.name() + "'"
+                                + (Double.isInfinite(limit) ? "" : ", up to " + limit) + ")"));
             }
         }
         for (Map<String, Object> t : (List<Map<String, Object>>) summary.get("targets")) {
