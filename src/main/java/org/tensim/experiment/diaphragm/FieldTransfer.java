@@ -62,7 +62,7 @@ final class FieldTransfer {
                 if (gap >= bd) {
                     continue;
                 }
-                double d = SurfaceDistance.closest(coarseRest, coarseTriangles, t, p, w);
+                double d = SurfaceDistance.closest(coarseRest, coarseTriangles, t, p[0], p[1], p[2], w);
                 if (d < bd) {
                     bd = d;
                     bt = t;

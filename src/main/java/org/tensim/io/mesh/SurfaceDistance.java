@@ -104,70 +104,71 @@ public final class SurfaceDistance {
 
     /** Squared distance to triangle t (Ericson's closest point by Voronoi regions). */
     private double squaredToTriangle(double px, double py, double pz, int t) {
-        return closest(v, tri, t, new double[] {px, py, pz}, new double[3]);
+        return closest(v, tri, t, px, py, pz, null);
     }
 
     /**
-     * Squared distance from p to triangle t of a surface (vertex coordinates x, 3 per vertex; corners
-     * tri, 3 per triangle), and in {@code w} the barycentric weights of the closest point: the region
-     * test of Ericson, Real-Time Collision Detection (2005), section 5.1.5.
+     * Squared distance from (px, py, pz) to triangle t of a surface (vertex coordinates x, 3 per vertex;
+     * corners tri, 3 per triangle), and in {@code w}, unless it is null, the barycentric weights of the
+     * closest point: the region test of Ericson, Real-Time Collision Detection (2005), section 5.1.5.
+     * Allocation-free.
      */
-    public static double closest(double[] x, int[] tri, int t, double[] p, double[] w) {
+    public static double closest(double[] x, int[] tri, int t, double px, double py, double pz, double[] w) {
         int ia = 3 * tri[3 * t];
         int ib = 3 * tri[3 * t + 1];
         int ic = 3 * tri[3 * t + 2];
         double abx = x[ib] - x[ia], aby = x[ib + 1] - x[ia + 1], abz = x[ib + 2] - x[ia + 2];
         double acx = x[ic] - x[ia], acy = x[ic + 1] - x[ia + 1], acz = x[ic + 2] - x[ia + 2];
-        double apx = p[0] - x[ia], apy = p[1] - x[ia + 1], apz = p[2] - x[ia + 2];
+        double apx = px - x[ia], apy = py - x[ia + 1], apz = pz - x[ia + 2];
         double d1 = abx * apx + aby * apy + abz * apz;
         double d2 = acx * apx + acy * apy + acz * apz;
         if (d1 <= 0 && d2 <= 0) {
-            return set(w, 1, 0, 0, x, ia, ib, ic, p); // vertex A
+            return set(w, 1, 0, 0, x, ia, ib, ic, px, py, pz); // vertex A
         }
-        double bpx = p[0] - x[ib], bpy = p[1] - x[ib + 1], bpz = p[2] - x[ib + 2];
+        double bpx = px - x[ib], bpy = py - x[ib + 1], bpz = pz - x[ib + 2];
         double d3 = abx * bpx + aby * bpy + abz * bpz;
         double d4 = acx * bpx + acy * bpy + acz * bpz;
         if (d3 >= 0 && d4 <= d3) {
-            return set(w, 0, 1, 0, x, ia, ib, ic, p); // vertex B
+            return set(w, 0, 1, 0, x, ia, ib, ic, px, py, pz); // vertex B
         }
         double vc = d1 * d4 - d3 * d2;
         if (vc <= 0 && d1 >= 0 && d3 <= 0) {
             double v = d1 / (d1 - d3); // edge AB
-            return set(w, 1 - v, v, 0, x, ia, ib, ic, p);
+            return set(w, 1 - v, v, 0, x, ia, ib, ic, px, py, pz);
         }
-        double cpx = p[0] - x[ic], cpy = p[1] - x[ic + 1], cpz = p[2] - x[ic + 2];
+        double cpx = px - x[ic], cpy = py - x[ic + 1], cpz = pz - x[ic + 2];
         double d5 = abx * cpx + aby * cpy + abz * cpz;
         double d6 = acx * cpx + acy * cpy + acz * cpz;
         if (d6 >= 0 && d5 <= d6) {
-            return set(w, 0, 0, 1, x, ia, ib, ic, p); // vertex C
+            return set(w, 0, 0, 1, x, ia, ib, ic, px, py, pz); // vertex C
         }
         double vb = d5 * d2 - d1 * d6;
         if (vb <= 0 && d2 >= 0 && d6 <= 0) {
             double v = d2 / (d2 - d6); // edge AC
-            return set(w, 1 - v, 0, v, x, ia, ib, ic, p);
+            return set(w, 1 - v, 0, v, x, ia, ib, ic, px, py, pz);
         }
         double va = d3 * d6 - d5 * d4;
         if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
             double v = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge BC
-            return set(w, 0, 1 - v, v, x, ia, ib, ic, p);
+            return set(w, 0, 1 - v, v, x, ia, ib, ic, px, py, pz);
         }
         double denom = 1 / (va + vb + vc); // inside the face
         double v = vb * denom;
         double u = vc * denom;
-        return set(w, 1 - v - u, v, u, x, ia, ib, ic, p);
+        return set(w, 1 - v - u, v, u, x, ia, ib, ic, px, py, pz);
     }
 
     private static double set(double[] w, double a, double b, double c, double[] x, int ia, int ib, int ic,
-            double[] p) {
-        w[0] = a;
-        w[1] = b;
-        w[2] = c;
-        double d = 0;
-        for (int k = 0; k < 3; k++) {
-            double q = a * x[ia + k] + b * x[ib + k] + c * x[ic + k] - p[k];
-            d += q * q;
+            double px, double py, double pz) {
+        if (w != null) {
+            w[0] = a;
+            w[1] = b;
+            w[2] = c;
         }
-        return d;
+        double qx = a * x[ia] + b * x[ib] + c * x[ic] - px;
+        double qy = a * x[ia + 1] + b * x[ib + 1] + c * x[ic + 1] - py;
+        double qz = a * x[ia + 2] + b * x[ib + 2] + c * x[ic + 2] - pz;
+        return qx * qx + qy * qy + qz * qz;
     }
 
     /** The value at the nearest-rank percentile q (0..100) of the values (sorted in place). */

@@ -183,7 +183,8 @@ public final class TwoSurfaces {
      */
     private static double gap(TriangleMesh mesh, boolean[] upper, int[] partner) {
         int nv = mesh.vertexCount();
-        SurfaceDistance[] face = {face(mesh, upper, false), face(mesh, upper, true)};
+        double[] xyz = mesh.coordinates();
+        SurfaceDistance[] face = {face(mesh, xyz, upper, false), face(mesh, xyz, upper, true)};
         double[] d = new double[nv];
         int k = 0;
         for (int v = 0; v < nv; v++) {
@@ -204,7 +205,7 @@ public final class TwoSurfaces {
     }
 
     /** The triangles whose three corners are on the given side, or null when there is none. */
-    private static SurfaceDistance face(TriangleMesh mesh, boolean[] upper, boolean side) {
+    private static SurfaceDistance face(TriangleMesh mesh, double[] xyz, boolean[] upper, boolean side) {
         int[] t = new int[3 * mesh.triangleCount()];
         int n = 0;
         for (int i = 0; i < mesh.triangleCount(); i++) {
@@ -215,7 +216,7 @@ public final class TwoSurfaces {
                 }
             }
         }
-        return n == 0 ? null : new SurfaceDistance(mesh.coordinates(), Arrays.copyOf(t, n));
+        return n == 0 ? null : new SurfaceDistance(xyz, Arrays.copyOf(t, n));
     }
 
     static double distance(TriangleMesh m, int a, int b) {
