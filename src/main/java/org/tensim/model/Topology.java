@@ -25,6 +25,8 @@ public final class Topology {
     private final List<ActiveFibre> fibres = new ArrayList<>();
     private final List<TransverseShear> shears = new ArrayList<>();
     private final List<NodalForce> forces = new ArrayList<>();
+    private final List<ContactBody> contactBodies = new ArrayList<>();
+    private final List<ContactPair> contacts = new ArrayList<>();
     private Vec3 gravity = Vec3.ZERO;
     private double viscousDamping;
 
@@ -235,6 +237,34 @@ public final class Topology {
     /** The membrane triangles, in the order added. */
     public List<TriangleElement> triangles() {
         return Collections.unmodifiableList(triangles);
+    }
+
+    /** Adds a rigid contact body; returns its index for {@link #addContact}. */
+    public int addContactBody(ContactBody body) {
+        if (body == null) {
+            throw new IllegalArgumentException("contact body must not be null");
+        }
+        contactBodies.add(body);
+        return contactBodies.size() - 1;
+    }
+
+    /** Lets a node touch a contact body (frictionless, one-sided; see {@link ContactPair}). */
+    public ContactPair addContact(int node, int body, double stiffnessNPerM, double gapM) {
+        Check.index("contact node", node, nodes.size());
+        Check.index("contact body", body, contactBodies.size());
+        ContactPair c = new ContactPair(node, body, stiffnessNPerM, gapM);
+        contacts.add(c);
+        return c;
+    }
+
+    /** The contact bodies, in the order added. */
+    public List<ContactBody> contactBodies() {
+        return Collections.unmodifiableList(contactBodies);
+    }
+
+    /** The node-body contact pairs, in the order added. */
+    public List<ContactPair> contacts() {
+        return Collections.unmodifiableList(contacts);
     }
 
     /** The active fibre tensions, in the order added. */

@@ -1,0 +1,18 @@
+package org.tensim.model;
+
+/**
+ * A node that may touch a contact body: a one-sided penalty spring along the body's
+ * normal, {@code f = k max(0, g - d) n}, with d the node's signed distance to the
+ * surface and g the gap kept (the shell's half-thickness, say).
+ *
+ * @param node           node id
+ * @param body           index of the body in {@link Topology#contactBodies()}
+ * @param stiffnessNPerM penalty stiffness k, N/m (&gt; 0)
+ * @param gapM           distance from the surface at which contact begins, m (&gt;= 0)
+ */
+public record ContactPair(int node, int body, double stiffnessNPerM, double gapM) {
+    public ContactPair {
+        Check.positive("contact stiffness", "N/m", stiffnessNPerM);
+        Check.nonNegative("contact gap", "m", gapM);
+    }
+}
