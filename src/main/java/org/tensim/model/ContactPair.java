@@ -8,11 +8,12 @@ package org.tensim.model;
  * @param node           node id
  * @param body           index of the body in {@link Topology#contactBodies()}
  * @param stiffnessNPerM penalty stiffness k, N/m (&gt; 0)
- * @param gapM           distance from the surface at which contact begins, m (&gt;= 0)
+ * @param gapM           signed distance from the surface at which contact begins, m (0: at the surface;
+ *                       negative: below it, for a node that starts inside)
  */
 public record ContactPair(int node, int body, double stiffnessNPerM, double gapM) {
     public ContactPair {
         Check.positive("contact stiffness", "N/m", stiffnessNPerM);
-        Check.nonNegative("contact gap", "m", gapM);
+        Check.finite("contact gap", "m", gapM);
     }
 }

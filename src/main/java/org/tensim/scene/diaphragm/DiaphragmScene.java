@@ -77,8 +77,14 @@ public final class DiaphragmScene {
     private final double addedMass;
     private final Map<String, double[]> boxes;
     private final DiaphragmParameters parameters;
+    private final DiaphragmSpec spec;
+    private final Bones bones;
+    private final DiaphragmSceneBuilder.Parts parts;
 
-    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes) {
+    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones) {
+        this.parts = b;
+        this.spec = spec;
+        this.bones = bones;
         this.boxes = boxes;
         this.parameters = b.parameters();
         this.topology = b.topology();
@@ -118,8 +124,39 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines, BoundaryConditions bc) {
-        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, p, cycle, controls,
-                lines == null ? defaultActionLines(surfaces) : lines, bc), boxes);
+        DiaphragmSpec spec = DiaphragmSpec.defaults().withTissue(p).withBoundary(bc).withActionLines(lines)
+                .withBreathing(new DiaphragmSpec.Breathing(cycle.periodS(), cycle.expirationRatio(),
+                        controls.ribAmplitude(), controls.muscleAmplitudePa()));
+        return build(surfaces, spec, boxes, null, cycle, controls);
+    }
+
+    /**
+     * Builds the scene a spec defines on its surfaces (read by {@link DiaphragmSetup#build}), with the live
+     * controls given (a GUI's, kept across rebuilds).
+     *
+     * @param boxes the cage's rib and sternum boxes, metres (the parametric cage's or a file's)
+     * @param bones the thorax's bone surfaces; null for a cage made from the boxes
+     */
+    public static DiaphragmScene build(TwoSurfaces surfaces, DiaphragmSpec spec, Map<String, double[]> boxes,
+            Bones bones, DiaphragmControls controls) {
+        return build(surfaces, spec, boxes, bones, spec.breathing().cycle(), controls);
+    }
+
+    private static DiaphragmScene build(TwoSurfaces surfaces, DiaphragmSpec spec, Map<String, double[]> boxes,
+            Bones bones, BreathingCycle cycle, DiaphragmControls controls) {
+        List<ActionLines.Line> lines = spec.actionLines();
+        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, bones, spec, cycle, controls,
+                lines == null ? defaultActionLines(surfaces) : lines), boxes, spec, bones);
+    }
+
+    /** The definition this scene was built from. */
+    public DiaphragmSpec spec() {
+        return spec;
+    }
+
+    /** The thorax's bones, or null for a cage made from boxes. */
+    public Bones bones() {
+        return bones;
     }
 
     /**
@@ -129,7 +166,7 @@ public final class DiaphragmScene {
      * running simulation can take the new scene's constants ({@link #copyConstantsTo}).
      */
     public DiaphragmScene rebuiltWith(DiaphragmParameters p) {
-        return build(surfaces, boxes, p, cycle, controls, actionLines.lines());
+        return build(surfaces, spec.withTissue(p).withActionLines(actionLines.lines()), boxes, bones, cycle, controls);
     }
 
     /** The parameters this scene was built with. */

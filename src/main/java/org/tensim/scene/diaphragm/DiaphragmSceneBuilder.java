@@ -44,31 +44,42 @@ final class DiaphragmSceneBuilder {
     record Parts(DiaphragmParameters parameters, Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage,
             int apex, DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
             int attachedToCartilage, int attachedToSpine, boolean[] attached, ModalBounds modes,
-            double tendonAreaFraction, int firstAnchor, double addedMassKg) {
+            double tendonAreaFraction, int firstAnchor, double addedMassKg, Map<String, double[]> attachedPerBone,
+            Map<String, Integer> contactPairsPerBone) {
     }
 
     /** Runs every step, in its order, and returns what the scene holds. */
-    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p, BreathingCycle cycle,
-            DiaphragmControls controls, List<ActionLines.Line> actionLines, BoundaryConditions bc) {
-        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, bc);
+    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, Bones bones, DiaphragmSpec spec,
+            BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> actionLines) {
+        DiaphragmParameters p = spec.tissue();
+        DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, spec.boundary());
+        b.bones = bones;
+        b.spec = spec;
         b.nodes();
         b.tendon();
         b.meshSprings();
         b.rigidLinks();
         b.thicknessSprings();
-        b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+        if (bones != null) {
+            ThoraxCage.Built tc = ThoraxCage.build(b.t, b.springs, bones, p, cycle, controls);
+            b.cage = tc.cage();
+            b.boneMotions = tc.motions();
+        } else {
+            b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+        }
         b.attach();
+        b.contact();
         b.columnLinks();
         b.muscle(actionLines);
         b.support();
         b.damping();
         return new Parts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
                 b.attachedCartilage, b.attachedSpine, b.attached, b.modes, b.tendonFraction, b.firstAnchor,
-                b.addedMass);
+                b.addedMass, b.attachedPerBone, b.contactPairs);
     }
 
     // Inputs.
-    private final TwoSurfaces surfaces;
+    final TwoSurfaces surfaces;
     final TriangleMesh mesh;
     final DiaphragmParameters p;
     private final BreathingCycle cycle;
@@ -78,6 +89,12 @@ final class DiaphragmSceneBuilder {
     private final double thickness;
     /** Smallest node mass, as a fraction of the median node's. */
     private static final double MASS_FLOOR = 0.3;
+
+    private Bones bones;
+    private DiaphragmSpec spec;
+    private org.tensim.model.RigidMotion[] boneMotions;
+    private Map<String, double[]> attachedPerBone = Map.of();
+    private Map<String, Integer> contactPairs = Map.of();
 
     // Built by the steps; the attachment strategies read and extend the package-visible ones.
     final Topology t = new Topology();
@@ -239,7 +256,9 @@ final class DiaphragmSceneBuilder {
 
     private void attach() {
         attached = new boolean[nv];
-        if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
+        if (bones != null) {
+            attachedPerBone = OriginAttachment.attach(this, bones, boneMotions, null, bc.bandStiffnessPaPerM());
+        } else if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
             AttachmentBand.attach(this, bc);
         } else {
             ThresholdAttachment.attach(this);
@@ -259,10 +278,17 @@ final class DiaphragmSceneBuilder {
         for (int v = 0; v < nv; v++) {
             Node n = t.node(v);
             boolean held = n.isDriven() || n.isFixed() || (bc.attachment() == BoundaryConditions.Attachment.BAND
-                    && attached[v]);
+                    || bones != null) && attached[v];
             if (surfaces.isUpper(v) && !held && (apex < 0 || mesh.coord(v, 2) > mesh.coord(apex, 2))) {
                 apex = v;
             }
+        }
+    }
+
+    /** Sliding contact on the bones' surfaces where the diaphragm is not attached (a thorax, contact on). */
+    private void contact() {
+        if (bones != null && spec.cage().contact()) {
+            contactPairs = BoneContact.add(this, bones, boneMotions, spec.cage().contactStiffnessPaPerM());
         }
     }
 

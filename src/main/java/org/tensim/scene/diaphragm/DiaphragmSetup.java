@@ -54,6 +54,31 @@ public final class DiaphragmSetup {
         return model == BoundaryConditions.MuscleLoad.FIBRES ? DEFAULT_FIBRE_STRESS_PA : DEFAULT_MUSCLE_PA;
     }
 
+    /**
+     * Builds the scene a spec defines: reads and cleans its mesh (or generates the double dome), takes its
+     * cage or thorax, builds the scene with new live controls at the spec's starting values. The one way
+     * from a definition to a scene (command line, GUI, sweeps, calibration, tests).
+     */
+    public static Built build(DiaphragmSpec spec) throws IOException, MeshFormatException {
+        return build(spec, spec.newControls());
+    }
+
+    /** As {@link #build(DiaphragmSpec)} with given live controls (a GUI's, kept across rebuilds). */
+    public static Built build(DiaphragmSpec spec, DiaphragmControls controls) throws IOException, MeshFormatException {
+        DiaphragmSpec.Mesh m = spec.mesh();
+        MeshReport report = null;
+        Surfaces s;
+        if (m.generated()) {
+            s = new Surfaces(generatedSurfaces(m.rings()), SurfaceMode.SHELL);
+        } else {
+            MeshCleaner.Result r = read(m.file(), m.units(), m.cleaning());
+            report = r.report();
+            s = surfaces(r.mesh(), m.offsetThicknessM());
+        }
+        return new Built(DiaphragmScene.build(s.surfaces(), spec, controls), report, s.mode(),
+                m.describe() + ", " + spec.cage().describe());
+    }
+
     /** How the two boundary surfaces were obtained. */
     public enum SurfaceMode { SHELL, OFFSET }
 

@@ -1,6 +1,6 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.model.Motion;
+import org.tensim.model.RigidMotion;
 import org.tensim.model.Vec3;
 
 /**
@@ -15,7 +15,7 @@ import org.tensim.model.Vec3;
  * with R by Rodrigues' formula and A the live rib amplitude of
  * {@link DiaphragmControls}. Allocation-free: it is evaluated inside the step.
  */
-public final class HelicalAxisMotion implements Motion {
+public final class HelicalAxisMotion implements RigidMotion {
     private final double nx;
     private final double ny;
     private final double nz;
@@ -94,6 +94,32 @@ public final class HelicalAxisMotion implements Motion {
             cacheD[slot] = level * maxTranslationM;
         }
         rotate(cacheCos[slot], cacheSin[slot], cacheD[slot], rest.x(), rest.y(), rest.z(), out, o);
+    }
+
+    /**
+     * The pose at time t as a rotation R (row-major, Rodrigues: {@code R = cos I + sin [n]x + (1 - cos) n n^T})
+     * and translation {@code c = p - R p + d n}: x = R x0 + c. Allocation-free.
+     */
+    @Override
+    public void pose(double t, double[] r, int ro, double[] translation, int to) {
+        double level = controls.ribAmplitude() * cycle.level(t);
+        double theta = level * maxAngleRad;
+        double c = Math.cos(theta);
+        double s = Math.sin(theta);
+        double d = level * maxTranslationM;
+        double k = 1 - c;
+        r[ro] = c + k * nx * nx;
+        r[ro + 1] = -s * nz + k * nx * ny;
+        r[ro + 2] = s * ny + k * nx * nz;
+        r[ro + 3] = s * nz + k * ny * nx;
+        r[ro + 4] = c + k * ny * ny;
+        r[ro + 5] = -s * nx + k * ny * nz;
+        r[ro + 6] = -s * ny + k * nz * nx;
+        r[ro + 7] = s * nx + k * nz * ny;
+        r[ro + 8] = c + k * nz * nz;
+        translation[to] = px - (r[ro] * px + r[ro + 1] * py + r[ro + 2] * pz) + d * nx;
+        translation[to + 1] = py - (r[ro + 3] * px + r[ro + 4] * py + r[ro + 5] * pz) + d * ny;
+        translation[to + 2] = pz - (r[ro + 6] * px + r[ro + 7] * py + r[ro + 8] * pz) + d * nz;
     }
 
     /** Applies a rotation by theta and a translation d along the axis to (x, y, z); writes out[o..o+2]. */

@@ -82,6 +82,12 @@ public final class RibCage {
         this.motions = m;
     }
 
+    /** A cage from its parts (the thorax's, {@link ThoraxCage}). */
+    static RibCage of(List<Segment> segments, int[] ribNodes, int[] sternumNodes, Map<String, HelicalAxisMotion> m,
+            int[] spineNodes) {
+        return new RibCage(List.copyOf(segments), ribNodes, sternumNodes, m, spineNodes);
+    }
+
     public List<Segment> segments() {
         return segments;
     }
@@ -258,7 +264,7 @@ public final class RibCage {
         return dz >= 0 ? axis : axis.times(-1);
     }
 
-    private static int[] nearestTwo(Topology t, int[] ids, Vec3 p) {
+    static int[] nearestTwo(Topology t, int[] ids, Vec3 p) {
         int best = -1;
         int second = -1;
         double d1 = Double.POSITIVE_INFINITY;

@@ -1,0 +1,242 @@
+package org.tensim.scene.diaphragm;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.tensim.io.mesh.MeshCleaner;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.model.Check;
+
+/**
+ * The one definition of a diaphragm scene: every input, grouped, with named defaults
+ * ({@link #defaults()}), built by one function ({@link DiaphragmSetup#build}). The command
+ * line, the GUI and the specs of sweeps and calibrations all fill one of these; a built scene
+ * keeps it ({@link DiaphragmScene#spec()}), so a rebuild changes only what was changed.
+ *
+ * @param mesh        where the diaphragm's surfaces come from
+ * @param tissue      tissue, tendon plane and structure parameters ({@link DiaphragmParameters})
+ * @param boundary    attachment and muscle-load models ({@link BoundaryConditions})
+ * @param breathing   the breathing cycle and the two live controls' starting values
+ * @param cage        the bones: the parametric cage, BodyParts3D's boxes, or a thorax of bone surfaces
+ * @param actionLines the muscle's action lines (pressure and paper-nodes loads); null for one through each dome
+ */
+public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryConditions boundary,
+        Breathing breathing, Cage cage, List<ActionLines.Line> actionLines) {
+
+    /** Rings per face of the generated double dome at the paper's resolution (11,354 nodes). */
+    public static final int PAPER_RINGS = 43;
+    /** Thickness given to a single-surface mesh, m (the diaphragm's muscle: 2-4 mm). */
+    public static final double DEFAULT_OFFSET_THICKNESS_M = 0.0025;
+
+    public DiaphragmSpec {
+        if (mesh == null || tissue == null || boundary == null || breathing == null || cage == null) {
+            throw new IllegalArgumentException("a diaphragm spec needs its mesh, tissue, boundary, breathing and cage"
+                    + " groups (use DiaphragmSpec.defaults() and its with... methods)");
+        }
+        actionLines = actionLines == null || actionLines.isEmpty() ? null : List.copyOf(actionLines);
+        if (actionLines != null && boundary.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
+            throw new IllegalArgumentException("action lines place the traction of the muscle loads pressure and"
+                    + " paper-nodes; the muscle load 'fibres' (the active fibre tension) has none");
+        }
+    }
+
+    /**
+     * The diaphragm's mesh: the project's generated double dome at {@code rings} (when {@code file} is null)
+     * or a file, read in {@code units}, cleaned, split into its two faces or offset by the thickness.
+     *
+     * @param file             OBJ, STL or OFF; null for the generated double dome
+     * @param rings            rings per face of the generated double dome (4 or more)
+     * @param units            units of the file
+     * @param cleaning         welding and small-piece settings of the mesh cleaner
+     * @param offsetThicknessM thickness given to a single-surface mesh, m
+     * @param labels           a per-vertex label file (tendon, muscle, origins); null to derive the labels by rule
+     */
+    public record Mesh(Path file, int rings, MeshUnits units, MeshCleaner.Options cleaning, double offsetThicknessM,
+            Path labels) {
+        public Mesh {
+            if (rings < 4) {
+                throw new IllegalArgumentException("rings per face of the double dome must be 4 or more, got " + rings);
+            }
+            if (units == null || cleaning == null) {
+                throw new IllegalArgumentException("mesh units and cleaning options must be given");
+            }
+            Check.positive("single-surface mesh thickness", "m", offsetThicknessM);
+        }
+
+        /** The generated double dome at the paper's resolution. */
+        public static Mesh defaults() {
+            return new Mesh(null, PAPER_RINGS, MeshUnits.parse("mm"), MeshCleaner.Options.defaults(),
+                    DEFAULT_OFFSET_THICKNESS_M, null);
+        }
+
+        public Mesh withFile(Path f, MeshUnits u) {
+            return new Mesh(f, rings, u, cleaning, offsetThicknessM, labels);
+        }
+
+        public Mesh withRings(int r) {
+            return new Mesh(file, r, units, cleaning, offsetThicknessM, labels);
+        }
+
+        public Mesh withCleaning(MeshCleaner.Options c) {
+            return new Mesh(file, rings, units, c, offsetThicknessM, labels);
+        }
+
+        public Mesh withOffsetThickness(double m) {
+            return new Mesh(file, rings, units, cleaning, m, labels);
+        }
+
+        public Mesh withLabels(Path l) {
+            return new Mesh(file, rings, units, cleaning, offsetThicknessM, l);
+        }
+
+        /** Whether the mesh is the generated double dome. */
+        public boolean generated() {
+            return file == null;
+        }
+
+        /** What the mesh is, for summaries. */
+        public String describe() {
+            return file == null ? "generated double dome, " + rings + " rings" : file.toString();
+        }
+    }
+
+    /**
+     * The breathing cycle and the starting values of the two live controls ({@link DiaphragmControls}).
+     *
+     * @param periodS         breathing period, s
+     * @param expirationRatio r in I:E = 1:r
+     * @param ribAmplitude    factor on the quiet-breathing rib rotations, 0..3
+     * @param musclePa        peak muscle action, Pa (active fibre stress or pressure); null for the muscle load's
+     *                        default ({@link DiaphragmSetup#defaultMusclePa})
+     */
+    public record Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa) {
+        public Breathing {
+            new BreathingCycle(periodS, expirationRatio); // validates
+            new DiaphragmControls(ribAmplitude, musclePa == null ? 0 : musclePa); // validates
+        }
+
+        /** Quiet breathing: 4 s, I:E 1:2, the quiet rib motion and the load's default muscle action. */
+        public static Breathing defaults() {
+            return new Breathing(4, 2, 1, null);
+        }
+
+        public BreathingCycle cycle() {
+            return new BreathingCycle(periodS, expirationRatio);
+        }
+
+        public Breathing withPeriod(double s) {
+            return new Breathing(s, expirationRatio, ribAmplitude, musclePa);
+        }
+
+        public Breathing withExpirationRatio(double r) {
+            return new Breathing(periodS, r, ribAmplitude, musclePa);
+        }
+
+        public Breathing withRibAmplitude(double a) {
+            return new Breathing(periodS, expirationRatio, a, musclePa);
+        }
+
+        public Breathing withMusclePa(Double pa) {
+            return new Breathing(periodS, expirationRatio, ribAmplitude, pa);
+        }
+    }
+
+    /**
+     * The bones the diaphragm is attached to and lies against.
+     *
+     * @param boxes                rib and sternum boxes (mm, BodyParts3D's form); null for the parametric cage
+     * @param thorax               a folder of bone surfaces with a {@code parts.json}; null for none (then the
+     *                             cage is the parametric one or the boxes)
+     * @param contact              whether the muscle slides on the bones' surfaces (frictionless, one-sided) where
+     *                             it is not attached; needs bone surfaces
+     * @param contactStiffnessPaPerM penalty stiffness of the contact per unit area of diaphragm, Pa/m
+     */
+    public record Cage(Path boxes, Path thorax, boolean contact, double contactStiffnessPaPerM) {
+        /** Default contact stiffness, Pa/m: as stiff as the attachment band (a few tenths of a mm under 10 kPa). */
+        public static final double DEFAULT_CONTACT_PA_PER_M = 2.5e7;
+
+        public Cage {
+            if (boxes != null && thorax != null) {
+                throw new IllegalArgumentException("give rib boxes (--boxes " + boxes + ") or a thorax (--thorax "
+                        + thorax + "), not both");
+            }
+            Check.positive("contact stiffness", "Pa/m", contactStiffnessPaPerM);
+        }
+
+        /** The project's parametric cage, contact on wherever there are bone surfaces. */
+        public static Cage defaults() {
+            return new Cage(null, null, true, DEFAULT_CONTACT_PA_PER_M);
+        }
+
+        public Cage withBoxes(Path b) {
+            return new Cage(b, thorax, contact, contactStiffnessPaPerM);
+        }
+
+        public Cage withThorax(Path dir) {
+            return new Cage(boxes, dir, contact, contactStiffnessPaPerM);
+        }
+
+        public Cage withContact(boolean on) {
+            return new Cage(boxes, thorax, on, contactStiffnessPaPerM);
+        }
+
+        public Cage withContactStiffness(double paPerM) {
+            return new Cage(boxes, thorax, contact, paPerM);
+        }
+
+        /** Which cage, for summaries. */
+        public String describe() {
+            return thorax != null ? "thorax " + thorax : DiaphragmSetup.cage(boxes);
+        }
+    }
+
+    /** The defaults: the generated double dome at the paper's resolution in the parametric cage, quiet breathing. */
+    public static DiaphragmSpec defaults() {
+        return new DiaphragmSpec(Mesh.defaults(), DiaphragmParameters.defaults(), BoundaryConditions.defaults(),
+                Breathing.defaults(), Cage.defaults(), null);
+    }
+
+    /**
+     * The paper's model (section 3.2): its tissue springs, attachment by a distance threshold with the nodes
+     * driven, and vertical action lines with per-node forces.
+     */
+    public static DiaphragmSpec paper() {
+        DiaphragmSpec d = defaults();
+        return d.withTissue(d.tissue().withTissueModel(TissueModel.PAPER)).withBoundary(BoundaryConditions.paper())
+                .withCage(d.cage().withContact(false));
+    }
+
+    public DiaphragmSpec withMesh(Mesh m) {
+        return new DiaphragmSpec(m, tissue, boundary, breathing, cage, actionLines);
+    }
+
+    public DiaphragmSpec withTissue(DiaphragmParameters p) {
+        return new DiaphragmSpec(mesh, p, boundary, breathing, cage, actionLines);
+    }
+
+    public DiaphragmSpec withBoundary(BoundaryConditions b) {
+        return new DiaphragmSpec(mesh, tissue, b, breathing, cage, actionLines);
+    }
+
+    public DiaphragmSpec withBreathing(Breathing b) {
+        return new DiaphragmSpec(mesh, tissue, boundary, b, cage, actionLines);
+    }
+
+    public DiaphragmSpec withCage(Cage c) {
+        return new DiaphragmSpec(mesh, tissue, boundary, breathing, c, actionLines);
+    }
+
+    public DiaphragmSpec withActionLines(List<ActionLines.Line> l) {
+        return new DiaphragmSpec(mesh, tissue, boundary, breathing, cage, l);
+    }
+
+    /** The peak muscle action the scene starts with, Pa: the given one, or the muscle load's default. */
+    public double musclePa() {
+        return breathing.musclePa() != null ? breathing.musclePa() : DiaphragmSetup.defaultMusclePa(
+                boundary.muscleLoad());
+    }
+
+    /** New live controls at this spec's starting values. */
+    public DiaphragmControls newControls() {
+        return new DiaphragmControls(breathing.ribAmplitude(), musclePa());
+    }
+}
