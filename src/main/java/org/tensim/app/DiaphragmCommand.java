@@ -56,6 +56,33 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " rib cage, placed on the generated dome)")
     Path boxes;
 
+    @Option(names = "--thorax", paramLabel = "DIR",
+            description = "a thorax of bone surfaces: a folder with a parts.json and its OBJ parts in the mesh's frame,"
+                    + " e.g. ../shared/meshes/thorax (ribs, cartilage, sternum and vertebrae; the diaphragm attached at"
+                    + " its origins and sliding on the bones elsewhere) (default: the parametric rib cage)")
+    Path thorax;
+
+    @Option(names = "--labels", paramLabel = "FILE",
+            description = "per-vertex labels of the mesh (tendon, muscle, origin-sternal, origin-costal,"
+                    + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
+    Path labels;
+
+    @Option(names = "--contact", negatable = true, defaultValue = "true", fallbackValue = "true",
+            description = "with --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
+                    + " not attached (default: on; --no-contact turns it off)")
+    boolean contact = true;
+
+    @Option(names = "--contact-stiffness", paramLabel = "PA_PER_M",
+            description = "contact penalty stiffness per unit area of diaphragm, Pa/m (default: ${DEFAULT-VALUE})")
+    double contactPaPerM = org.tensim.scene.diaphragm.DiaphragmSpec.Cage.DEFAULT_CONTACT_PA_PER_M;
+
+    @Option(names = "--model", paramLabel = "NAME",
+            description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
+                    + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
+                    + " vertical action lines with per-node forces); the paper's model sets --tissue-model,"
+                    + " --attachment and --muscle-load, which must then be left out (default: ${DEFAULT-VALUE})")
+    String model = "default";
+
     @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s; the breathing figures need one"
             + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
     double seconds = 4;
@@ -287,6 +314,24 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + muscleLoad + "' (the active fibre tension) has no action lines; they place the traction of"
                     + " --muscle-load pressure or paper-nodes");
         }
+        if (model.equals("paper")) {
+            var pr = spec.commandLine().getParseResult();
+            for (String o : new String[] {"--tissue-model", "--attachment", "--muscle-load"}) {
+                if (pr.hasMatchedOption(o)) {
+                    throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--model paper sets " + o
+                            + " itself (the paper's); leave it out or use --model default");
+                }
+            }
+            org.tensim.scene.diaphragm.DiaphragmSpec paper = org.tensim.scene.diaphragm.DiaphragmSpec.paper();
+            p = p.withTissueModel(paper.tissue().tissueModel());
+            bc = paper.boundary().withBandStiffness(bandPaPerM);
+            if (musclePa == null) {
+                musclePa = DiaphragmSetup.defaultMusclePa(bc.muscleLoad());
+            }
+        } else if (!model.equals("default")) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--model must be default or paper,"
+                    + " got '" + model + "'");
+        }
         MeshCleaner.Options cleaning = new MeshCleaner.Options(weldMm * 1e-3, minPieceFraction);
         List<ActionLines.Line> lines = actionLines == null || actionLines.isEmpty() ? null : actionLines;
         BreathingCycle cycle = new BreathingCycle(period, ieRatio);
@@ -294,11 +339,29 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 : DiaphragmSetup.defaultMusclePa(bc.muscleLoad()));
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final DiaphragmParameters params = p;
+        final BoundaryConditions bcFinal = bc;
+        org.tensim.scene.diaphragm.DiaphragmSpec.Mesh meshSpec = org.tensim.scene.diaphragm.DiaphragmSpec.Mesh.defaults()
+                .withCleaning(cleaning).withOffsetThickness(thicknessMm * 1e-3).withLabels(labels);
+        if (!(mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh))) {
+            meshSpec = meshSpec.withFile(mesh, u);
+        }
+        final org.tensim.scene.diaphragm.DiaphragmSpec sceneSpec;
+        try {
+            sceneSpec = new org.tensim.scene.diaphragm.DiaphragmSpec(meshSpec, p, bc,
+                    new org.tensim.scene.diaphragm.DiaphragmSpec.Breathing(period, ieRatio, ribAmplitude, musclePa),
+                    new org.tensim.scene.diaphragm.DiaphragmSpec.Cage(boxes, thorax, contact, contactPaPerM), lines);
+        } catch (IllegalArgumentException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
+        if ((realtimeStudy || resolutionStudy) && (thorax != null || labels != null)) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--thorax and --labels are not yet"
+                    + " taken by --realtime-study and --resolution-study");
+        }
         if (realtimeStudy) {
             return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
                 registerAll(run, REALTIME_OUTPUTS);
                 Map<String, Object> s = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
-                        boxes, params, bc, cycle, controls, seconds, out, System.out);
+                        boxes, params, bcFinal, cycle, controls, seconds, out, System.out);
                 System.out.println(Json.line(run.finish(RunStatus.OK, s)));
             });
         }
@@ -327,8 +390,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
-        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, u, params, bc, cleaning,
-                lines, cycle, controls, o, integratorUsed, named));
+        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, sceneSpec, o,
+                integratorUsed, named));
     }
 
     /** Outputs of the studies, written by the study classes themselves into --out. */
@@ -342,16 +405,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
     }
 
-    private void simulate(RunFolder run, MeshUnits u, DiaphragmParameters p, BoundaryConditions bc,
-            MeshCleaner.Options cleaning,
-            List<ActionLines.Line> lines, BreathingCycle cycle, DiaphragmControls controls, DiaphragmReport.Options o,
+    private void simulate(RunFolder run, org.tensim.scene.diaphragm.DiaphragmSpec sceneSpec, DiaphragmReport.Options o,
             org.tensim.solver.Integrator chosen, RealTimeSetting setting) throws Exception {
-        DiaphragmSetup.Built built;
-        if (mesh.equals(DiaphragmSetup.DEFAULT_MESH) && !Files.isRegularFile(mesh)) {
-            built = DiaphragmSetup.generated(43, lines, boxes, p, cycle, controls, bc);
-        } else {
-            built = DiaphragmSetup.load(mesh, u, cleaning, thicknessMm * 1e-3, lines, boxes, p, cycle, controls, bc);
-        }
+        BoundaryConditions bc = sceneSpec.boundary();
+        DiaphragmSetup.Built built = DiaphragmSetup.build(sceneSpec);
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }

@@ -33,6 +33,15 @@ public final class BreathingMetrics implements StepListener {
     private double apexAtInsp = Double.NaN;
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
+    /** Per diaphragm node: 0 not a dome candidate, 1 right half (x below the midline), 2 left half. */
+    private final int[] half;
+    private double[] domeTopsExp;
+    private double[] domeTopsInsp;
+    /** Nodes of the 3rd-5th costal cartilages (marker: their mean), empty when the cage has none. */
+    private final int[] cartilageMarkers;
+    private double[] markerExp;
+    private double[] markerInsp;
+    private double maxPenetration;
 
     /**
      * @param runSeconds length of the run, s (> 0); the breathing is measured only when the run reaches
@@ -51,6 +60,47 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
+        double[] b = scene.surfaces().mesh().bounds();
+        double cx = 0.5 * (b[0] + b[3]);
+        this.half = new int[nodes];
+        for (int v = 0; v < nodes; v++) {
+            if (scene.surfaces().isUpper(v) && !origin[v]) {
+                half[v] = scene.surfaces().mesh().coord(v, 0) < cx ? 1 : 2;
+            }
+        }
+        java.util.Set<Integer> markers = new java.util.TreeSet<>();
+        for (org.tensim.scene.diaphragm.RibCage.Segment sg : scene.cage().segments()) {
+            if (sg.kind() == org.tensim.scene.diaphragm.RibCage.Kind.CARTILAGE && sg.name().matches(".*[^0-9][345]")) {
+                markers.add(sg.a());
+                markers.add(sg.b());
+            }
+        }
+        this.cartilageMarkers = markers.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** The highest z of the upper surface's free nodes in each half (right, left), m: the two dome tops. */
+    private double[] domeTops(SystemState s) {
+        double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int v = 0; v < nodes; v++) {
+            if (half[v] > 0) {
+                top[half[v] - 1] = Math.max(top[half[v] - 1], s.x[3 * v + 2]);
+            }
+        }
+        return top;
+    }
+
+    /** The mean position of the cartilage markers, m; null without markers. */
+    private double[] marker(SystemState s) {
+        if (cartilageMarkers.length == 0) {
+            return null;
+        }
+        double[] m = new double[3];
+        for (int i : cartilageMarkers) {
+            for (int a = 0; a < 3; a++) {
+                m[a] += s.x[3 * i + a] / cartilageMarkers.length;
+            }
+        }
+        return m;
     }
 
     /** Start of the last complete cycle in [0, runSeconds] (0 when there is none), s. */
@@ -71,6 +121,8 @@ public final class BreathingMetrics implements StepListener {
             extentsExp = extents(s, null);
             originsExp = extents(s, origin);
             apexAtExp = s.x[3 * apex + 2];
+            domeTopsExp = domeTops(s);
+            markerExp = marker(s);
             heightsExp = new double[nodes]; // once per run, at the measured cycle's start
             for (int i = 0; i < nodes; i++) {
                 heightsExp[i] = s.x[3 * i + 2];
@@ -80,10 +132,15 @@ public final class BreathingMetrics implements StepListener {
             extentsInsp = extents(s, null);
             originsInsp = extents(s, origin);
             apexAtInsp = s.x[3 * apex + 2];
+            domeTopsInsp = domeTops(s);
+            markerInsp = marker(s);
             largestDescent = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < nodes; i++) {
                 largestDescent = Math.max(largestDescent, heightsExp[i] - s.x[3 * i + 2]);
             }
+        }
+        if (s.contacts.count() > 0) {
+            maxPenetration = Math.max(maxPenetration, s.contacts.maxPenetrationM(t, s.x));
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
             double z = s.x[3 * apex + 2];
@@ -188,6 +245,16 @@ public final class BreathingMetrics implements StepListener {
             f.put("ap_extent_change_all_nodes_mm", 1e3 * apChangeAllM());
             f.put("transverse_extent_change_all_nodes_mm", 1e3 * transverseChangeAllM());
             f.put("thorax_vertical_change_mm", -1e3 * apexDescentM());
+            f.put("right_dome_descent_mm", 1e3 * (domeTopsExp[0] - domeTopsInsp[0]));
+            f.put("left_dome_descent_mm", 1e3 * (domeTopsExp[1] - domeTopsInsp[1]));
+            if (markerExp != null) {
+                f.put("cartilage_marker_cranial_mm", 1e3 * (markerInsp[2] - markerExp[2]));
+                // +Y is posterior: ventral motion is -y.
+                f.put("cartilage_marker_ventral_mm", -1e3 * (markerInsp[1] - markerExp[1]));
+            }
+        }
+        if (scene.topology().contacts().size() > 0) {
+            f.put("max_bone_penetration_mm", 1e3 * maxPenetration);
         }
         return f;
     }

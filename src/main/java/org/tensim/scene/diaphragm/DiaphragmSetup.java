@@ -75,7 +75,9 @@ public final class DiaphragmSetup {
             report = r.report();
             s = surfaces(r.mesh(), m.offsetThicknessM());
         }
-        return new Built(DiaphragmScene.build(s.surfaces(), spec, controls), report, s.mode(),
+        Bones bones = spec.cage().thorax() == null ? null : ThoraxBones.load(spec.cage().thorax());
+        return new Built(DiaphragmScene.build(s.surfaces(), spec, bones == null ? boxes(spec.cage().boxes())
+                : Map.of(), bones, controls), report, s.mode(),
                 m.describe() + ", " + spec.cage().describe());
     }
 
