@@ -193,4 +193,49 @@ class ContactForcesTest {
         assertTrue(maxAbs(f) > 0, "contact forces were exerted");
         assertEquals(0, bytes, "bytes allocated by 2000 force passes with contacts");
     }
+    /** Steps of rk2, implicit Euler and BDF2 with nodes on a rising floor allocate nothing (after warm-up). */
+    @Test
+    void stepsWithContactsAllocateNothing() {
+        var bean = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
+                "no allocation counters");
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
+        mx.setThreadAllocatedMemoryEnabled(true);
+        long id = Thread.currentThread().getId();
+        for (String name : new String[] {"rk2", "implicit-euler", "bdf2"}) {
+            Topology t = new Topology();
+            int floor = t.addContactBody(ContactShapes.body("floor", ContactShapes.plane(0, 1, 0, 0),
+                    ContactShapes.translating(new Vec3(0, 0.05, 0))));
+            for (int i = 0; i < 10; i++) {
+                t.addNode(0.1 * i, -0.01 * 9.81 / 1e4, 0, 0.01); // resting: p = m g / k
+                t.addContact(i, floor, 1e4, 0);
+                if (i > 0) {
+                    t.addSpring(t.node(i - 1), t.node(i), 100, 0.1);
+                }
+            }
+            t.setGravity(new Vec3(0, -9.81, 0));
+            t.setViscousDamping(5); // zeta = 0.25: the nodes ride the floor instead of bouncing off it
+            Simulation sim = new Simulation(SystemState.compile(t),
+                    org.tensim.solver.integrators.Integrators.create(name));
+            sim.setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+            double h = sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : 1e-3;
+            for (int i = 0; i < 300; i++) {
+                sim.step(h);
+            }
+            long bytes = 0;
+            for (int attempt = 0; attempt < 3; attempt++) {
+                long before = mx.getThreadAllocatedBytes(id);
+                for (int i = 0; i < 300; i++) {
+                    sim.step(h);
+                }
+                bytes = mx.getThreadAllocatedBytes(id) - before;
+                if (bytes == 0) {
+                    break;
+                }
+            }
+            assertEquals(10, sim.state().contacts.activeCount(sim.time(), sim.state().x), name + ": all on the floor");
+            assertEquals(0, bytes, name + ": bytes allocated by 300 steps with contacts");
+        }
+    }
 }
