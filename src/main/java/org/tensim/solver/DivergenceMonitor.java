@@ -108,14 +108,14 @@ final class DivergenceMonitor {
             // First step: the energy the run starts with (e.g. a released stretch) is the first reference.
             floor = floor(s);
             gravity0 = forces.gravityEnergy();
-            lastEnergy = forces.kineticEnergy() + forces.elasticEnergy(x);
+            lastEnergy = forces.kineticEnergy() + forces.elasticEnergy(t, x);
             return;
         }
         if (step % interval != 0) {
             return;
         }
         double kinetic = forces.kineticEnergy();
-        double spring = forces.elasticEnergy(x);
+        double spring = forces.elasticEnergy(t, x);
         double dGravity = forces.gravityEnergy() - gravity0;
         double e = kinetic + spring + dGravity;
         double exchanged = kinetic + spring + Math.abs(dGravity);

@@ -4,7 +4,8 @@ package org.tensim.solver;
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
  * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
- * active fibre tensions ({@link FibreTension}) and the transverse shear elements ({@link ShearElements}).
+ * active fibre tensions ({@link FibreTension}), the transverse shear elements ({@link ShearElements}) and the
+ * frictionless contacts with moving rigid bodies ({@link ContactForces}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -115,6 +116,8 @@ public final class ForceModel {
         }
         // The muscle's active fibre tension (none unless the scene has fibres), after the triangles.
         s.fibres.forces(t, px, f);
+        // Contact with the rigid bodies (none unless the scene has contact pairs), after the fibres.
+        s.contacts.forces(t, px, f);
         // The two-surface shell's transverse shear (none unless the scene has shear elements), unless
         // the triangle pass adds it.
         if (trianglePass == null || !trianglePass.addsShearForces()) {
@@ -149,6 +152,14 @@ public final class ForceModel {
     /** Elastic energy of springs, membrane triangles and transverse shear elements at positions px, J. */
     public double elasticEnergy(double[] px) {
         return springEnergy(px) + triangleEnergy(px) + s.shears.energy(px);
+    }
+
+    /**
+     * Elastic energy at time t (s) and positions px (m), J: {@link #elasticEnergy(double[])} plus the contacts'
+     * penalty energy {@code sum k max(0, g - d)^2 / 2} (which needs t: the bodies move).
+     */
+    public double elasticEnergy(double t, double[] px) {
+        return elasticEnergy(px) + s.contacts.energy(t, px);
     }
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */

@@ -73,7 +73,8 @@ public final class SystemState {
 
     /** Active fibre tensions ({@link FibreTension}; count 0 when the topology has none). */
     public final FibreTension fibres;
-
+    /** Frictionless contacts with moving rigid bodies ({@link ContactForces}; count 0 when none). */
+    public final ContactForces contacts;
     /** Transverse shear elements of the two-surface shell ({@link ShearElements}; count 0 when none). */
     public final ShearElements shears;
 
@@ -181,8 +182,8 @@ public final class SystemState {
             triDamping[e] = te.dampingS();
             triangleDamping |= te.dampingS() != 0;
         }
-
         fibres = new FibreTension(t.fibres());
+        contacts = new ContactForces(t.contactBodies(), t.contacts());
         shears = new ShearElements(t.shears(), x0);
 
         List<RigidLink> l = t.rigidLinks();
@@ -348,11 +349,12 @@ public final class SystemState {
     }
 
     /**
-     * A new critical time step estimate (springs, membrane triangles and shear elements, at the rest
-     * positions), not cached: for a thread other than the simulation's.
+     * A new critical time step estimate (springs, triangles and shear elements at the rest positions, every contact
+     * pair as if in contact: {@link ContactForces#worstCaseStiffness()}), not cached: for another thread.
      */
     public CriticalTimeStep estimateCriticalTimeStep() {
-        return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0, elementStiffness());
+        ExtraStiffness all = ExtraStiffness.sum(elementStiffness(), contacts.worstCaseStiffness());
+        return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0, all);
     }
 
     /** The stiffness of the membrane triangles and shear elements linearised at the rest positions (new objects). */

@@ -29,7 +29,9 @@ import org.tensim.solver.stability.LinearStability;
  * zero, which keeps the matrix symmetric positive definite so that CG applies.
  * Membrane triangles add their tangent stiffness with the compressive stress dropped
  * ({@link TriangleTangent}), positive semi-definite likewise, and transverse shear elements
- * {@code k grad g grad g^T} ({@link org.tensim.solver.ShearElements}).
+ * {@code k grad g grad g^T} ({@link org.tensim.solver.ShearElements}), and each node in contact with a rigid
+ * body {@code k n n^T} at t + h ({@link org.tensim.solver.ContactForces}: the pairs in contact at the start of
+ * the step; one that comes into contact within the step is caught at the next).
  * Axial damping c adds {@code c u u^T} to C, viscous damping c_v adds c_v I. An
  * approximate Jacobian leaves the order at 1 (a linearly implicit Euler step is
  * first order with any Jacobian); only the stability depends on it.
@@ -185,7 +187,7 @@ public final class ImplicitEuler implements Integrator {
         System.arraycopy(v, 0, vs, 0, n3);
         st.applyMotions(t + step, xs, vs, scratch);
         model.computeForces(t + step, xs, vs, f);
-        linearise(xs);
+        linearise(t + step, xs);
 
         // b = h (f - h S v), on free nodes only; r = b - A dv with dv from the last step as the first guess.
         applyStiffness(vs, ap);
@@ -284,11 +286,11 @@ public final class ImplicitEuler implements Integrator {
     }
 
     /**
-     * The springs' blocks ({@link SpringBlocks}), the triangles' and shear elements' tangents (positive
+     * The springs' blocks ({@link SpringBlocks}), the triangles', shear elements' and contacts' tangents at t (positive
      * semi-definite parts), the lumped mass terms per degree of freedom, and the inverse of A's
      * diagonal (Jacobi).
      */
-    private void linearise(double[] px) {
+    private void linearise(double t, double[] px) {
         final double[] m = s.mass;
         final double[] im = s.invMass;
         final double hv = h * s.viscousDamping();
@@ -309,12 +311,14 @@ public final class ImplicitEuler implements Integrator {
         }
         s.shears.linearise(px, false);
         s.shears.addDiagonal(dg, h2, h);
+        s.contacts.linearise(t, px);
+        s.contacts.addDiagonal(dg, h2);
         for (int k = 0; k < dg.length; k++) {
             dg[k] = free[k] / dg[k];
         }
     }
 
-    /** out = S p (stiffness only: springs, triangles, shear elements), for every node. */
+    /** out = S p (stiffness only: springs, triangles, shear elements, contacts), for every node. */
     private void applyStiffness(double[] pv, double[] out) {
         java.util.Arrays.fill(out, 0);
         springs.addStiffness(s, pv, out);
@@ -322,6 +326,7 @@ public final class ImplicitEuler implements Integrator {
             triangles.multiplyAdd(pv, out, null);
         }
         s.shears.multiplyAdd(pv, out, null, 1);
+        s.contacts.multiplyAdd(pv, out, null, 1);
     }
 
     /** out = (M + h C + h^2 S) p on free nodes, 0 on the others. */
@@ -338,6 +343,7 @@ public final class ImplicitEuler implements Integrator {
             triangles.multiplyAdd(pv, out, null, h * h, h);
         }
         s.shears.multiplyAdd(pv, out, null, h * h, h);
+        s.contacts.multiplyAdd(pv, out, null, h * h);
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];
         }

@@ -30,6 +30,10 @@ import org.tensim.solver.SystemState;
  * {@code (beta^2 + beta beta_e) K_kk 4 |e_k|^2} between the two pairs' means. On coarse meshes this mode is
  * several times stiffer than the membrane ({@code kappa G (h / t)^2} against E): without it the
  * preconditioner leaves it to the few Krylov iterations of a step, which do not resolve it.
+ * Contacts with rigid bodies ({@link org.tensim.solver.ContactForces}) are left out: which nodes touch changes
+ * from step to step, and a constant {@code beta^2 k} on every node that may touch would overweight the many
+ * that do not; their {@code beta^2 k n n^T} is in the Newton-Krylov products ({@link SpringJacobian}), so CG
+ * still converges to the true step, in more iterations when the contact is stiff.
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the

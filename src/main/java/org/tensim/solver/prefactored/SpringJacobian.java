@@ -24,7 +24,10 @@ import org.tensim.solver.SystemState;
  * Active fibre tensions add {@code beta^2 K_F} ({@link org.tensim.solver.FibreTension}, positive
  * semi-definite), at the new step's time. Transverse shear elements add {@code (beta^2 + beta beta_e) K_S},
  * {@code K_S = sum K_kl grad g_k grad g_l^T} ({@link org.tensim.solver.ShearElements}, their indefinite
- * geometric term dropped).
+ * geometric term dropped). Contacts with rigid bodies add {@code beta^2 k n n^T} on each node in contact at the
+ * linearisation ({@link org.tensim.solver.ContactForces}, curvature term dropped), at the new step's time; they
+ * are not in the prefactored preconditioner ({@link PrefactoredMatrix}: the set in contact changes from step to
+ * step), so stiff contact costs CG iterations but not accuracy of the product.
  */
 final class SpringJacobian {
     private final SystemState s;
@@ -78,6 +81,7 @@ final class SpringJacobian {
             triangles.linearise(px, loops);
         }
         s.fibres.linearise(t, px);
+        s.contacts.linearise(t, px);
         s.shears.linearise(px, false);
         positions = px;
         weight = beta;
@@ -160,6 +164,7 @@ final class SpringJacobian {
             triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
         }
         s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
+        s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
         s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
     }
 }

@@ -1,0 +1,241 @@
+package org.tensim.solver;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.tensim.model.RigidMotion;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+
+/**
+ * The contact forces ({@link ContactForces}) as physics: minus the gradient of the penalty energy
+ * {@code k max(0, g - d)^2 / 2} against a plane and a sphere that move and turn, the tangent equal to
+ * the forces' derivative on a plane, the read-outs, the critical step counting the contacts, and a
+ * force pass that allocates nothing.
+ */
+class ContactForcesTest {
+    private static final double TIME = 0.7;
+
+    /** 40 nodes in the unit box, each paired with a tilted plane and a sphere, both moving and turning. */
+    private static SystemState scene(Random rnd) {
+        Topology t = new Topology();
+        RigidMotion m = ContactShapes.moving(new Vec3(0.1, -0.2, 0.05), new Vec3(0.3, 0.2, -0.1), 0.8);
+        int plane = t.addContactBody(ContactShapes.body("plane", ContactShapes.plane(0.3, 1, -0.2, 0.05), m));
+        int ball = t.addContactBody(ContactShapes.body("ball", ContactShapes.sphere(0.2, 0.1, 0, 0.5),
+                ContactShapes.moving(Vec3.ZERO, new Vec3(0, 0.1, 0), -1.3)));
+        for (int i = 0; i < 40; i++) {
+            t.addNode(rnd.nextDouble() * 2 - 1, rnd.nextDouble() * 2 - 1, rnd.nextDouble() * 2 - 1, 0.01);
+            t.addContact(i, plane, 100 + 900 * rnd.nextDouble(), 0.02 * rnd.nextDouble());
+            t.addContact(i, ball, 100 + 900 * rnd.nextDouble(), 0.02 * rnd.nextDouble());
+        }
+        return SystemState.compile(t);
+    }
+
+    private static double maxAbs(double[] v) {
+        double m = 0;
+        for (double d : v) {
+            m = Math.max(m, Math.abs(d));
+        }
+        return m;
+    }
+
+    @Test
+    void forcesAreMinusTheEnergyGradientOnMovingPlaneAndSphere() {
+        SystemState s = scene(new Random(7));
+        double[] x = s.x.clone();
+        double[] f = new double[x.length];
+        s.contacts.forces(TIME, x, f);
+        int active = s.contacts.activeCount(TIME, x);
+        assertTrue(active > 10 && active < 70, "some pairs in contact, some not: " + active);
+        double scale = maxAbs(f);
+        double h = 1e-7;
+        for (int k = 0; k < x.length; k++) {
+            double keep = x[k];
+            x[k] = keep + h;
+            double ep = s.contacts.energy(TIME, x);
+            x[k] = keep - h;
+            double em = s.contacts.energy(TIME, x);
+            x[k] = keep;
+            assertEquals(-(ep - em) / (2 * h), f[k], 1e-6 * scale, "component " + k);
+        }
+    }
+
+    @Test
+    void theTangentIsTheForcesDerivativeOnAPlane() {
+        Topology t = new Topology();
+        RigidMotion m = ContactShapes.moving(new Vec3(0, 0.1, 0), new Vec3(0.2, 0.5, 0), 0.6);
+        int plane = t.addContactBody(ContactShapes.body("plane", ContactShapes.plane(0.2, 1, 0.4, 0), m));
+        Random rnd = new Random(11);
+        for (int i = 0; i < 30; i++) {
+            t.addNode(rnd.nextDouble() * 2 - 1, rnd.nextDouble() * 2 - 1, rnd.nextDouble() * 2 - 1, 0.01);
+            t.addContact(i, plane, 1e3 * (1 + rnd.nextDouble()), 0.01);
+        }
+        SystemState s = SystemState.compile(t);
+        double[] x = s.x.clone();
+        double[] z = new double[x.length];
+        for (int k = 0; k < z.length; k++) {
+            z[k] = rnd.nextGaussian();
+        }
+        s.contacts.linearise(TIME, x);
+        double[] kz = new double[x.length];
+        s.contacts.multiplyAdd(z, kz, null, 1);
+        // -df/dx z by central differences; exact for a plane up to rounding (no node crosses the surface).
+        double eps = 1e-7;
+        double[] fp = new double[x.length];
+        double[] fm = new double[x.length];
+        double[] xp = x.clone();
+        double[] xm = x.clone();
+        for (int k = 0; k < x.length; k++) {
+            xp[k] += eps * z[k];
+            xm[k] -= eps * z[k];
+        }
+        s.contacts.forces(TIME, xp, fp);
+        s.contacts.forces(TIME, xm, fm);
+        int active = s.contacts.activeCount(TIME, x);
+        assertTrue(active > 5 && active < 25, "some nodes in contact, some not: " + active);
+        assertEquals(active, s.contacts.activeCount(TIME, xp), "no node crossed the surface");
+        double scale = maxAbs(kz);
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(-(fp[k] - fm[k]) / (2 * eps), kz[k], 1e-6 * scale, "component " + k);
+        }
+        // On a compact numbering that leaves node 0 out: the same rows, node 0's neither read nor written.
+        int[] offset = new int[s.nodeCount];
+        double[] zc = new double[z.length - 3];
+        for (int i = 0; i < s.nodeCount; i++) {
+            offset[i] = i == 0 ? -1 : 3 * (i - 1);
+            for (int c = 0; c < 3 && i > 0; c++) {
+                zc[3 * (i - 1) + c] = z[3 * i + c];
+            }
+        }
+        double[] yc = new double[zc.length];
+        s.contacts.multiplyAdd(zc, yc, offset, 2);
+        for (int k = 3; k < x.length; k++) {
+            assertEquals(2 * kz[k], yc[k - 3], 1e-12 * scale, "compact component " + k);
+        }
+        double[] diag = new double[x.length];
+        s.contacts.addDiagonal(diag, 1);
+        for (int k = 0; k < x.length; k++) {
+            double[] e = new double[x.length];
+            e[k] = 1;
+            double[] ke = new double[x.length];
+            s.contacts.multiplyAdd(e, ke, null, 1);
+            assertEquals(ke[k], diag[k], 1e-12 * scale, "diagonal " + k);
+        }
+    }
+
+    /** Three nodes over the plane y = 0: one above its gap, one within it, one 2 mm inside the body. */
+    @Test
+    void readOutsCountDepthAndReaction() {
+        Topology t = new Topology();
+        int plane = t.addContactBody(ContactShapes.body("floor", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED));
+        t.addNode(0, 0.01, 0, 1);
+        t.addNode(0.2, 0.0005, 0, 1);
+        t.addNode(0.4, -0.002, 0, 1);
+        for (int i = 0; i < 3; i++) {
+            t.addContact(i, plane, 1e4, 0.001);
+        }
+        SystemState s = SystemState.compile(t);
+        ContactForces c = s.contacts;
+        assertEquals(2, c.activeCount(0, s.x));
+        assertEquals(0.002, c.maxPenetrationM(0, s.x), 1e-15, "depth below the surface, not below the gap");
+        double expected = 1e4 * (0.0005 + 0.003);
+        assertArrayEquals(new double[] {0, expected, 0}, c.totalForceN(0, s.x), 1e-12);
+        assertEquals(expected, c.totalNormalForceN(0, s.x), 1e-12);
+        boolean[] in = c.nodesInContact(0, s.x);
+        assertTrue(!in[0] && in[1] && in[2], "nodes 1 and 2 touch");
+        assertEquals(0.5 * 1e4 * (0.0005 * 0.0005 + 0.003 * 0.003), c.energy(0, s.x), 1e-15);
+        assertEquals(c.energy(0, s.x), new ForceModel(s).elasticEnergy(0, s.x), 1e-15, "in the model's energy");
+    }
+
+    /** A node of mass m on one contact of stiffness k: w_max = sqrt(k / m), as if touching. */
+    @Test
+    void theCriticalStepCountsEveryContactAsTouching() {
+        Topology t = new Topology();
+        int plane = t.addContactBody(ContactShapes.body("floor", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED));
+        t.addNode(0, 1, 0, 0.01);
+        t.addContact(0, plane, 400, 0);
+        var c = SystemState.compile(t).criticalTimeStep();
+        assertEquals(200, c.omegaMaxPower(), 1e-6, "sqrt(400 / 0.01)");
+        assertTrue(c.omegaMaxGershgorin() >= 200 - 1e-9, "the bound is a bound: " + c.omegaMaxGershgorin());
+    }
+
+    @Test
+    void theForcePassAndTangentAllocateNothing() {
+        var bean = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
+                "no allocation counters");
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
+        mx.setThreadAllocatedMemoryEnabled(true);
+        long id = Thread.currentThread().getId();
+        SystemState s = scene(new Random(3));
+        ForceModel model = new ForceModel(s);
+        double[] f = new double[s.x.length];
+        double[] y = new double[s.x.length];
+        long bytes = 0;
+        for (int attempt = 0; attempt < 3; attempt++) {
+            long before = mx.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 2000; i++) {
+                double time = 1e-3 * i;
+                model.computeForces(time, s.x, s.v, f);
+                s.contacts.linearise(time, s.x);
+                s.contacts.multiplyAdd(f, y, null, 1e-6);
+                s.contacts.addDiagonal(y, 1e-6);
+            }
+            bytes = mx.getThreadAllocatedBytes(id) - before;
+            if (bytes == 0) {
+                break;
+            }
+        }
+        assertTrue(maxAbs(f) > 0, "contact forces were exerted");
+        assertEquals(0, bytes, "bytes allocated by 2000 force passes with contacts");
+    }
+    /** Steps of rk2, implicit Euler and BDF2 with nodes on a rising floor allocate nothing (after warm-up). */
+    @Test
+    void stepsWithContactsAllocateNothing() {
+        var bean = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
+                "no allocation counters");
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
+        mx.setThreadAllocatedMemoryEnabled(true);
+        long id = Thread.currentThread().getId();
+        for (String name : new String[] {"rk2", "implicit-euler", "bdf2"}) {
+            Topology t = new Topology();
+            int floor = t.addContactBody(ContactShapes.body("floor", ContactShapes.plane(0, 1, 0, 0),
+                    ContactShapes.translating(new Vec3(0, 0.05, 0))));
+            for (int i = 0; i < 10; i++) {
+                t.addNode(0.1 * i, -0.01 * 9.81 / 1e4, 0, 0.01); // resting: p = m g / k
+                t.addContact(i, floor, 1e4, 0);
+                if (i > 0) {
+                    t.addSpring(t.node(i - 1), t.node(i), 100, 0.1);
+                }
+            }
+            t.setGravity(new Vec3(0, -9.81, 0));
+            t.setViscousDamping(5); // zeta = 0.25: the nodes ride the floor instead of bouncing off it
+            Simulation sim = new Simulation(SystemState.compile(t),
+                    org.tensim.solver.integrators.Integrators.create(name));
+            sim.setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+            double h = sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : 1e-3;
+            for (int i = 0; i < 300; i++) {
+                sim.step(h);
+            }
+            long bytes = 0;
+            for (int attempt = 0; attempt < 3; attempt++) {
+                long before = mx.getThreadAllocatedBytes(id);
+                for (int i = 0; i < 300; i++) {
+                    sim.step(h);
+                }
+                bytes = mx.getThreadAllocatedBytes(id) - before;
+                if (bytes == 0) {
+                    break;
+                }
+            }
+            assertEquals(10, sim.state().contacts.activeCount(sim.time(), sim.state().x), name + ": all on the floor");
+            assertEquals(0, bytes, name + ": bytes allocated by 300 steps with contacts");
+        }
+    }
+}
