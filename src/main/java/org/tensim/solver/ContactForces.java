@@ -82,6 +82,11 @@ public final class ContactForces {
         return node3.length;
     }
 
+    /** Penalty stiffness of pair e, N/m. */
+    public double stiffness(int e) {
+        return stiffness[e];
+    }
+
     /** Node id of pair e. */
     public int node(int e) {
         return node3[e] / 3;

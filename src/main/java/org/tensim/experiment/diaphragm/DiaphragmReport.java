@@ -233,6 +233,20 @@ public final class DiaphragmReport {
         summary.put("attached_to_cartilage_or_sternum", scene.attachedToCartilage());
         summary.put("attached_to_spine", scene.attachedToSpine());
         summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
+        if (scene.bones() != null) {
+            Map<String, Object> attached = new LinkedHashMap<>();
+            double total = 0;
+            for (Map.Entry<String, double[]> e : scene.attachedPerBone().entrySet()) {
+                attached.put(e.getKey(), Map.of("area_mm2", round(1e6 * e.getValue()[0], 1), "nodes",
+                        (int) e.getValue()[1], "node_share", round(e.getValue()[1] / scene.diaphragmNodes(), 4)));
+                total += e.getValue()[0];
+            }
+            summary.put("attached_area_mm2", round(1e6 * total, 1));
+            summary.put("attached_per_bone", attached);
+            summary.put("diaphragm_area_mm2", round(1e6 * scene.surfaces().mesh().totalArea() / 2, 1));
+            summary.put("contact_pairs", scene.topology().contacts().size());
+            summary.put("contact_pairs_per_bone", scene.contactPairsPerBone());
+        }
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
     }
 

@@ -124,7 +124,10 @@ public final class DiaphragmScene {
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, Map<String, double[]> boxes, DiaphragmParameters p,
             BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> lines, BoundaryConditions bc) {
-        DiaphragmSpec spec = DiaphragmSpec.defaults().withTissue(p).withBoundary(bc).withActionLines(lines)
+        // The fibres' tension has no action lines: lines given with it are not used (the scene's own default
+        // lines still mark the domes for viewers).
+        DiaphragmSpec spec = DiaphragmSpec.defaults().withTissue(p).withBoundary(bc)
+                .withActionLines(bc.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES ? null : lines)
                 .withBreathing(new DiaphragmSpec.Breathing(cycle.periodS(), cycle.expirationRatio(),
                         controls.ribAmplitude(), controls.muscleAmplitudePa()));
         return build(surfaces, spec, boxes, null, cycle, controls);
@@ -154,6 +157,19 @@ public final class DiaphragmScene {
         return spec;
     }
 
+    /**
+     * Per origin bone (by name), the diaphragm area attached to it, m^2 (each face's nodes carry half their
+     * area), and the number of attached nodes; empty for a cage made from boxes.
+     */
+    public Map<String, double[]> attachedPerBone() {
+        return parts.attachedPerBone();
+    }
+
+    /** Per bone (by name), the number of node-bone contact pairs; empty without contact. */
+    public Map<String, Integer> contactPairsPerBone() {
+        return parts.contactPairsPerBone();
+    }
+
     /** The thorax's bones, or null for a cage made from boxes. */
     public Bones bones() {
         return bones;
@@ -166,7 +182,7 @@ public final class DiaphragmScene {
      * running simulation can take the new scene's constants ({@link #copyConstantsTo}).
      */
     public DiaphragmScene rebuiltWith(DiaphragmParameters p) {
-        return build(surfaces, spec.withTissue(p).withActionLines(actionLines.lines()), boxes, bones, cycle, controls);
+        return build(surfaces, spec.withTissue(p), boxes, bones, cycle, controls);
     }
 
     /** The parameters this scene was built with. */

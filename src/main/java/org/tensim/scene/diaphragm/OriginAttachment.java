@@ -16,13 +16,13 @@ import org.tensim.model.SignedDistance;
  * <p>The paper attaches the diaphragm where its distance to ribs, sternum and cartilage is under a
  * threshold W. Applied to every node, that rule glues the whole zone of apposition to the chest wall,
  * where the muscle lies on the ribs and must slide, and the glued area grows with W. Here it picks
- * only the origin line: the vertices of the diaphragm's free rim (where its two faces meet, or an open
- * boundary) whose distance to an origin bone ({@link Bones#origin}: xiphoid, cartilages and ribs 7-12,
- * right L1-L3 and left L1-L2) is under W. The attached region is that line widened by a fixed
- * insertion width {@link #INSERTION_WIDTH_M} along the surface (geodesic distance over the mesh's
- * edges), so that its area is the rim's length times a width: it converges with the mesh, and a larger
- * threshold adds only rim that lies near a bone. A label file replaces the rule: its origin labels are
- * the seeds.
+ * only the origin line: the diaphragm's inferior margin (its lowest edge all round, {@link #inferiorMargin}),
+ * a strip {@link #INSERTION_WIDTH_M} high (its top {@link #TAPER_M} tapered), wherever its distance to an origin bone ({@link Bones#origin}:
+ * xiphoid, cartilages and ribs 7-12, right L1-L3 and left L1-L2) is under W. Its area is the margin's
+ * length near the bones times the strip's height: it converges with the mesh, and a larger threshold
+ * adds only margin that lies near a bone, never the zone of apposition above it. A label file replaces
+ * the rule: its origin labels, widened by the same width along the surface (geodesic distance over the
+ * mesh's edges), are attached.
  *
  * <p>Each attached node is tied, as by the attachment band, with {@code k_b A_i / 2} (Pa/m times its
  * share of its face's area) to an anchor at its rest point carried by its nearest origin bone's motion
@@ -30,7 +30,9 @@ import org.tensim.model.SignedDistance;
  */
 final class OriginAttachment {
     /** Width of the insertion along the surface from the origin line, m (a tendinous insertion: about 1 cm). */
-    static final double INSERTION_WIDTH_M = 0.010;
+    static final double INSERTION_WIDTH_M = 0.012;
+    /** Width of the smooth fall of the ties at the strip's edges, m (about the coarsest element). */
+    static final double TAPER_M = 0.006;
 
     private OriginAttachment() {
     }
@@ -38,7 +40,7 @@ final class OriginAttachment {
     /**
      * Attaches the builder's diaphragm at its origins; returns the attached area and nodes per bone.
      *
-     * @param seeds per vertex, a label file's origin (null: by the rule on the rim)
+     * @param seeds per vertex, a label file's origin (null: by the rule on the inferior margin)
      */
     static Map<String, double[]> attach(DiaphragmSceneBuilder b, Bones bones, RigidMotion[] motions,
             boolean[] seeds, double bandPaPerM) {
@@ -67,26 +69,41 @@ final class OriginAttachment {
                 }
             }
         }
-        boolean[] seed = seeds;
-        if (seed == null) {
-            boolean[] rim = FibreInsertion.rim(m, b.surfaces);
-            seed = new boolean[b.nv];
-            for (int v = 0; v < b.nv; v++) {
-                seed[v] = rim[v] && distance[v] < w;
+        // Per vertex, the share of its tie: 1 inside the strip, falling smoothly (cos^2 over TAPER_M) at its
+        // top edge and at the threshold's, so that the attached area converges as a smooth integral rather
+        // than counting whole vertices in or out.
+        // Per vertex: its height above the origin line (above the inferior margin, or its distance along the
+        // surface from a label file's origin) and its closeness to an origin bone (1 within the threshold less
+        // the taper, falling to 0 at the threshold; 1 for a label file's).
+        double[] height = seeds == null ? inferiorMargin(m) : geodesic(m, seeds);
+        double[] boneFactor = new double[b.nv];
+        for (int v = 0; v < b.nv; v++) {
+            if (seeds == null) {
+                height[v] = m.coord(v, 2) - height[v];
+                boneFactor[v] = AttachmentBand.taper(distance[v], w, Math.min(TAPER_M, w));
+            } else {
+                boneFactor[v] = 1;
             }
         }
-        double[] geodesic = geodesic(m, seed);
+        double[] weightedArea = consistentArea(m, height, boneFactor);
+        double[] weight = new double[b.nv];
+        for (int v = 0; v < b.nv; v++) {
+            weight[v] = b.area[v] > 0 ? weightedArea[v] / b.area[v] : 0;
+        }
+        boolean[] region = new boolean[b.nv];
+        for (int v = 0; v < b.nv; v++) {
+            region[v] = weight[v] > 0;
+        }
         Map<String, double[]> perPart = new LinkedHashMap<>();
         b.markFirstAnchor();
         for (int v = 0; v < b.nv; v++) {
-            if (!(geodesic[v] <= INSERTION_WIDTH_M) || nearestBone[v] < 0 && !nearestAny(bones, m, v, midX,
-                    nearestBone)) {
+            if (weight[v] == 0 || nearestBone[v] < 0 && !nearestAny(bones, m, v, midX, nearestBone)) {
                 continue;
             }
             Bones.Bone bone = bones.all().get(nearestBone[v]);
             b.attached[v] = true;
             Node n = b.t.node(v);
-            double k = bandPaPerM * b.area[v] / 2;
+            double k = bandPaPerM * b.area[v] / 2 * weight[v];
             RigidMotion motion = motions[nearestBone[v]];
             Node anchor = b.t.addNode(n.position(), n.mass());
             if (motion == RigidMotion.FIXED) {
@@ -101,11 +118,129 @@ final class OriginAttachment {
                 default -> b.attachedCartilage++;
             }
             double[] e = perPart.computeIfAbsent(bone.name(), key -> new double[2]);
-            e[0] += b.area[v] / 2;
+            e[0] += b.area[v] / 2 * weight[v];
             e[1]++;
         }
-        b.originDistance = geodesic;
+        b.originDistance = geodesic(m, region);
         return perPart;
+    }
+
+    /**
+     * Per vertex, {@code sum_T int_T w phi_v dA}, m^2: the strip's weight integrated over each triangle against
+     * the vertex's linear shape function (the consistent weighting of a linear element), with w interpolated
+     * linearly in each triangle from the corners', at each of 16 sub-triangles' centroids: the strip's edge cuts
+     * through triangles, and a whole triangle's area is not lumped onto its lowest corner. The sum over
+     * vertices is the strip's area, resolution-independent.
+     */
+    static double[] consistentArea(TriangleMesh m, double[] height, double[] boneFactor) {
+        double[] out = new double[m.vertexCount()];
+        final int n = 4;
+        for (int t = 0; t < m.triangleCount(); t++) {
+            int a = m.corner(t, 0);
+            int b = m.corner(t, 1);
+            int c = m.corner(t, 2);
+            if (Math.min(height[a], Math.min(height[b], height[c])) >= INSERTION_WIDTH_M
+                    || boneFactor[a] + boneFactor[b] + boneFactor[c] == 0) {
+                continue;
+            }
+            double sub = m.area(t) / (n * n);
+            for (int i = 0; i < n; i++) {
+                for (int j = 0; j < n - i; j++) {
+                    for (int up = 0; up < (i + j < n - 1 ? 2 : 1); up++) {
+                        // Barycentric centroid of the sub-triangle (i, j), upright (up = 0) or inverted.
+                        double l1 = up == 0 ? (i + 1.0 / 3) / n : (i + 2.0 / 3) / n;
+                        double l2 = up == 0 ? (j + 1.0 / 3) / n : (j + 2.0 / 3) / n;
+                        double l0 = 1 - l1 - l2;
+                        double h = l0 * height[a] + l1 * height[b] + l2 * height[c];
+                        double wq = AttachmentBand.taper(h, INSERTION_WIDTH_M, TAPER_M)
+                                * (l0 * boneFactor[a] + l1 * boneFactor[b] + l2 * boneFactor[c]);
+                        out[a] += wq * l0 * sub;
+                        out[b] += wq * l1 * sub;
+                        out[c] += wq * l2 * sub;
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Azimuthal sectors of the inferior margin (5 degrees each). */
+    static final int SECTORS = 72;
+
+    /**
+     * Per vertex, the height of the diaphragm's inferior margin at its azimuth, m: the lowest point of the
+     * surface in its 5-degree sector about the vertical axis through the mesh's centre (x, y of its bounding
+     * box). The muscle arises from its origins along its lowest edge all round (the costal margin, the
+     * xiphoid, the crura on the lumbar spine), so that edge is its origin line wherever a bone is near. The
+     * lowest point is the surface's, not a vertex's: the lowest vertex in the sector, or where an edge
+     * crosses into it (a linear height is lowest at a corner of the triangle clipped to the sector), so that
+     * the same surface sampled finer gives the same margin.
+     */
+    static double[] inferiorMargin(TriangleMesh m) {
+        double[] b = m.bounds();
+        double cx = 0.5 * (b[0] + b[3]);
+        double cy = 0.5 * (b[1] + b[4]);
+        double[] low = new double[SECTORS];
+        Arrays.fill(low, Double.POSITIVE_INFINITY);
+        int nv = m.vertexCount();
+        double[] angle = new double[nv];
+        int[] sector = new int[nv];
+        for (int v = 0; v < nv; v++) {
+            angle[v] = Math.atan2(m.coord(v, 1) - cy, m.coord(v, 0) - cx) + Math.PI; // 0 .. 2 pi
+            sector[v] = sectorOf(angle[v]);
+            low[sector[v]] = Math.min(low[sector[v]], m.coord(v, 2));
+        }
+        double step = 2 * Math.PI / SECTORS;
+        for (int t = 0; t < m.triangleCount(); t++) {
+            for (int k = 0; k < 3; k++) {
+                int p = m.corner(t, k);
+                int q = m.corner(t, (k + 1) % 3);
+                if (sector[p] == sector[q]) {
+                    continue;
+                }
+                // The boundaries between the two sectors, the short way round.
+                double a0 = angle[p];
+                double da = angle[q] - a0;
+                da -= 2 * Math.PI * Math.round(da / (2 * Math.PI));
+                int from = (int) Math.floor(Math.min(a0, a0 + da) / step) + 1;
+                int to = (int) Math.floor(Math.max(a0, a0 + da) / step);
+                for (int s = from; s <= to; s++) {
+                    double theta = s * step - Math.PI; // the boundary's direction in atan2's range
+                    double dx = Math.cos(theta);
+                    double dy = Math.sin(theta);
+                    double px = m.coord(p, 0) - cx;
+                    double py = m.coord(p, 1) - cy;
+                    double ex = m.coord(q, 0) - m.coord(p, 0);
+                    double ey = m.coord(q, 1) - m.coord(p, 1);
+                    double den = ex * dy - ey * dx;
+                    if (den == 0) {
+                        continue;
+                    }
+                    double f = Math.max(0, Math.min(1, -(px * dy - py * dx) / den));
+                    double z = m.coord(p, 2) + f * (m.coord(q, 2) - m.coord(p, 2));
+                    int below = Math.floorMod(s - 1, SECTORS);
+                    int above = Math.floorMod(s, SECTORS);
+                    low[below] = Math.min(low[below], z);
+                    low[above] = Math.min(low[above], z);
+                }
+            }
+        }
+        // Linear in the angle between the sectors' middles: a margin that jumps from sector to sector would
+        // cut the strip into steps that each mesh samples differently.
+        double[] out = new double[nv];
+        for (int v = 0; v < nv; v++) {
+            double f = angle[v] / step - 0.5;
+            int s0 = (int) Math.floor(f);
+            double frac = f - s0;
+            double l0 = low[Math.floorMod(s0, SECTORS)];
+            double l1 = low[Math.floorMod(s0 + 1, SECTORS)];
+            out[v] = Double.isInfinite(l0) ? l1 : Double.isInfinite(l1) ? l0 : (1 - frac) * l0 + frac * l1;
+        }
+        return out;
+    }
+
+    private static int sectorOf(double angle) {
+        return (int) Math.min(SECTORS - 1, Math.floor(SECTORS * angle / (2 * Math.PI)));
     }
 
     /** For a seed from a label file far from every origin bone's threshold: its nearest origin bone at all. */

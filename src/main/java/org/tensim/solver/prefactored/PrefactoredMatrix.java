@@ -30,10 +30,13 @@ import org.tensim.solver.SystemState;
  * {@code (beta^2 + beta beta_e) K_kk 4 |e_k|^2} between the two pairs' means. On coarse meshes this mode is
  * several times stiffer than the membrane ({@code kappa G (h / t)^2} against E): without it the
  * preconditioner leaves it to the few Krylov iterations of a step, which do not resolve it.
- * Contacts with rigid bodies ({@link org.tensim.solver.ContactForces}) are left out: which nodes touch changes
- * from step to step, and a constant {@code beta^2 k} on every node that may touch would overweight the many
- * that do not; their {@code beta^2 k n n^T} is in the Newton-Krylov products ({@link SpringJacobian}), so CG
- * still converges to the true step, in more iterations when the contact is stiff.
+ * A contact with a rigid body ({@link org.tensim.solver.ContactForces}) adds {@code beta^2 k / 3} to its node's
+ * diagonal: the isotropic matrix with the trace of its tangent {@code beta^2 k n n^T} (the factor is shared by the
+ * three coordinates, so it cannot carry a direction). Which nodes touch changes from step to step; every pair
+ * is taken as touching, the same for all. Left out, a stiff contact ({@code k / m} far above {@code 1 / beta^2})
+ * was left to the few Krylov iterations of a step, which do not resolve it; the exact
+ * {@code beta^2 k n n^T} is in the Newton-Krylov products ({@link SpringJacobian}), so CG converges to the true
+ * step either way.
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
@@ -173,7 +176,7 @@ final class PrefactoredMatrix {
     private Triplets assemble(double beta, double[] k, double[] c, double cv) {
         int nf = freeNodes.length;
         int ns = s.springCount();
-        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count());
+        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count());
         for (int j = 0; j < nf; j++) {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
         }
@@ -215,6 +218,12 @@ final class PrefactoredMatrix {
             }
         }
         addShears(t, beta);
+        for (int e = 0; e < s.contacts.count(); e++) {
+            int a = freeIndex[s.contacts.node(e)];
+            if (a >= 0) {
+                t.add(a, a, beta * beta * s.contacts.stiffness(e) / 3);
+            }
+        }
         return t;
     }
 

@@ -1,0 +1,80 @@
+package org.tensim.scene.diaphragm;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.tensim.io.ProjectFolder;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.MidpointSubdivision;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Node;
+
+/**
+ * The BodyParts3D diaphragm in the shared thorax of bone surfaces: attached at its origins only, the
+ * attached area the same at two resolutions, the rest free to slide on the bones; skipped, naming the
+ * file, where {@code ../shared} is absent.
+ */
+class ThoraxSceneTest {
+    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
+    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+            "diaphragm-FJ3131-dec28k-mm.obj");
+    static Bones bones;
+    static TwoSurfaces full;
+
+    @BeforeAll
+    static void load() throws Exception {
+        assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
+        assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
+        bones = ThoraxBones.load(THORAX);
+        full = DiaphragmSetup.loadSurfaces(MESH, MeshUnits.parse("mm"), 0.0025).surfaces();
+    }
+
+    private static DiaphragmScene scene(TwoSurfaces s) {
+        DiaphragmSpec spec = DiaphragmSpec.defaults().withCage(DiaphragmSpec.Cage.defaults().withThorax(THORAX));
+        return DiaphragmScene.build(s, spec, Map.of(), bones, spec.newControls());
+    }
+
+    private static double attachedArea(DiaphragmScene s) {
+        return s.attachedPerBone().values().stream().mapToDouble(e -> e[0]).sum();
+    }
+
+    @Test
+    void theDiaphragmIsAttachedAtItsOriginsOnlyAndTheRestMayTouchTheBones() {
+        DiaphragmScene s = scene(full);
+        double area = attachedArea(s);
+        double total = full.mesh().totalArea() / 2;
+        System.out.println("BodyParts3D in the thorax: attached " + s.attachedNodes() + " of " + s.diaphragmNodes()
+                + " nodes, " + Math.round(area * 1e6) + " of " + Math.round(total * 1e6) + " mm^2; per bone "
+                + s.attachedPerBone().keySet() + "; contact pairs " + s.topology().contacts().size());
+        for (String bone : s.attachedPerBone().keySet()) {
+            Bones.Bone b = bones.all().stream().filter(x -> x.name().equals(bone)).findFirst().orElseThrow();
+            assertTrue(b.origin(), bone + " is not one of the diaphragm's origins");
+        }
+        assertTrue(area < 0.25 * total, "attached " + area + " of " + total + " m^2: more than the origins");
+        assertTrue(area > 0.02 * total, "attached " + area + " of " + total + " m^2: the origins are missing");
+        assertTrue(s.topology().contacts().size() > 0, "no node may touch a bone");
+        for (org.tensim.model.ContactPair c : s.topology().contacts()) {
+            Node n = s.topology().node(c.node());
+            assertTrue(!s.isAttached(c.node()) && !n.isDriven() && !n.isFixed(), "node " + c.node()
+                    + " is attached and in contact");
+        }
+    }
+
+    @Test
+    void theAttachedAreaDoesNotDependOnTheMesh() {
+        // The same surface at twice the resolution: every triangle split in four (the geometry unchanged).
+        TriangleMesh fineMesh = MidpointSubdivision.refine(full.mesh(), 1);
+        TwoSurfaces refined = DiaphragmSetup.surfaces(fineMesh, 0.0025).surfaces();
+        double given = attachedArea(scene(full));
+        double fine = attachedArea(scene(refined));
+        System.out.println("attached area: " + Math.round(given * 1e6) + " mm^2 (" + full.mesh().vertexCount()
+                + " vertices), " + Math.round(fine * 1e6) + " mm^2 (" + refined.mesh().vertexCount() + " vertices)");
+        assertEquals(fine, given, 0.05 * fine, "attached area at two resolutions");
+    }
+}
