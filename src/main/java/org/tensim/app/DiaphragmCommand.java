@@ -67,6 +67,12 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
     Path labels;
 
+    @Option(names = "--tendon-rule", paramLabel = "RULE",
+            description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
+                    + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
+                    + " tops and their midpoint along the surface, the same share) (default: ${DEFAULT-VALUE})")
+    String tendonRule = "plane";
+
     @Option(names = "--contact", negatable = true, defaultValue = "true", fallbackValue = "true",
             description = "with --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
                     + " not attached (default: on; --no-contact turns it off)")
@@ -349,7 +355,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         try {
             sceneSpec = new org.tensim.scene.diaphragm.DiaphragmSpec(meshSpec, p, bc,
                     new org.tensim.scene.diaphragm.DiaphragmSpec.Breathing(period, ieRatio, ribAmplitude, musclePa),
-                    new org.tensim.scene.diaphragm.DiaphragmSpec.Cage(boxes, thorax, contact, contactPaPerM), lines);
+                    new org.tensim.scene.diaphragm.DiaphragmSpec.Cage(boxes, thorax, contact, contactPaPerM), lines,
+                    BoundaryConditions.parse(org.tensim.scene.diaphragm.TendonRule.class, tendonRule));
         } catch (IllegalArgumentException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }

@@ -275,6 +275,27 @@ public final class ContactForces {
         return max[0];
     }
 
+    /**
+     * The deepest penetration past the pairs' gaps, {@code max(0, max_e (g_e - d_e))} (m), and the pair it is
+     * at ({-1} when none), at time t (s) and positions x (m): for a node that started inside a body (a
+     * negative gap), how much deeper it went.
+     */
+    public double[] maxPenetrationPastGap(double t, double[] x) {
+        double[] max = {0, -1};
+        visit(t, x, (e, d, n) -> {
+            if (gap[e] - d > max[0]) {
+                max[0] = gap[e] - d;
+                max[1] = e;
+            }
+        });
+        return max;
+    }
+
+    /** Body index of pair e (in the topology's contact bodies). */
+    public int body(int e) {
+        return body[e];
+    }
+
     /** The sum of the contact forces on the nodes at time t (s) and positions x (m), N, as {x, y, z}. */
     public double[] totalForceN(double t, double[] x) {
         double[] sum = new double[3];

@@ -33,7 +33,10 @@ public final class BreathingMetrics implements StepListener {
     private double apexAtInsp = Double.NaN;
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
-    /** Per diaphragm node: 0 not a dome candidate, 1 right half (x below the midline), 2 left half. */
+    /**
+     * Per diaphragm node: 0 not a dome candidate, 1 near the right dome's top, 2 near the left's (free upper
+     * nodes within {@link #DOME_RADIUS_M} of the top horizontally).
+     */
     private final int[] half;
     private double[] domeTopsExp;
     private double[] domeTopsInsp;
@@ -42,6 +45,9 @@ public final class BreathingMetrics implements StepListener {
     private double[] markerExp;
     private double[] markerInsp;
     private double maxPenetration;
+    private double maxPastGap;
+    private int worstPair = -1;
+    private double worstPairT;
 
     /**
      * @param runSeconds length of the run, s (> 0); the breathing is measured only when the run reaches
@@ -60,12 +66,17 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
-        double[] b = scene.surfaces().mesh().bounds();
-        double cx = 0.5 * (b[0] + b[3]);
+        double[][] tops = scene.domeTops();
         this.half = new int[nodes];
         for (int v = 0; v < nodes; v++) {
-            if (scene.surfaces().isUpper(v) && !origin[v]) {
-                half[v] = scene.surfaces().mesh().coord(v, 0) < cx ? 1 : 2;
+            if (!scene.surfaces().isUpper(v) || origin[v]) {
+                continue;
+            }
+            for (int d = 0; d < 2; d++) {
+                if (tops[d] != null && Math.hypot(scene.surfaces().mesh().coord(v, 0) - tops[d][0],
+                        scene.surfaces().mesh().coord(v, 1) - tops[d][1]) < DOME_RADIUS_M) {
+                    half[v] = d + 1;
+                }
             }
         }
         java.util.Set<Integer> markers = new java.util.TreeSet<>();
@@ -78,7 +89,14 @@ public final class BreathingMetrics implements StepListener {
         this.cartilageMarkers = markers.stream().mapToInt(Integer::intValue).toArray();
     }
 
-    /** The highest z of the upper surface's free nodes in each half (right, left), m: the two dome tops. */
+    /** Horizontal radius about each dome's rest top within which its top is sought at every moment, m. */
+    public static final double DOME_RADIUS_M = 0.025;
+
+    /**
+     * The height of each dome's top (right, left), m: the highest free upper node within {@link #DOME_RADIUS_M}
+     * of its top at rest, the local highest point (the mesh's highest node may lie on the other dome, or on the
+     * chest wall the ribs lift).
+     */
     private double[] domeTops(SystemState s) {
         double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         for (int v = 0; v < nodes; v++) {
@@ -141,6 +159,12 @@ public final class BreathingMetrics implements StepListener {
         }
         if (s.contacts.count() > 0) {
             maxPenetration = Math.max(maxPenetration, s.contacts.maxPenetrationM(t, s.x));
+            double[] past = s.contacts.maxPenetrationPastGap(t, s.x);
+            if (past[0] > maxPastGap) {
+                maxPastGap = past[0];
+                worstPair = (int) past[1];
+                worstPairT = t;
+            }
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
             double z = s.x[3 * apex + 2];
@@ -245,8 +269,13 @@ public final class BreathingMetrics implements StepListener {
             f.put("ap_extent_change_all_nodes_mm", 1e3 * apChangeAllM());
             f.put("transverse_extent_change_all_nodes_mm", 1e3 * transverseChangeAllM());
             f.put("thorax_vertical_change_mm", -1e3 * apexDescentM());
-            f.put("right_dome_descent_mm", 1e3 * (domeTopsExp[0] - domeTopsInsp[0]));
-            f.put("left_dome_descent_mm", 1e3 * (domeTopsExp[1] - domeTopsInsp[1]));
+            String[] names = {"right_dome_descent_mm", "left_dome_descent_mm"};
+            for (int d = 0; d < 2; d++) {
+                double descent = domeTopsExp[d] - domeTopsInsp[d];
+                if (Double.isFinite(descent)) {
+                    f.put(names[d], 1e3 * descent);
+                }
+            }
             if (markerExp != null) {
                 f.put("cartilage_marker_cranial_mm", 1e3 * (markerInsp[2] - markerExp[2]));
                 // +Y is posterior: ventral motion is -y.
@@ -255,8 +284,22 @@ public final class BreathingMetrics implements StepListener {
         }
         if (scene.topology().contacts().size() > 0) {
             f.put("max_bone_penetration_mm", 1e3 * maxPenetration);
+            f.put("max_penetration_past_rest_mm", 1e3 * maxPastGap);
         }
         return f;
+    }
+
+    /**
+     * Where the deepest penetration past a node's rest depth happened: the node, the bone and the time; null
+     * without contact.
+     */
+    public String worstPenetration() {
+        if (worstPair < 0) {
+            return null;
+        }
+        org.tensim.model.ContactPair p = scene.topology().contacts().get(worstPair);
+        return "node " + p.node() + " in " + scene.topology().contactBodies().get(p.body()).name() + " at t = "
+                + worstPairT + " s";
     }
 
     public DiaphragmScene scene() {

@@ -253,6 +253,9 @@ public final class DiaphragmReport {
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
         metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
+        if (metrics.worstPenetration() != null) {
+            summary.put("deepest_penetration_at", metrics.worstPenetration());
+        }
     }
 
     /** How the run went: time, integrator, step, speed, controls, projection, mesh report, divergence. */

@@ -81,7 +81,11 @@ public final class DiaphragmScene {
     private final Bones bones;
     private final DiaphragmSceneBuilder.Parts parts;
 
-    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones) {
+    private final org.tensim.io.mesh.VertexLabel[] vertexLabels;
+
+    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones,
+            org.tensim.io.mesh.VertexLabel[] vertexLabels) {
+        this.vertexLabels = vertexLabels;
         this.parts = b;
         this.spec = spec;
         this.bones = bones;
@@ -130,7 +134,7 @@ public final class DiaphragmScene {
                 .withActionLines(bc.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES ? null : lines)
                 .withBreathing(new DiaphragmSpec.Breathing(cycle.periodS(), cycle.expirationRatio(),
                         controls.ribAmplitude(), controls.muscleAmplitudePa()));
-        return build(surfaces, spec, boxes, null, cycle, controls);
+        return build(surfaces, spec, boxes, null, null, cycle, controls);
     }
 
     /**
@@ -139,17 +143,28 @@ public final class DiaphragmScene {
      *
      * @param boxes the cage's rib and sternum boxes, metres (the parametric cage's or a file's)
      * @param bones the thorax's bone surfaces; null for a cage made from the boxes
+     * @param vertexLabels per mesh vertex, a label file's labels (tendon, muscle, origins); null for the rules
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, DiaphragmSpec spec, Map<String, double[]> boxes,
-            Bones bones, DiaphragmControls controls) {
-        return build(surfaces, spec, boxes, bones, spec.breathing().cycle(), controls);
+            Bones bones, org.tensim.io.mesh.VertexLabel[] vertexLabels, DiaphragmControls controls) {
+        return build(surfaces, spec, boxes, bones, vertexLabels, spec.breathing().cycle(), controls);
     }
 
     private static DiaphragmScene build(TwoSurfaces surfaces, DiaphragmSpec spec, Map<String, double[]> boxes,
-            Bones bones, BreathingCycle cycle, DiaphragmControls controls) {
+            Bones bones, org.tensim.io.mesh.VertexLabel[] vertexLabels, BreathingCycle cycle,
+            DiaphragmControls controls) {
         List<ActionLines.Line> lines = spec.actionLines();
-        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, bones, spec, cycle, controls,
-                lines == null ? defaultActionLines(surfaces) : lines), boxes, spec, bones);
+        return new DiaphragmScene(DiaphragmSceneBuilder.build(surfaces, boxes, bones, vertexLabels, spec, cycle,
+                controls, lines == null ? defaultActionLines(surfaces) : lines), boxes, spec, bones, vertexLabels);
+    }
+
+    /**
+     * The tops of the two domes at rest, {x, y} in m, right (x below the mesh's centre) then left; null for
+     * a half without one ({@link DomeTops}: the highest point of each half's upper surface, on the surface).
+     */
+    public double[][] domeTops() {
+        double[] b = surfaces.mesh().bounds();
+        return DomeTops.tops(surfaces, 0.5 * (b[0] + b[3]));
     }
 
     /** The definition this scene was built from. */
@@ -182,7 +197,7 @@ public final class DiaphragmScene {
      * running simulation can take the new scene's constants ({@link #copyConstantsTo}).
      */
     public DiaphragmScene rebuiltWith(DiaphragmParameters p) {
-        return build(surfaces, spec.withTissue(p), boxes, bones, cycle, controls);
+        return build(surfaces, spec.withTissue(p), boxes, bones, vertexLabels, cycle, controls);
     }
 
     /** The parameters this scene was built with. */

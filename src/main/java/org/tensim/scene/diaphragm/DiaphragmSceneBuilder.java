@@ -49,12 +49,18 @@ final class DiaphragmSceneBuilder {
     }
 
     /** Runs every step, in its order, and returns what the scene holds. */
-    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, Bones bones, DiaphragmSpec spec,
-            BreathingCycle cycle, DiaphragmControls controls, List<ActionLines.Line> actionLines) {
+    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, Bones bones,
+            org.tensim.io.mesh.VertexLabel[] vertexLabels, DiaphragmSpec spec, BreathingCycle cycle,
+            DiaphragmControls controls, List<ActionLines.Line> actionLines) {
+        if (vertexLabels != null && vertexLabels.length != surfaces.mesh().vertexCount()) {
+            throw new IllegalArgumentException("the label file has " + vertexLabels.length + " labels for a mesh of "
+                    + surfaces.mesh().vertexCount() + " vertices");
+        }
         DiaphragmParameters p = spec.tissue();
         DiaphragmSceneBuilder b = new DiaphragmSceneBuilder(surfaces, p, cycle, controls, spec.boundary());
         b.bones = bones;
         b.spec = spec;
+        b.vertexLabels = vertexLabels;
         b.nodes();
         b.tendon();
         b.meshSprings();
@@ -92,6 +98,10 @@ final class DiaphragmSceneBuilder {
 
     private Bones bones;
     private DiaphragmSpec spec;
+    /** Per vertex, a label file's labels (null: the rules). */
+    private org.tensim.io.mesh.VertexLabel[] vertexLabels;
+    /** Per vertex, tendon by a label file or the geodesic rule (null: the plane's cap). */
+    private boolean[] tendonRegion;
     private org.tensim.model.RigidMotion[] boneMotions;
     private Map<String, double[]> attachedPerBone = Map.of();
     private Map<String, Integer> contactPairs = Map.of();
@@ -156,6 +166,34 @@ final class DiaphragmSceneBuilder {
     }
 
     private void tendon() {
+        if (vertexLabels != null || spec.tendonRule() == TendonRule.GEODESIC) {
+            tendonRegion = new boolean[nv];
+            if (vertexLabels != null) {
+                for (int v = 0; v < nv; v++) {
+                    tendonRegion[v] = vertexLabels[v] == org.tensim.io.mesh.VertexLabel.TENDON;
+                }
+            } else {
+                tendonRegion = GeodesicTendon.grow(surfaces, p.tendonAreaFraction()).tendon();
+            }
+        }
+        planeTendon();
+        if (tendonRegion == null) {
+            return;
+        }
+        double tendonArea = 0;
+        double upperArea = 0;
+        for (int v = 0; v < nv; v++) {
+            labels[v] = tendonRegion[v] ? DiaphragmScene.TENDON : DiaphragmScene.MUSCLE;
+            if (surfaces.isUpper(v)) {
+                upperArea += area[v];
+                tendonArea += tendonRegion[v] ? area[v] : 0;
+            }
+        }
+        tendonFraction = tendonArea / upperArea;
+    }
+
+    /** The paper's rule: the tendon is the cap on the positive side of a plane. */
+    private void planeTendon() {
         Vec3 n = p.tendonNormal();
         double cut;
         if (p.tendonPoint() != null) {
@@ -257,7 +295,14 @@ final class DiaphragmSceneBuilder {
     private void attach() {
         attached = new boolean[nv];
         if (bones != null) {
-            attachedPerBone = OriginAttachment.attach(this, bones, boneMotions, null, bc.bandStiffnessPaPerM());
+            boolean[] seeds = null;
+            if (vertexLabels != null) {
+                seeds = new boolean[nv];
+                for (int v = 0; v < nv; v++) {
+                    seeds[v] = vertexLabels[v].isOrigin();
+                }
+            }
+            attachedPerBone = OriginAttachment.attach(this, bones, boneMotions, seeds, bc.bandStiffnessPaPerM());
         } else if (bc.attachment() == BoundaryConditions.Attachment.BAND) {
             AttachmentBand.attach(this, bc);
         } else {
@@ -312,7 +357,11 @@ final class DiaphragmSceneBuilder {
             for (int v = 0; v < nv; v++) {
                 tendon[v] = labels[v] == DiaphragmScene.TENDON;
             }
-            MuscleFibres.add(t, mesh, p.tendonNormal(), tendonCut, tendon, area, thickness, lines,
+            double[] height = new double[nv];
+            for (int v = 0; v < nv; v++) {
+                height[v] = tendonRegion == null ? height(p.tendonNormal(), v) - tendonCut : tendon[v] ? 1 : -1;
+            }
+            MuscleFibres.add(t, mesh, height, tendon, area, thickness, lines,
                     FibreInsertion.activation(mesh, surfaces, originDistance, FibreInsertion.DEFAULT_LENGTH_M));
             return;
         }

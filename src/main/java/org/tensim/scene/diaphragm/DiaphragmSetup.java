@@ -75,9 +75,11 @@ public final class DiaphragmSetup {
             report = r.report();
             s = surfaces(r.mesh(), m.offsetThicknessM());
         }
+        org.tensim.io.mesh.VertexLabel[] labels = m.labels() == null ? null
+                : org.tensim.io.mesh.VertexLabelsFile.read(m.labels(), s.surfaces().mesh().vertexCount());
         Bones bones = spec.cage().thorax() == null ? null : ThoraxBones.load(spec.cage().thorax());
         return new Built(DiaphragmScene.build(s.surfaces(), spec, bones == null ? boxes(spec.cage().boxes())
-                : Map.of(), bones, controls), report, s.mode(),
+                : Map.of(), bones, labels, controls), report, s.mode(),
                 m.describe() + ", " + spec.cage().describe());
     }
 

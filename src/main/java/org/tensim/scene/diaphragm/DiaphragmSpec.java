@@ -18,9 +18,10 @@ import org.tensim.model.Check;
  * @param breathing   the breathing cycle and the two live controls' starting values
  * @param cage        the bones: the parametric cage, BodyParts3D's boxes, or a thorax of bone surfaces
  * @param actionLines the muscle's action lines (pressure and paper-nodes loads); null for one through each dome
+ * @param tendonRule  how the tendon is found without a label file (null: the paper's plane)
  */
 public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryConditions boundary,
-        Breathing breathing, Cage cage, List<ActionLines.Line> actionLines) {
+        Breathing breathing, Cage cage, List<ActionLines.Line> actionLines, TendonRule tendonRule) {
 
     /** Rings per face of the generated double dome at the paper's resolution (11,354 nodes). */
     public static final int PAPER_RINGS = 43;
@@ -33,6 +34,7 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
                     + " groups (use DiaphragmSpec.defaults() and its with... methods)");
         }
         actionLines = actionLines == null || actionLines.isEmpty() ? null : List.copyOf(actionLines);
+        tendonRule = tendonRule == null ? TendonRule.PLANE : tendonRule;
         if (actionLines != null && boundary.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
             throw new IllegalArgumentException("action lines place the traction of the muscle loads pressure and"
                     + " paper-nodes; the muscle load 'fibres' (the active fibre tension) has none");
@@ -192,7 +194,7 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
     /** The defaults: the generated double dome at the paper's resolution in the parametric cage, quiet breathing. */
     public static DiaphragmSpec defaults() {
         return new DiaphragmSpec(Mesh.defaults(), DiaphragmParameters.defaults(), BoundaryConditions.defaults(),
-                Breathing.defaults(), Cage.defaults(), null);
+                Breathing.defaults(), Cage.defaults(), null, TendonRule.PLANE);
     }
 
     /**
@@ -206,27 +208,31 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
     }
 
     public DiaphragmSpec withMesh(Mesh m) {
-        return new DiaphragmSpec(m, tissue, boundary, breathing, cage, actionLines);
+        return new DiaphragmSpec(m, tissue, boundary, breathing, cage, actionLines, tendonRule);
     }
 
     public DiaphragmSpec withTissue(DiaphragmParameters p) {
-        return new DiaphragmSpec(mesh, p, boundary, breathing, cage, actionLines);
+        return new DiaphragmSpec(mesh, p, boundary, breathing, cage, actionLines, tendonRule);
     }
 
     public DiaphragmSpec withBoundary(BoundaryConditions b) {
-        return new DiaphragmSpec(mesh, tissue, b, breathing, cage, actionLines);
+        return new DiaphragmSpec(mesh, tissue, b, breathing, cage, actionLines, tendonRule);
     }
 
     public DiaphragmSpec withBreathing(Breathing b) {
-        return new DiaphragmSpec(mesh, tissue, boundary, b, cage, actionLines);
+        return new DiaphragmSpec(mesh, tissue, boundary, b, cage, actionLines, tendonRule);
     }
 
     public DiaphragmSpec withCage(Cage c) {
-        return new DiaphragmSpec(mesh, tissue, boundary, breathing, c, actionLines);
+        return new DiaphragmSpec(mesh, tissue, boundary, breathing, c, actionLines, tendonRule);
     }
 
     public DiaphragmSpec withActionLines(List<ActionLines.Line> l) {
-        return new DiaphragmSpec(mesh, tissue, boundary, breathing, cage, l);
+        return new DiaphragmSpec(mesh, tissue, boundary, breathing, cage, l, tendonRule);
+    }
+
+    public DiaphragmSpec withTendonRule(TendonRule r) {
+        return new DiaphragmSpec(mesh, tissue, boundary, breathing, cage, actionLines, r);
     }
 
     /** The peak muscle action the scene starts with, Pa: the given one, or the muscle load's default. */

@@ -38,15 +38,15 @@ final class MuscleFibres {
     /**
      * Adds the fibres to t (node ids = mesh vertex ids) and returns how many were added.
      *
-     * @param normal  the tendon plane's normal (unit); points with {@code normal . x >= cut} are tendon
-     * @param cut     the plane's offset, m
+     * @param tendonHeight per vertex, a signed height whose zero level is the tendon's edge, positive on the
+     *                     tendon: the height above the tendon plane, m, or +1 / -1 for a tendon given by labels
      * @param tendon  per vertex: tendon (true) or muscle
      * @param area    vertex area shares, m^2 (weights of the tendon's centre)
      * @param thicknessM the diaphragm's thickness t, m
      * @param activation per vertex, the share of the active stress in [0, 1] ({@link FibreInsertion}); a
      *                   triangle takes its corners' mean; null: 1 everywhere
      */
-    static int add(Topology t, TriangleMesh m, Vec3 normal, double cut, boolean[] tendon, double[] area,
+    static int add(Topology t, TriangleMesh m, double[] tendonHeight, boolean[] tendon, double[] area,
             double thicknessM, ActionLines lines, double[] activation) {
         double cx = 0;
         double cy = 0;
@@ -73,7 +73,7 @@ final class MuscleFibres {
             Vec3[] y = new Vec3[3];
             for (int k = 0; k < 3; k++) {
                 y[k] = new Vec3(m.coord(c[k], 0), m.coord(c[k], 1), m.coord(c[k], 2));
-                h[k] = normal.dot(y[k]) - cut;
+                h[k] = tendonHeight[c[k]];
             }
             double fraction = muscleFraction(h);
             if (fraction == 0) {

@@ -20,7 +20,8 @@ import org.tensim.model.SignedDistance;
  * a strip {@link #INSERTION_WIDTH_M} high (its top {@link #TAPER_M} tapered), wherever its distance to an origin bone ({@link Bones#origin}:
  * xiphoid, cartilages and ribs 7-12, right L1-L3 and left L1-L2) is under W. Its area is the margin's
  * length near the bones times the strip's height: it converges with the mesh, and a larger threshold
- * adds only margin that lies near a bone, never the zone of apposition above it. A label file replaces
+ * adds only margin that lies near a bone, never the zone of apposition above it. The crura are attached
+ * along the lumbar vertebrae too, wherever they lie within {@link #CRUS_DISTANCE_M} of them. A label file replaces
  * the rule: its origin labels, widened by the same width along the surface (geodesic distance over the
  * mesh's edges), are attached.
  *
@@ -31,6 +32,12 @@ import org.tensim.model.SignedDistance;
 final class OriginAttachment {
     /** Width of the insertion along the surface from the origin line, m (a tendinous insertion: about 1 cm). */
     static final double INSERTION_WIDTH_M = 0.012;
+    /**
+     * Distance from an origin vertebra (right L1-L3, left L1-L2) within which the crura are attached, m: the
+     * crura are tendons on the front of the vertebral bodies (about 1 cm from the bone in the shared thorax's
+     * registration, and the muscle 3 mm thick).
+     */
+    static final double CRUS_DISTANCE_M = 0.008;
     /** Width of the smooth fall of the ties at the strip's edges, m (about the coarsest element). */
     static final double TAPER_M = 0.006;
 
@@ -85,7 +92,15 @@ final class OriginAttachment {
                 boneFactor[v] = 1;
             }
         }
-        double[] weightedArea = consistentArea(m, height, boneFactor);
+        // The crura arise from the front of the lumbar vertebral bodies all along their length, not only at
+        // the margin: every node within CRUS_DISTANCE_M of an origin vertebra is attached.
+        double[] crus = new double[b.nv];
+        for (int v = 0; v < b.nv && seeds == null; v++) {
+            if (nearestBone[v] >= 0 && bones.all().get(nearestBone[v]).kind() == Bones.Kind.VERTEBRA) {
+                crus[v] = AttachmentBand.taper(distance[v], CRUS_DISTANCE_M, TAPER_M / 2);
+            }
+        }
+        double[] weightedArea = consistentArea(m, height, boneFactor, crus);
         double[] weight = new double[b.nv];
         for (int v = 0; v < b.nv; v++) {
             weight[v] = b.area[v] > 0 ? weightedArea[v] / b.area[v] : 0;
@@ -132,15 +147,16 @@ final class OriginAttachment {
      * through triangles, and a whole triangle's area is not lumped onto its lowest corner. The sum over
      * vertices is the strip's area, resolution-independent.
      */
-    static double[] consistentArea(TriangleMesh m, double[] height, double[] boneFactor) {
+    static double[] consistentArea(TriangleMesh m, double[] height, double[] boneFactor, double[] crus) {
         double[] out = new double[m.vertexCount()];
         final int n = 4;
         for (int t = 0; t < m.triangleCount(); t++) {
             int a = m.corner(t, 0);
             int b = m.corner(t, 1);
             int c = m.corner(t, 2);
-            if (Math.min(height[a], Math.min(height[b], height[c])) >= INSERTION_WIDTH_M
-                    || boneFactor[a] + boneFactor[b] + boneFactor[c] == 0) {
+            boolean noCrus = crus[a] + crus[b] + crus[c] == 0;
+            if (noCrus && (Math.min(height[a], Math.min(height[b], height[c])) >= INSERTION_WIDTH_M
+                    || boneFactor[a] + boneFactor[b] + boneFactor[c] == 0)) {
                 continue;
             }
             double sub = m.area(t) / (n * n);
@@ -152,8 +168,9 @@ final class OriginAttachment {
                         double l2 = up == 0 ? (j + 1.0 / 3) / n : (j + 2.0 / 3) / n;
                         double l0 = 1 - l1 - l2;
                         double h = l0 * height[a] + l1 * height[b] + l2 * height[c];
-                        double wq = AttachmentBand.taper(h, INSERTION_WIDTH_M, TAPER_M)
-                                * (l0 * boneFactor[a] + l1 * boneFactor[b] + l2 * boneFactor[c]);
+                        double wq = Math.max(AttachmentBand.taper(h, INSERTION_WIDTH_M, TAPER_M)
+                                * (l0 * boneFactor[a] + l1 * boneFactor[b] + l2 * boneFactor[c]),
+                                l0 * crus[a] + l1 * crus[b] + l2 * crus[c]);
                         out[a] += wq * l0 * sub;
                         out[b] += wq * l1 * sub;
                         out[c] += wq * l2 * sub;

@@ -52,7 +52,11 @@ class MuscleFibresTest {
             double[] area = SurfaceGeometry.vertexAreas(m);
             ActionLines lines = new ActionLines(List.of(new ActionLines.Line(0, 0, 0.05)), BreathingCycle.quiet(),
                     new DiaphragmControls(1, 1000));
-            int added = MuscleFibres.add(t, m, new Vec3(1, 0, 0), cut, tendon, area, T, lines, null);
+            double[] height = new double[m.vertexCount()];
+            for (int v = 0; v < height.length; v++) {
+                height[v] = m.coord(v, 0) - cut; // the tendon plane x = cut, normal +x
+            }
+            int added = MuscleFibres.add(t, m, height, tendon, area, T, lines, null);
             assertEquals(t.fibres().size(), added);
             double volume = 0;
             double cx = 0; // the tendon's centre: the area-weighted mean of its vertices

@@ -37,7 +37,7 @@ class ThoraxSceneTest {
 
     private static DiaphragmScene scene(TwoSurfaces s) {
         DiaphragmSpec spec = DiaphragmSpec.defaults().withCage(DiaphragmSpec.Cage.defaults().withThorax(THORAX));
-        return DiaphragmScene.build(s, spec, Map.of(), bones, spec.newControls());
+        return DiaphragmScene.build(s, spec, Map.of(), bones, null, spec.newControls());
     }
 
     private static double attachedArea(DiaphragmScene s) {
