@@ -230,6 +230,7 @@ public final class RunFolder {
         m.put("command", command);
         m.putAll(fields);
         m.putIfAbsent("run_wall_s", Math.round((System.nanoTime() - startNanos) / 1e6) / 1e3);
+        Provenance.fields().forEach(m::putIfAbsent);
         m.put("files", new ArrayList<>(files));
         IOException closing = null;
         for (CsvWriter w : csvs) {

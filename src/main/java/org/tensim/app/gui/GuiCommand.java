@@ -48,6 +48,24 @@ public final class GuiCommand implements Callable<Integer> {
                     + " rib cage, placed on the generated dome)")
     Path boxes;
 
+    @Option(names = "--thorax", paramLabel = "DIR",
+            description = "a thorax of bone surfaces (a folder with a parts.json), as `tensim diaphragm --thorax`:"
+                    + " the diaphragm attached at its origins (green) and sliding on the bones (blue tint)")
+    Path thorax;
+
+    @Option(names = "--labels", paramLabel = "FILE", description = "per-vertex labels of --mesh, as `tensim diaphragm"
+            + " --labels`")
+    Path labels;
+
+    @Option(names = "--tendon-rule", paramLabel = "RULE",
+            description = "plane or geodesic, as `tensim diaphragm --tendon-rule` (default: plane)")
+    String tendonRule;
+
+    @Option(names = "--model", paramLabel = "NAME",
+            description = "default or paper (the paper's tissue springs, threshold attachment and action lines),"
+                    + " as `tensim diaphragm --model` (default: default)")
+    String model;
+
     @Option(names = "--muscle-load", paramLabel = "MODEL",
             description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 18 kPa of fibre"
                     + " stress), pressure (vertical traction per unit area, 2.6 kPa) or paper-nodes (the paper's"
@@ -124,7 +142,8 @@ public final class GuiCommand implements Callable<Integer> {
         }
         // Bad names and files fail here, before any window.
         SceneFactory factory = GuiScenes.factory(scene,
-                new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad));
+                new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad, thorax, labels, tendonRule,
+                        model));
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);
@@ -132,7 +151,7 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
-                GuiScenes.opensInRealTime(scene), muscleLoad != null);
+                GuiScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null);
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();

@@ -7,6 +7,8 @@ import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
@@ -27,11 +29,21 @@ public final class GuiScenes {
      * @param muscleLoad  the diaphragm's muscle load model as on the command line ({@code fibres},
      *                    {@code pressure}, {@code paper-nodes}), or null for the default
      *                    ({@link BoundaryConditions#DEFAULT_MUSCLE_LOAD}, fibres)
+     * @param thorax      a thorax folder (parts.json and bone surfaces), or null
+     * @param labels      a label file of the mesh, or null
+     * @param tendonRule  {@code plane} or {@code geodesic}, or null for the plane
+     * @param model       {@code default} or {@code paper}, or null for the default
      */
-    public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes, String muscleLoad) {
+    public record Source(Path mesh, String units, double thicknessMm, int rings, Path boxes, String muscleLoad,
+            Path thorax, Path labels, String tendonRule, String model) {
         /** With the default muscle load. */
         public Source(Path mesh, String units, double thicknessMm, int rings, Path boxes) {
             this(mesh, units, thicknessMm, rings, boxes, null);
+        }
+
+        /** Without a thorax or labels. */
+        public Source(Path mesh, String units, double thicknessMm, int rings, Path boxes, String muscleLoad) {
+            this(mesh, units, thicknessMm, rings, boxes, muscleLoad, null, null, null, null);
         }
 
         /**
@@ -86,7 +98,12 @@ public final class GuiScenes {
                 }
                 Check.atLeast("--resolution (rings per face of the generated dome)", src.rings(), 2);
                 Check.positive("--thickness", "mm", src.thicknessMm());
-                BoundaryConditions bc = BoundaryConditions.defaults();
+                boolean paper = "paper".equals(src.model());
+                if (src.model() != null && !paper && !"default".equals(src.model())) {
+                    throw new IllegalArgumentException("--model must be default or paper, got '" + src.model() + "'");
+                }
+                DiaphragmSpec base = paper ? DiaphragmSpec.paper() : DiaphragmSpec.defaults();
+                BoundaryConditions bc = base.boundary();
                 if (src.muscleLoad() != null) {
                     try {
                         bc = bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
@@ -95,8 +112,14 @@ public final class GuiScenes {
                         throw new IllegalArgumentException("--muscle-load: " + e.getMessage(), e);
                     }
                 }
-                return DiaphragmViewScene.factory(src.mesh(), MeshUnits.parse(src.units()), src.thicknessMm() * 1e-3,
-                        src.rings(), src.boxes(), bc);
+                DiaphragmSpec.Mesh m = DiaphragmSpec.Mesh.defaults().withRings(src.rings())
+                        .withOffsetThickness(src.thicknessMm() * 1e-3).withLabels(src.labels());
+                DiaphragmSpec spec = base.withMesh(src.mesh() == null ? m
+                        : m.withFile(src.mesh(), MeshUnits.parse(src.units()))).withBoundary(bc)
+                        .withCage(base.cage().withBoxes(src.boxes()).withThorax(src.thorax()))
+                        .withTendonRule(src.tendonRule() == null ? TendonRule.PLANE
+                                : BoundaryConditions.parse(TendonRule.class, src.tendonRule()));
+                return DiaphragmViewScene.factory(spec);
             default:
                 throw new IllegalArgumentException("--scene '" + name + "' is not a scene; expected one of " + names());
         }

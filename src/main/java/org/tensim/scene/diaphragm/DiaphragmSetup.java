@@ -65,6 +65,24 @@ public final class DiaphragmSetup {
 
     /** As {@link #build(DiaphragmSpec)} with given live controls (a GUI's, kept across rebuilds). */
     public static Built build(DiaphragmSpec spec, DiaphragmControls controls) throws IOException, MeshFormatException {
+        return build(read(spec), spec, controls);
+    }
+
+    /**
+     * What a spec's files give, read once: its mesh's two surfaces, the cage's boxes or the thorax's bones, and
+     * the mesh's labels. Scenes that differ only in constants are built from one reading ({@link #build(Inputs,
+     * DiaphragmSpec, DiaphragmControls)}); a thorax's bones keep their signed distances across them.
+     *
+     * @param boxes  the cage's rib and sternum boxes, m (empty with a thorax)
+     * @param bones  the thorax's bones, or null
+     * @param labels per vertex, the label file's labels, or null
+     */
+    public record Inputs(Surfaces surfaces, MeshReport report, Map<String, double[]> boxes, Bones bones,
+            org.tensim.io.mesh.VertexLabel[] labels, String source) {
+    }
+
+    /** Reads what a spec names: the mesh (or generates it), the cage's boxes or the thorax, the labels. */
+    public static Inputs read(DiaphragmSpec spec) throws IOException, MeshFormatException {
         DiaphragmSpec.Mesh m = spec.mesh();
         MeshReport report = null;
         Surfaces s;
@@ -78,9 +96,14 @@ public final class DiaphragmSetup {
         org.tensim.io.mesh.VertexLabel[] labels = m.labels() == null ? null
                 : org.tensim.io.mesh.VertexLabelsFile.read(m.labels(), s.surfaces().mesh().vertexCount());
         Bones bones = spec.cage().thorax() == null ? null : ThoraxBones.load(spec.cage().thorax());
-        return new Built(DiaphragmScene.build(s.surfaces(), spec, bones == null ? boxes(spec.cage().boxes())
-                : Map.of(), bones, labels, controls), report, s.mode(),
+        return new Inputs(s, report, bones == null ? boxes(spec.cage().boxes()) : Map.of(), bones, labels,
                 m.describe() + ", " + spec.cage().describe());
+    }
+
+    /** Builds a spec's scene from its inputs, read once ({@link #read}), with the live controls given. */
+    public static Built build(Inputs in, DiaphragmSpec spec, DiaphragmControls controls) {
+        return new Built(DiaphragmScene.build(in.surfaces().surfaces(), spec, in.boxes(), in.bones(), in.labels(),
+                controls), in.report(), in.surfaces().mode(), in.source());
     }
 
     /** How the two boundary surfaces were obtained. */

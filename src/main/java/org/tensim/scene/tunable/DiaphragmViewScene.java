@@ -15,6 +15,7 @@ import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.model.Topology;
 import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.RibCage;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.Simulation;
@@ -124,8 +125,17 @@ public final class DiaphragmViewScene implements ViewScene {
                 scene.apexNode(), scene.simulatedNodes(), structure));
     }
 
+    /** Colour of the nodes attached at the diaphragm's origins. */
+    static final float[] ATTACHED = {0.25f, 0.62f, 0.3f};
+    /** Colour mixed into the nodes that may slide on a bone (contact pairs). */
+    static final float[] SLIDING = {0.3f, 0.45f, 0.85f};
+
     private static float[] colours(DiaphragmScene scene, int nodes) {
         int[] labels = scene.labels();
+        boolean[] mayTouch = new boolean[nodes];
+        for (org.tensim.model.ContactPair p : scene.topology().contacts()) {
+            mayTouch[p.node()] = true;
+        }
         float[] c = new float[3 * nodes];
         for (int i = 0; i < nodes; i++) {
             float[] rgb = switch (i < labels.length ? labels[i] : -1) {
@@ -135,6 +145,12 @@ public final class DiaphragmViewScene implements ViewScene {
                 case DiaphragmScene.STERNUM_CARTILAGE -> new float[] {0.62f, 0.76f, 0.86f};
                 default -> new float[] {0.5f, 0.5f, 0.5f};
             };
+            if (i < scene.diaphragmNodes() && scene.isAttached(i)) {
+                rgb = ATTACHED;
+            } else if (i < scene.diaphragmNodes() && mayTouch[i]) {
+                rgb = new float[] {0.5f * rgb[0] + 0.5f * SLIDING[0], 0.5f * rgb[1] + 0.5f * SLIDING[1],
+                        0.5f * rgb[2] + 0.5f * SLIDING[2]};
+            }
             System.arraycopy(rgb, 0, c, 3 * i, 3);
         }
         return c;
@@ -164,11 +180,23 @@ public final class DiaphragmViewScene implements ViewScene {
      */
     public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes,
             BoundaryConditions bc) {
+        DiaphragmSpec.Mesh m = DiaphragmSpec.Mesh.defaults().withRings(rings).withOffsetThickness(thicknessM);
+        return factory(DiaphragmSpec.defaults().withMesh(mesh == null ? m : m.withFile(mesh, units))
+                .withCage(DiaphragmSpec.Cage.defaults().withBoxes(boxes)).withBoundary(bc));
+    }
+
+    /**
+     * The scenes of a spec ({@link DiaphragmSpec}: mesh, cage or thorax, labels, tissue, boundary conditions), its
+     * files read once; each scene takes the tuned values (rib amplitude, muscle action, breathing period) and
+     * may switch the muscle load.
+     */
+    public static SceneFactory factory(DiaphragmSpec base) {
+        BoundaryConditions bc = base.boundary();
         return new SceneFactory() {
-            // Read or generated once; every scene, the first included, is then built from these surfaces by
+            // Read or generated once; every scene, the first included, is then built from these inputs by
             // the same call, outside the lock: the same values give the same scene whatever was built before,
             // and parallel sweep workers do not queue for each other's scene building.
-            private TwoSurfaces surfaces;
+            private DiaphragmSetup.Inputs inputs;
 
             @Override
             public String name() {
@@ -180,12 +208,11 @@ public final class DiaphragmViewScene implements ViewScene {
                 return true;
             }
 
-            private synchronized TwoSurfaces surfaces() throws IOException, MeshFormatException {
-                if (surfaces == null) {
-                    surfaces = mesh == null ? DiaphragmSetup.generatedSurfaces(rings)
-                            : DiaphragmSetup.loadSurfaces(mesh, units, thicknessM).surfaces();
+            private synchronized DiaphragmSetup.Inputs inputs() throws IOException, MeshFormatException {
+                if (inputs == null) {
+                    inputs = DiaphragmSetup.read(base);
                 }
-                return surfaces;
+                return inputs;
             }
 
             @Override
@@ -209,12 +236,13 @@ public final class DiaphragmViewScene implements ViewScene {
                 BoundaryConditions b = muscleLoad == null ? bc
                         : bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));
                 double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
-                BreathingCycle cycle = new BreathingCycle(period, EXPIRATION_RATIO);
-                DiaphragmControls controls = new DiaphragmControls(values.getOrDefault(RIB_AMPLITUDE, 1.0),
-                        values.getOrDefault(MUSCLE_ACTION, DiaphragmSetup.defaultMusclePa(b.muscleLoad())));
+                DiaphragmSpec spec = base.withBoundary(b).withActionLines(b.muscleLoad()
+                        == BoundaryConditions.MuscleLoad.FIBRES ? null : base.actionLines())
+                        .withBreathing(new DiaphragmSpec.Breathing(period, EXPIRATION_RATIO,
+                                values.getOrDefault(RIB_AMPLITUDE, 1.0), values.getOrDefault(MUSCLE_ACTION,
+                                        DiaphragmSetup.defaultMusclePa(b.muscleLoad()))));
                 try {
-                    DiaphragmScene s = DiaphragmScene.build(surfaces(), DiaphragmSetup.boxes(boxes), P, cycle,
-                            controls, null, b);
+                    DiaphragmScene s = DiaphragmSetup.build(inputs(), spec, spec.newControls()).scene();
                     return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
                 } catch (IOException e) {
                     throw new UncheckedIOException(e.getMessage(), e);
@@ -239,7 +267,8 @@ public final class DiaphragmViewScene implements ViewScene {
     public String title() {
         return "Diaphragm: " + scene.diaphragmNodes() + " nodes, muscle (red) mass-spring, tendon (pale) "
                 + (sim.state().linkCount() > 0 ? "tensegrity" : "mass-spring") + ", muscle load "
-                + BoundaryConditions.name(load);
+                + BoundaryConditions.name(load) + (scene.bones() == null ? "" : ", in " + scene.bones().source()
+                + ": attached at the origins (green), sliding on the bones (blue tint)");
     }
 
     @Override
