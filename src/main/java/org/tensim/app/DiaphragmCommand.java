@@ -185,6 +185,17 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " (default: 1e-12)")
     Double cgTolerance;
 
+    @Option(names = "--newton", paramLabel = "N",
+            description = "bdf2 only: Newton iterations per step (default: "
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS + "; a thorax with contact"
+                    + " needs 3, docs/thorax.md)")
+    Integer newton;
+
+    @Option(names = "--cg-iterations", paramLabel = "N",
+            description = "bdf2 only: cap on CG iterations per Newton iteration (default: "
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS + "; with a thorax: 20)")
+    Integer cgIterations;
+
     @Option(names = "--dt", paramLabel = "S",
             description = "time step, s (default: the step the time-step policy recommends for the integrator on"
                     + " this scene; summary.json's dt_rule says how it was chosen)")
@@ -259,6 +270,22 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         "--cg-tolerance applies to --integrator implicit-euler only, not " + integrator);
             }
             ie.setTolerance(cgTolerance);
+        }
+        if (newton != null || cgIterations != null) {
+            if (!(chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b)) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                        "--newton and --cg-iterations apply to --integrator bdf2 only, not " + integrator);
+            }
+            try {
+                if (newton != null) {
+                    b.setNewtonIterations(newton);
+                }
+                if (cgIterations != null) {
+                    b.setKrylovIterations(cgIterations);
+                }
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+            }
         }
         CommandChecks.threads(spec, "--threads", threads, true);
         CommandChecks.outFolder(spec, out);

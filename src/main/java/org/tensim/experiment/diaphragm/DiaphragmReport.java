@@ -268,6 +268,10 @@ public final class DiaphragmReport {
         summary.put("simulated_s", round(sim.time(), 6));
         summary.put("measured_cycle_start_s", measuredCycleStart);
         summary.put("integrator", chosen.name());
+        if (chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
+            summary.put("newton_iterations", b.newtonIterations());
+            summary.put("cg_iterations_cap", b.krylovIterations());
+        }
         summary.put("threads", threads);
         if (chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie) {
             summary.put("cg_products_per_step", round(ie.matrixVectorProducts() / (double) Math.max(1, sim.steps()), 1));
