@@ -305,6 +305,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         "--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
                                 + " --cg-tolerance");
             }
+            if (thorax != null) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--realtime was measured on the"
+                        + " double dome held by its band; its step drifts in a thorax (docs/thorax.md): use"
+                        + " --integrator bdf2 --dt 0.0025 --newton 3 --cg-iterations 20 with --thorax");
+            }
             setting = RealTimeSetting.forMuscleLoad(muscleLoad);
             chosen = setting.newIntegrator();
             dt = setting.dtS();

@@ -82,6 +82,10 @@ class ThoraxCommandTest {
         r = run("diaphragm", "--thorax", dir.toString(), "--boxes", dir.resolve("x.json").toString(), "--out",
                 dir.resolve("c").toString());
         assertTrue(r[2].contains("not both"), r[2]);
+        r = run("diaphragm", "--thorax", dir.toString(), "--realtime", "--out", dir.resolve("f").toString());
+        assertTrue(r[2].contains("--realtime was measured on the double dome"), r[2]);
+        r = run("diaphragm", "--newton", "3", "--out", dir.resolve("g").toString());
+        assertTrue(r[2].contains("--newton and --cg-iterations apply to --integrator bdf2 only, not rk2"), r[2]);
         r = run("diaphragm", "--tendon-rule", "sphere", "--out", dir.resolve("d").toString());
         assertTrue(r[2].contains("sphere") && r[2].contains("plane, geodesic"), r[2]);
         r = run("diaphragm", "--thorax", dir.resolve("none").toString(), "--seconds", "0.01", "--out",

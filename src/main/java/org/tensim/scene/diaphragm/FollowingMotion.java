@@ -7,8 +7,8 @@ import org.tensim.model.Vec3;
 /**
  * A body carried by the mean displacement of some points of other moving bodies (the sternum by the
  * anterior ends of the true ribs): {@code x(t) = x0 + (1/n) sum_i (M_i(t) p_i - p_i)}, a translation.
- * Allocation-free; it keeps a one-entry cache by time and rib amplitude, like the ribs' own laws, and
- * like them is evaluated on the simulation's thread.
+ * Allocation-free; evaluated on the simulation's thread, like the ribs' own laws (the shift is recomputed at
+ * every call: the rib amplitude may change between two calls at the same time).
  */
 final class FollowingMotion implements RigidMotion {
     private final HelicalAxisMotion[] motions;

@@ -36,7 +36,7 @@ import org.tensim.model.Vec3;
  * For contact and attachment the cartilage's surface moves with its rib.
  *
  * <p>The ribs, sternum and cartilage also appear as segments (polylines through slice centroids), for
- * the viewer and the fibres' insertion.
+ * the viewer and the breathing metrics' cartilage markers.
  */
 final class ThoraxCage {
     /** Polyline nodes per rib (slice centroids). */
