@@ -276,17 +276,19 @@ public final class ContactForces {
     }
 
     /**
-     * The deepest penetration past the pairs' gaps, {@code max(0, max_e (g_e - d_e))} (m), and the pair it is
-     * at ({-1} when none), at time t (s) and positions x (m): for a node that started inside a body (a
-     * negative gap), how much deeper it went.
+     * In one pass over the pairs at time t (s) and positions x (m): {@code [0]} the deepest penetration past
+     * the pairs' gaps, {@code max(0, max_e (g_e - d_e))} (m; for a node that started inside a body, a
+     * negative gap, how much deeper it went), {@code [1]} the pair it is at (-1 when none), and {@code [2]}
+     * the deepest penetration below the surfaces themselves ({@link #maxPenetrationM}).
      */
     public double[] maxPenetrationPastGap(double t, double[] x) {
-        double[] max = {0, -1};
+        double[] max = {0, -1, 0};
         visit(t, x, (e, d, n) -> {
             if (gap[e] - d > max[0]) {
                 max[0] = gap[e] - d;
                 max[1] = e;
             }
+            max[2] = Math.max(max[2], -d);
         });
         return max;
     }

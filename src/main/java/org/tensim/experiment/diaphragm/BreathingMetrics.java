@@ -158,8 +158,9 @@ public final class BreathingMetrics implements StepListener {
             }
         }
         if (s.contacts.count() > 0) {
-            maxPenetration = Math.max(maxPenetration, s.contacts.maxPenetrationM(t, s.x));
+            // One pass over the pairs a step: both depths and where the deepest past its start is.
             double[] past = s.contacts.maxPenetrationPastGap(t, s.x);
+            maxPenetration = Math.max(maxPenetration, past[2]);
             if (past[0] > maxPastGap) {
                 maxPastGap = past[0];
                 worstPair = (int) past[1];
