@@ -34,10 +34,12 @@ public final class BreathingMetrics implements StepListener {
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
     /**
-     * Per diaphragm node: 0 not a dome candidate, 1 near the right dome's top, 2 near the left's (free upper
-     * nodes within {@link #DOME_RADIUS_M} of the top horizontally).
+     * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's (free upper
+     * nodes within {@link #DOME_RADIUS_M} of the top horizontally, or on the midclavicular strip).
      */
     private final int[] half;
+    /** Where each half's top is measured (right, left), for the summary; null for a half without upper nodes. */
+    private final String[] site;
     private double[] domeTopsExp;
     private double[] domeTopsInsp;
     /** Nodes of the 3rd-5th costal cartilages (marker: their mean), empty when the cage has none. */
@@ -67,14 +69,31 @@ public final class BreathingMetrics implements StepListener {
             origin[v] = scene.isAttached(v);
         }
         double[][] tops = scene.domeTops();
+        double[] b = scene.surfaces().mesh().bounds();
+        double centreX = 0.5 * (b[0] + b[3]);
+        double halfWidth = 0.5 * (b[3] - b[0]);
+        this.site = new String[2];
         this.half = new int[nodes];
-        for (int v = 0; v < nodes; v++) {
-            if (!scene.surfaces().isUpper(v) || origin[v]) {
-                continue;
-            }
-            for (int d = 0; d < 2; d++) {
-                if (tops[d] != null && Math.hypot(scene.surfaces().mesh().coord(v, 0) - tops[d][0],
-                        scene.surfaces().mesh().coord(v, 1) - tops[d][1]) < DOME_RADIUS_M) {
+        for (int d = 0; d < 2; d++) {
+            // A half's top is its own dome's when it lies clear of the midline; otherwise (the top found on the
+            // midline, next to the other, higher dome) the half has no dome of its own and is measured where the
+            // radiograph sees it, on its midclavicular line.
+            boolean own = tops[d] != null && Math.abs(tops[d][0] - centreX) >= OWN_TOP_FROM_MIDLINE * halfWidth;
+            double mcl = centreX + (d == 0 ? -0.5 : 0.5) * halfWidth;
+            site[d] = tops[d] == null ? null : own
+                    ? String.format(java.util.Locale.ROOT, "local top, within %.0f mm of (%.1f, %.1f) mm",
+                            1e3 * DOME_RADIUS_M, 1e3 * tops[d][0], 1e3 * tops[d][1])
+                    : String.format(java.util.Locale.ROOT, "midclavicular line, x = %.1f +/- %.0f mm",
+                            1e3 * mcl, 1e3 * STRIP_HALF_WIDTH_M);
+            for (int v = 0; v < nodes; v++) {
+                if (tops[d] == null || !scene.surfaces().isUpper(v) || origin[v]) {
+                    continue;
+                }
+                double x = scene.surfaces().mesh().coord(v, 0);
+                double y = scene.surfaces().mesh().coord(v, 1);
+                boolean in = own ? Math.hypot(x - tops[d][0], y - tops[d][1]) < DOME_RADIUS_M
+                        : Math.abs(x - mcl) < STRIP_HALF_WIDTH_M;
+                if (in) {
                     half[v] = d + 1;
                 }
             }
@@ -91,11 +110,22 @@ public final class BreathingMetrics implements StepListener {
 
     /** Horizontal radius about each dome's rest top within which its top is sought at every moment, m. */
     public static final double DOME_RADIUS_M = 0.025;
+    /**
+     * Least distance of a half's top from the midline, as a fraction of the half's width, for it to count as that
+     * hemidiaphragm's own dome top.
+     */
+    public static final double OWN_TOP_FROM_MIDLINE = 0.2;
+    /** Half-width of the sagittal strip on the midclavicular line that measures a half without a dome top, m. */
+    public static final double STRIP_HALF_WIDTH_M = 0.010;
 
     /**
      * The height of each dome's top (right, left), m: the highest free upper node within {@link #DOME_RADIUS_M}
      * of its top at rest, the local highest point (the mesh's highest node may lie on the other dome, or on the
-     * chest wall the ribs lift).
+     * chest wall the ribs lift). A half whose highest point at rest lies on the midline, rising towards the other
+     * dome (the BodyParts3D diaphragm's left, the double dome's left), has no dome top of its own; its height is
+     * the highest free upper node in the sagittal strip {@link #STRIP_HALF_WIDTH_M} either side of its
+     * midclavicular line (half-way from the midline to its lateral edge): the coronal silhouette a frontal
+     * radiograph shows there, lateral to the heart, where the hemidiaphragm's excursion is read (Hida et al.).
      */
     private double[] domeTops(SystemState s) {
         double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
@@ -190,6 +220,11 @@ public final class BreathingMetrics implements StepListener {
             e[a] = hi - lo;
         }
         return e;
+    }
+
+    /** Where each hemidiaphragm's descent is measured: {right, left} (see {@code domeTops}). */
+    public String[] domeSites() {
+        return site.clone();
     }
 
     public double measuredCycleStart() {
