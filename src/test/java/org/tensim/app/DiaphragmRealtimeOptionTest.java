@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.bench.RealTimeSetting;
+import org.tensim.experiment.diaphragm.RealTimeSetting;
 import org.tensim.io.Json;
 
 /** diaphragm --realtime, the checked --dt and the real-time study's selection options. */

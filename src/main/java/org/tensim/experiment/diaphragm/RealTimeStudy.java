@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -12,9 +12,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
-import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions;
