@@ -203,7 +203,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--realtime",
             description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
-                    + " default mesh, on all cores; the summary names it and its measured error")
+                    + " default mesh, on all cores; the summary names it (realtime_setting)")
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
