@@ -26,7 +26,8 @@ import org.tensim.io.ProjectFolder;
  * </pre>
  * Within a layer two packages must not use each other both ways. {@code model} and {@code solver} use no
  * Java3D, Swing or AWT; below {@code view} nothing uses Java3D or Swing. A use is an import line or a fully
- * qualified name in code (comments and string literals are left out), in {@code src/main/java}.
+ * qualified name in code (comments and string literals are left out), in {@code src/main/java}. And
+ * {@code app/gui} holds only classes that draw.
  */
 class LayersTest {
     /** The layers, lowest first: top-level packages under org.tensim. */
@@ -53,6 +54,25 @@ class LayersTest {
         List<String> violations = violations(ProjectFolder.resolve("src", "main", "java"));
         assertTrue(violations.isEmpty(), "layer violations (file:line: use; rule):\n  "
                 + String.join("\n  ", violations));
+    }
+
+    /**
+     * {@code app/gui} holds the Swing window only: every class there uses Swing, AWT or Java3D. A class that
+     * uses none is headless and belongs below the application (in {@code tuning}, where sweeps and calibration
+     * can use it).
+     */
+    @Test
+    void appGuiHoldsOnlyClassesThatDraw() throws IOException {
+        Path gui = ProjectFolder.resolve("src", "main", "java", "org", "tensim", "app", "gui");
+        List<String> headless = new ArrayList<>();
+        try (Stream<Path> s = Files.list(gui)) {
+            for (Path f : s.filter(p -> p.toString().endsWith(".java")).sorted().toList()) {
+                if (!ANY_QUALIFIED.matcher(codeOnly(Files.readString(f))).find()) {
+                    headless.add(f.getFileName().toString());
+                }
+            }
+        }
+        assertTrue(headless.isEmpty(), "headless classes in app/gui (move them to org.tensim.tuning): " + headless);
     }
 
     /** The check must be able to fail: a solver that imports the app, a model that draws, a cycle. */
