@@ -12,6 +12,7 @@ import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.solver.integrators.Integrators;
 
 /** The scenes the GUI can show, by name. */
 public final class TunableScenes {

@@ -45,6 +45,27 @@ class DiaphragmRealtimeOptionTest {
                 "bdf2[");
     }
 
+    /**
+     * --integrator takes every setup of the catalogue, as a sweep spec does: bdf2-newton2 runs BDF2 with its
+     * two Newton iterations; an unknown name is refused with every valid one.
+     */
+    @Test
+    void integratorTakesEveryNamedSetupOfTheCatalogue() throws Exception {
+        rejected("unknown integrator 'bdf3': expected one of " + String.join(", ", Integrators.choiceNames()),
+                "diaphragm", "--integrator", "bdf3");
+        Path mesh = dir.resolve("coarse.obj");
+        String[] m = run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());
+        assumeTrue(m[0].equals("0") && Files.isRegularFile(mesh), "coarse mesh not generated: " + m[2]);
+        Path out = dir.resolve("out");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--integrator", Integrators.LARGE_STEP_ACCURATE,
+                "--dt", "0.02", "--seconds", "0.1", "--threads", "1", "--vtk-per-cycle", "0", "--out", out.toString());
+        assumeTrue(!r[2].contains("HeadlessException") && !r[2].contains("AWTError"), "no AWT for the figures");
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> summary = Json.readMap(out.resolve("summary.json"));
+        assertEquals("bdf2", summary.get("integrator"), "the method the setup runs");
+        assertEquals(0.02, ((Number) summary.get("dt_s")).doubleValue(), 1e-12);
+    }
+
     /** The default load is the fibres': --realtime without --muscle-load runs their setting. */
     @Test
     void realtimeRunsTheMeasuredSettingAndNamesIt() throws Exception {
