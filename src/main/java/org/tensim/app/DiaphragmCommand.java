@@ -5,8 +5,8 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.tensim.bench.RealTimeSetting;
-import org.tensim.bench.RealTimeStudy;
+import org.tensim.experiment.diaphragm.RealTimeSetting;
+import org.tensim.experiment.diaphragm.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionPick;
@@ -204,7 +204,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--realtime",
             description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
-                    + " default mesh, on all cores; the summary names it and its measured error")
+                    + " default mesh, on all cores; the summary names it (realtime_setting)")
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
