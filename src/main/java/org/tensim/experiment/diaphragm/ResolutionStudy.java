@@ -264,6 +264,8 @@ public final class ResolutionStudy {
         summary.put("attachment", s.bc().attachment().name().toLowerCase(Locale.ROOT));
         summary.put("muscle_load", s.bc().muscleLoad().name().toLowerCase(Locale.ROOT));
         if (s.thorax() != null) {
+            // In a thorax the band's law ties the origins only (docs/thorax.md), not the band near the cage.
+            summary.put("attachment", "origins");
             summary.put("thorax", String.valueOf(s.thorax().spec().cage().thorax()));
             summary.put("contact", s.thorax().spec().cage().contact());
             summary.put("integrator", s.thorax().integrator().get().name());
