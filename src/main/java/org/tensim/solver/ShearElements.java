@@ -48,14 +48,8 @@ public final class ShearElements {
     private final double[] ys = new double[18];
 
     ShearElements(List<TransverseShear> shears, double[] x0) {
-        int n = shears.size();
-        node = new int[6 * n];
-        k = new double[9 * n];
-        g0 = new double[3 * n];
-        beta = new double[n];
-        es = new double[18 * n];
-        rho = new double[3 * n];
-        for (int e = 0; e < n; e++) {
+        this(shears.size());
+        for (int e = 0; e < shears.size(); e++) {
             TransverseShear ts = shears.get(e);
             beta[e] = ts.dampingS();
             damped |= beta[e] != 0;
@@ -73,6 +67,16 @@ public final class ShearElements {
             System.arraycopy(dg, 0, g0, 3 * e, 3);
         }
         linearise(x0, false);
+    }
+
+    /** n elements' arrays, all zero. */
+    private ShearElements(int n) {
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        es = new double[18 * n];
+        rho = new double[3 * n];
     }
 
     private ShearElements(ShearElements other, double[] px) {
@@ -103,14 +107,8 @@ public final class ShearElements {
     }
 
     private ShearElements(ShearElements other, int[] elements) {
-        int n = elements.length;
-        node = new int[6 * n];
-        k = new double[9 * n];
-        g0 = new double[3 * n];
-        beta = new double[n];
-        es = new double[18 * n];
-        rho = new double[3 * n];
-        for (int i = 0; i < n; i++) {
+        this(elements.length);
+        for (int i = 0; i < elements.length; i++) {
             System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
             System.arraycopy(other.g0, 3 * elements[i], g0, 3 * i, 3);
         }
@@ -169,21 +167,37 @@ public final class ShearElements {
 
     /** e_k and S_k of element e's three edges at x into ev, sv (3 per edge); g_k - g0_k into dg. */
     private void edges(int e, double[] x) {
+        edges(e, x, null);
+    }
+
+    /**
+     * The same, and when {@code v} is not null and the element is damped, {@code beta dg_k/dt} added to
+     * dg: {@code dg_k/dt = grad g_k . v} at velocities v (m/s), from the same e_k and S_k.
+     */
+    private void edges(int e, double[] x, double[] v) {
         final int o = 6 * e;
+        final boolean rate = v != null && beta[e] != 0;
         for (int c = 0; c < 3; c++) {
             final int p = 3 * node[o + c];
             final int q = 3 * node[o + (c + 1) % 3];
             final int p2 = 3 * node[o + 3 + c];
             final int q2 = 3 * node[o + 3 + (c + 1) % 3];
             double g = 0;
+            double dgdt = 0;
             for (int d = 0; d < 3; d++) {
                 final double ed = x[q + d] - x[p + d];
                 final double sd = x[p2 + d] + x[q2 + d] - x[p + d] - x[q + d];
                 ev[3 * c + d] = ed;
                 sv[3 * c + d] = sd;
                 g += ed * sd;
+                if (rate) {
+                    dgdt += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+                }
             }
             dg[c] = g - g0[3 * e + c];
+            if (rate) {
+                dg[c] += beta[e] * dgdt;
+            }
         }
     }
 
@@ -199,10 +213,7 @@ public final class ShearElements {
      */
     public void forces(double[] x, double[] v, double[] f) {
         for (int e = 0; e < count(); e++) {
-            edges(e, x);
-            if (v != null && beta[e] != 0) {
-                addRate(e, v);
-            }
+            edges(e, x, v);
             final int o = 6 * e;
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
@@ -220,24 +231,6 @@ public final class ShearElements {
                     f[q2 + d] += m * ed;
                 }
             }
-        }
-    }
-
-    /** dg += beta dg/dt for element e at velocities v (after {@link #edges}). */
-    private void addRate(int e, double[] v) {
-        final int o = 6 * e;
-        for (int c = 0; c < 3; c++) {
-            final int p = 3 * node[o + c];
-            final int q = 3 * node[o + (c + 1) % 3];
-            final int p2 = 3 * node[o + 3 + c];
-            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
-            double rate = 0;
-            for (int d = 0; d < 3; d++) {
-                final double ed = ev[3 * c + d];
-                final double sd = sv[3 * c + d];
-                rate += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
-            }
-            dg[c] += beta[e] * rate;
         }
     }
 
