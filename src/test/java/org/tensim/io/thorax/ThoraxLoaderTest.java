@@ -26,7 +26,8 @@ class ThoraxLoaderTest {
     Path tmp;
 
     private static Path shared() {
-        Assumptions.assumeTrue(Files.isRegularFile(SHARED.resolve("parts.json")), SHARED + " not found");
+        Assumptions.assumeTrue(Files.isRegularFile(SHARED.resolve("parts.json")),
+                SHARED.resolve("parts.json").toAbsolutePath() + " not found");
         return SHARED;
     }
 
