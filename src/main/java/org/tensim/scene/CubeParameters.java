@@ -46,11 +46,6 @@ public record CubeParameters(double sideM, double nodeMassKg, double stiffnessNP
         return new CubeParameters(10, 1, 100, 2, 400, 0.25, 3, 1e-3, 4);
     }
 
-    public CubeParameters withForceAmplitude(double n) {
-        return new CubeParameters(sideM, nodeMassKg, stiffnessNPerM, dampingNsPerM, n, forceFrequencyHz, forceTiltDeg, dtS,
-                durationS);
-    }
-
     public CubeParameters withTimeStep(double s) {
         return new CubeParameters(sideM, nodeMassKg, stiffnessNPerM, dampingNsPerM, forceAmplitudeN,
                 forceFrequencyHz, forceTiltDeg, s, durationS);

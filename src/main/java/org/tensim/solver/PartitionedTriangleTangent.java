@@ -188,6 +188,14 @@ public final class PartitionedTriangleTangent {
         return k < 0 ? -1 : k + c;
     }
 
+    /**
+     * Component c of the sum of the two nodes of a corner, whose offsets are {@code d[j]} and
+     * {@code d[j + 1]} (a node that is not free counts 0).
+     */
+    private static double corner(double[] p, int[] d, int j, int c) {
+        return at(p, at(d[j], c)) + at(p, at(d[j + 1], c));
+    }
+
     /** The fused gather, element product and scatter of the entries [from, to). */
     private void product(int from, int to, double[] p, double[] out, double scale, double dampingScale) {
         final int[] d = dof;
@@ -195,27 +203,21 @@ public final class PartitionedTriangleTangent {
         final double[] f = grad;
         final double[] st = stress;
         for (int i = from; i < to; i++) {
-            final int o = 6 * i;
-            final int p0 = d[o];
-            final int q0 = d[o + 1];
-            final int p1 = d[o + 2];
-            final int q1 = d[o + 3];
-            final int p2 = d[o + 4];
-            final int q2 = d[o + 5];
+            final int o = 6 * i; // corner k's nodes at d[o + 2k], d[o + 2k + 1]
             final double r00 = r[4 * i];
             final double r01 = r[4 * i + 1];
             final double r10 = r[4 * i + 2];
             final double r11 = r[4 * i + 3];
             // Edge displacements a = y_1 - y_0, b = y_2 - y_0 (corners as means of their two nodes).
-            final double x0 = at(p, p0) + at(p, q0);
-            final double y0 = at(p, at(p0, 1)) + at(p, at(q0, 1));
-            final double z0 = at(p, at(p0, 2)) + at(p, at(q0, 2));
-            final double ax = 0.5 * (at(p, p1) + at(p, q1) - x0);
-            final double ay = 0.5 * (at(p, at(p1, 1)) + at(p, at(q1, 1)) - y0);
-            final double az = 0.5 * (at(p, at(p1, 2)) + at(p, at(q1, 2)) - z0);
-            final double bx = 0.5 * (at(p, p2) + at(p, q2) - x0);
-            final double by = 0.5 * (at(p, at(p2, 1)) + at(p, at(q2, 1)) - y0);
-            final double bz = 0.5 * (at(p, at(p2, 2)) + at(p, at(q2, 2)) - z0);
+            final double x0 = corner(p, d, o, 0);
+            final double y0 = corner(p, d, o, 1);
+            final double z0 = corner(p, d, o, 2);
+            final double ax = 0.5 * (corner(p, d, o + 2, 0) - x0);
+            final double ay = 0.5 * (corner(p, d, o + 2, 1) - y0);
+            final double az = 0.5 * (corner(p, d, o + 2, 2) - z0);
+            final double bx = 0.5 * (corner(p, d, o + 4, 0) - x0);
+            final double by = 0.5 * (corner(p, d, o + 4, 1) - y0);
+            final double bz = 0.5 * (corner(p, d, o + 4, 2) - z0);
             // dF = [a b] R: columns du, dw; F's columns u, w.
             final double dux = ax * r00 + bx * r10;
             final double duy = ay * r00 + by * r10;
@@ -243,21 +245,21 @@ public final class PartitionedTriangleTangent {
             final double s11 = st[3 * i + 2];
             final double half = 0.5 * (scale + dampingScale * damping[i]);
             // dP = dF S + F dS, one component at a time, and its edge forces dP R^T.
-            final double c0x = dux * s00 + dwx * s01 + ux * ds00 + wx * ds01;
-            final double c1x = dux * s01 + dwx * s11 + ux * ds01 + wx * ds11;
-            final double c0y = duy * s00 + dwy * s01 + uy * ds00 + wy * ds01;
-            final double c1y = duy * s01 + dwy * s11 + uy * ds01 + wy * ds11;
-            final double c0z = duz * s00 + dwz * s01 + uz * ds00 + wz * ds01;
-            final double c1z = duz * s01 + dwz * s11 + uz * ds01 + wz * ds11;
+            final double c0x = TriangleTangent.stressProduct(dux, dwx, ux, wx, s00, s01, ds00, ds01);
+            final double c1x = TriangleTangent.stressProduct(dux, dwx, ux, wx, s01, s11, ds01, ds11);
             final double gax = c0x * r00 + c1x * r01;
-            final double gay = c0y * r00 + c1y * r01;
-            final double gaz = c0z * r00 + c1z * r01;
             final double gbx = c0x * r10 + c1x * r11;
+            final double c0y = TriangleTangent.stressProduct(duy, dwy, uy, wy, s00, s01, ds00, ds01);
+            final double c1y = TriangleTangent.stressProduct(duy, dwy, uy, wy, s01, s11, ds01, ds11);
+            final double gay = c0y * r00 + c1y * r01;
             final double gby = c0y * r10 + c1y * r11;
+            final double c0z = TriangleTangent.stressProduct(duz, dwz, uz, wz, s00, s01, ds00, ds01);
+            final double c1z = TriangleTangent.stressProduct(duz, dwz, uz, wz, s01, s11, ds01, ds11);
+            final double gaz = c0z * r00 + c1z * r01;
             final double gbz = c0z * r10 + c1z * r11;
-            scatter(out, p0, q0, half * (-gax - gbx), half * (-gay - gby), half * (-gaz - gbz));
-            scatter(out, p1, q1, half * gax, half * gay, half * gaz);
-            scatter(out, p2, q2, half * gbx, half * gby, half * gbz);
+            scatter(out, d[o], d[o + 1], half * (-gax - gbx), half * (-gay - gby), half * (-gaz - gbz));
+            scatter(out, d[o + 2], d[o + 3], half * gax, half * gay, half * gaz);
+            scatter(out, d[o + 4], d[o + 5], half * gbx, half * gby, half * gbz);
         }
     }
 

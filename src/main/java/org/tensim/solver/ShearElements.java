@@ -24,38 +24,30 @@ import org.tensim.model.TransverseShear;
  */
 public final class ShearElements {
     /** Per element: 6 node ids. */
-    private final int[] node;
+    final int[] node;
     /** Per element: K row-major (9), J/m^4. */
-    private final double[] k;
+    final double[] k;
     /** Per element: g0 of the 3 edges, m^2. */
     private final double[] g0;
     /** Per element: Kelvin-Voigt damping time beta, s. */
-    private final double[] beta;
+    final double[] beta;
     private boolean damped;
     /**
      * Tangent: per element, e_k and S_k of each edge k at the linearisation, at [18 e + 6 k + d] and
      * [18 e + 6 k + 3 + d]: grad g_k is made of them ({@link #gradient}), and a product needs no more.
      */
-    private final double[] es;
+    final double[] es;
     /** Tangent: per element, rho (3; 0 when the geometric term is dropped). */
-    private final double[] rho;
+    final double[] rho;
     private final double[] dg = new double[3];
     private final double[] ev = new double[9];
     private final double[] sv = new double[9];
-    /** Product scratch: the element's six nodes' offsets, their z (18) and what they receive (18). */
-    private final int[] slot = new int[6];
-    private final double[] zs = new double[18];
-    private final double[] ys = new double[18];
+    /** The tangent's product, with its scratch. */
+    private final ShearProduct product = new ShearProduct();
 
     ShearElements(List<TransverseShear> shears, double[] x0) {
-        int n = shears.size();
-        node = new int[6 * n];
-        k = new double[9 * n];
-        g0 = new double[3 * n];
-        beta = new double[n];
-        es = new double[18 * n];
-        rho = new double[3 * n];
-        for (int e = 0; e < n; e++) {
+        this(shears.size());
+        for (int e = 0; e < shears.size(); e++) {
             TransverseShear ts = shears.get(e);
             beta[e] = ts.dampingS();
             damped |= beta[e] != 0;
@@ -73,6 +65,16 @@ public final class ShearElements {
             System.arraycopy(dg, 0, g0, 3 * e, 3);
         }
         linearise(x0, false);
+    }
+
+    /** n elements' arrays, all zero. */
+    private ShearElements(int n) {
+        node = new int[6 * n];
+        k = new double[9 * n];
+        g0 = new double[3 * n];
+        beta = new double[n];
+        es = new double[18 * n];
+        rho = new double[3 * n];
     }
 
     private ShearElements(ShearElements other, double[] px) {
@@ -103,14 +105,8 @@ public final class ShearElements {
     }
 
     private ShearElements(ShearElements other, int[] elements) {
-        int n = elements.length;
-        node = new int[6 * n];
-        k = new double[9 * n];
-        g0 = new double[3 * n];
-        beta = new double[n];
-        es = new double[18 * n];
-        rho = new double[3 * n];
-        for (int i = 0; i < n; i++) {
+        this(elements.length);
+        for (int i = 0; i < elements.length; i++) {
             System.arraycopy(other.node, 6 * elements[i], node, 6 * i, 6);
             System.arraycopy(other.g0, 3 * elements[i], g0, 3 * i, 3);
         }
@@ -169,21 +165,37 @@ public final class ShearElements {
 
     /** e_k and S_k of element e's three edges at x into ev, sv (3 per edge); g_k - g0_k into dg. */
     private void edges(int e, double[] x) {
+        edges(e, x, null);
+    }
+
+    /**
+     * The same, and when {@code v} is not null and the element is damped, {@code beta dg_k/dt} added to
+     * dg: {@code dg_k/dt = grad g_k . v} at velocities v (m/s), from the same e_k and S_k.
+     */
+    private void edges(int e, double[] x, double[] v) {
         final int o = 6 * e;
+        final boolean rate = v != null && beta[e] != 0;
         for (int c = 0; c < 3; c++) {
             final int p = 3 * node[o + c];
             final int q = 3 * node[o + (c + 1) % 3];
             final int p2 = 3 * node[o + 3 + c];
             final int q2 = 3 * node[o + 3 + (c + 1) % 3];
             double g = 0;
+            double dgdt = 0;
             for (int d = 0; d < 3; d++) {
                 final double ed = x[q + d] - x[p + d];
                 final double sd = x[p2 + d] + x[q2 + d] - x[p + d] - x[q + d];
                 ev[3 * c + d] = ed;
                 sv[3 * c + d] = sd;
                 g += ed * sd;
+                if (rate) {
+                    dgdt += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
+                }
             }
             dg[c] = g - g0[3 * e + c];
+            if (rate) {
+                dg[c] += beta[e] * dgdt;
+            }
         }
     }
 
@@ -199,10 +211,7 @@ public final class ShearElements {
      */
     public void forces(double[] x, double[] v, double[] f) {
         for (int e = 0; e < count(); e++) {
-            edges(e, x);
-            if (v != null && beta[e] != 0) {
-                addRate(e, v);
-            }
+            edges(e, x, v);
             final int o = 6 * e;
             for (int c = 0; c < 3; c++) {
                 final int r = 9 * e + 3 * c;
@@ -220,24 +229,6 @@ public final class ShearElements {
                     f[q2 + d] += m * ed;
                 }
             }
-        }
-    }
-
-    /** dg += beta dg/dt for element e at velocities v (after {@link #edges}). */
-    private void addRate(int e, double[] v) {
-        final int o = 6 * e;
-        for (int c = 0; c < 3; c++) {
-            final int p = 3 * node[o + c];
-            final int q = 3 * node[o + (c + 1) % 3];
-            final int p2 = 3 * node[o + 3 + c];
-            final int q2 = 3 * node[o + 3 + (c + 1) % 3];
-            double rate = 0;
-            for (int d = 0; d < 3; d++) {
-                final double ed = ev[3 * c + d];
-                final double sd = sv[3 * c + d];
-                rate += -(sd + ed) * v[p + d] + (sd - ed) * v[q + d] + ed * (v[p2 + d] + v[q2 + d]);
-            }
-            dg[c] += beta[e] * rate;
         }
     }
 
@@ -308,74 +299,7 @@ public final class ShearElements {
      * geometric term); offsets as in {@link #multiplyAdd(double[], double[], int[], double)}.
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
-        if (weight == 0 && dampingWeight == 0) {
-            return;
-        }
-        // Per element: its six nodes' offsets resolved once, z gathered once, and with
-        // A_c z = z_q - z_p and B_c z = z_p' + z_q' - z_p - z_q (p = c, q = c + 1):
-        //   grad g_c . z = S_c . A_c z + e_c . B_c z,
-        //   y += m_c grad g_c,  m_c = (weight + dampingWeight beta_e) (K dg)_c,
-        // plus weight rho_c H_c z; what the nodes receive is summed in ys and scattered once.
-        final int[] sl = slot;
-        final double[] zl = zs;
-        final double[] yl = ys;
-        for (int e = 0; e < count(); e++) {
-            final int o = 6 * e;
-            for (int a = 0; a < 6; a++) {
-                final int i = dof(node[o + a], offset);
-                sl[a] = i;
-                for (int d = 0; d < 3; d++) {
-                    zl[3 * a + d] = i < 0 ? 0 : z[i + d];
-                    yl[3 * a + d] = 0;
-                }
-            }
-            final int b = 18 * e;
-            for (int c = 0; c < 3; c++) {
-                final int p = 3 * c;
-                final int q = 3 * ((c + 1) % 3);
-                double sum = 0;
-                for (int d = 0; d < 3; d++) {
-                    final double az = zl[q + d] - zl[p + d];
-                    final double bz = zl[9 + p + d] + zl[9 + q + d] - zl[p + d] - zl[q + d];
-                    sum += es[b + 6 * c + 3 + d] * az + es[b + 6 * c + d] * bz;
-                }
-                dg[c] = sum;
-            }
-            final double w = weight + dampingWeight * beta[e];
-            for (int c = 0; c < 3; c++) {
-                final int r = 9 * e + 3 * c;
-                final double m = w * (k[r] * dg[0] + k[r + 1] * dg[1] + k[r + 2] * dg[2]);
-                final double wr = weight * rho[3 * e + c];
-                final int p = 3 * c;
-                final int q = 3 * ((c + 1) % 3);
-                for (int d = 0; d < 3; d++) {
-                    final double ed = es[b + 6 * c + d];
-                    final double sd = es[b + 6 * c + 3 + d];
-                    double fp = m * (-sd - ed);
-                    double fq = m * (sd - ed);
-                    double fe = m * ed;
-                    if (wr != 0) { // y += wr H_c z
-                        final double az = zl[q + d] - zl[p + d];
-                        final double bz = zl[9 + p + d] + zl[9 + q + d] - zl[p + d] - zl[q + d];
-                        fp -= wr * (bz + az);
-                        fq += wr * (bz - az);
-                        fe += wr * az;
-                    }
-                    yl[p + d] += fp;
-                    yl[q + d] += fq;
-                    yl[9 + p + d] += fe;
-                    yl[9 + q + d] += fe;
-                }
-            }
-            for (int a = 0; a < 6; a++) {
-                final int i = sl[a];
-                if (i >= 0) {
-                    y[i] += yl[3 * a];
-                    y[i + 1] += yl[3 * a + 1];
-                    y[i + 2] += yl[3 * a + 2];
-                }
-            }
-        }
+        product.multiplyAdd(this, z, y, offset, weight, dampingWeight);
     }
 
     /** diag += weight times the diagonal of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised (full layout). */
@@ -408,9 +332,5 @@ public final class ShearElements {
             }
         }
         return sum;
-    }
-
-    private static int dof(int n, int[] offset) {
-        return offset == null ? 3 * n : offset[n];
     }
 }

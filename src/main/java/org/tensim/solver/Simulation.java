@@ -250,6 +250,7 @@ public final class Simulation {
                 ModalBounds.undamped(state.criticalTimeStep()));
     }
 
+    /** Adds l, notified after every step, in the order added, on the thread that steps. */
     public void addListener(StepListener l) {
         synchronized (listeners) {
             listeners.add(l);
@@ -257,6 +258,7 @@ public final class Simulation {
         }
     }
 
+    /** Removes l: it is not notified after the next steps (nothing when it was not added). */
     public void removeListener(StepListener l) {
         synchronized (listeners) {
             listeners.remove(l);

@@ -35,12 +35,7 @@ public final class SpringKernels {
             final double fx = sc * dx;
             final double fy = sc * dy;
             final double fz = sc * dz;
-            f[a] += fx;
-            f[a + 1] += fy;
-            f[a + 2] += fz;
-            f[b] -= fx;
-            f[b + 1] -= fy;
-            f[b + 2] -= fz;
+            addPair(f, a, b, fx, fy, fz);
         }
     }
 
@@ -68,12 +63,34 @@ public final class SpringKernels {
             final double fx = mag * ux;
             final double fy = mag * uy;
             final double fz = mag * uz;
-            f[a] += fx;
-            f[a + 1] += fy;
-            f[a + 2] += fz;
-            f[b] -= fx;
-            f[b + 1] -= fy;
-            f[b + 2] -= fz;
+            addPair(f, a, b, fx, fy, fz);
         }
+    }
+
+    /** f_a += (fx, fy, fz), f_b -= (fx, fy, fz): a spring's equal and opposite forces at offsets a, b. */
+    private static void addPair(double[] f, int a, int b, double fx, double fy, double fz) {
+        f[a] += fx;
+        f[a + 1] += fy;
+        f[a + 2] += fz;
+        f[b] -= fx;
+        f[b + 1] -= fy;
+        f[b + 2] -= fz;
+    }
+
+    /**
+     * The unit vector from a to b (offsets of their x components in x) into {@code dir[o..o+2]}, zero
+     * when the two coincide (no direction); returns the distance |x_b - x_a| (m). The linearisations
+     * of the springs and links of the implicit solvers share it, so that they see the same bits.
+     */
+    public static double direction(double[] x, int a, int b, double[] dir, int o) {
+        final double dx = x[b] - x[a];
+        final double dy = x[b + 1] - x[a + 1];
+        final double dz = x[b + 2] - x[a + 2];
+        final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        final double inv = len > 0 ? 1 / len : 0;
+        dir[o] = dx * inv;
+        dir[o + 1] = dy * inv;
+        dir[o + 2] = dz * inv;
+        return len;
     }
 }

@@ -6,12 +6,10 @@ package org.tensim.solver;
  */
 public final class StepProfile {
     private final long[] totalNanos = new long[Stage.values().length];
-    private final long[] lastNanos = new long[Stage.values().length];
     private long steps;
 
     void record(Stage stage, long nanos) {
         totalNanos[stage.ordinal()] += nanos;
-        lastNanos[stage.ordinal()] = nanos;
     }
 
     void countStep() {
@@ -28,29 +26,14 @@ public final class StepProfile {
         return totalNanos[stage.ordinal()];
     }
 
-    /** Time in a stage during the last step, ns. */
-    public long lastNanos(Stage stage) {
-        return lastNanos[stage.ordinal()];
-    }
-
     /** Mean time per step in a stage, ms (0 before the first step). */
     public double meanMillis(Stage stage) {
         return steps == 0 ? 0 : totalNanos(stage) / 1e6 / steps;
     }
 
-    /** Mean time per step over all stages, ms. */
-    public double meanStepMillis() {
-        double ms = 0;
-        for (Stage st : Stage.values()) {
-            ms += meanMillis(st);
-        }
-        return ms;
-    }
-
     /** Clears all counters. */
     public void reset() {
         java.util.Arrays.fill(totalNanos, 0);
-        java.util.Arrays.fill(lastNanos, 0);
         steps = 0;
     }
 }

@@ -238,16 +238,21 @@ public final class TriangleTangent implements ExtraStiffness {
         final double s01 = stress[3 * e + 1];
         final double s11 = stress[3 * e + 2];
         for (int d = 0; d < 3; d++) {
-            double u = grad[o + d];
-            double w = grad[o + 3 + d];
-            double c0 = du[d] * s00 + dw[d] * s01 + u * ds00 + w * ds01;
-            double c1 = du[d] * s01 + dw[d] * s11 + u * ds01 + w * ds11;
-            double ga = c0 * r00 + c1 * r01;
-            double gb = c0 * r10 + c1 * r11;
-            g[3 + d] = ga;
-            g[6 + d] = gb;
-            g[d] = -ga - gb;
+            double c0 = stressProduct(du[d], dw[d], grad[o + d], grad[o + 3 + d], s00, s01, ds00, ds01);
+            double c1 = stressProduct(du[d], dw[d], grad[o + d], grad[o + 3 + d], s01, s11, ds01, ds11);
+            g[3 + d] = c0 * r00 + c1 * r01;
+            g[6 + d] = c0 * r10 + c1 * r11;
+            g[d] = -g[3 + d] - g[6 + d];
         }
+    }
+
+    /**
+     * One component of a column of {@code dP = dF S + F dS}: {@code du, dw} the component of dF's
+     * columns, {@code u, w} of F's, {@code (sa, sb)} the column of S and {@code (dsa, dsb)} of dS.
+     */
+    static double stressProduct(double du, double dw, double u, double w, double sa, double sb, double dsa,
+            double dsb) {
+        return du * sa + dw * sb + u * dsa + w * dsb;
     }
 
     @Override

@@ -39,11 +39,6 @@ public final class LocalEngine implements SweepEngine {
     }
 
     @Override
-    public int parallelism() {
-        return workers;
-    }
-
-    @Override
     public void run(RunSetup setup, List<String> names, List<Point> points, Sink sink) throws IOException,
             InterruptedException {
         ExecutorCompletionService<PointResult> done = new ExecutorCompletionService<>(pool);

@@ -46,14 +46,6 @@ public record RunSetup(String scene, String meshFile, String units, double thick
                 fixed, m);
     }
 
-    /** The same setup with more fixed values (they replace existing ones with the same key). */
-    public RunSetup withFixed(Map<String, Double> more) {
-        Map<String, Double> f = new LinkedHashMap<>(fixed);
-        f.putAll(more);
-        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, muscleLoad, integrator, dtS, seconds, f,
-                measures);
-    }
-
     /** One line describing the geometry, for logs and reports. */
     public String geometry() {
         if (!scene.equals("diaphragm")) {

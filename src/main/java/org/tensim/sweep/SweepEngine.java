@@ -18,9 +18,6 @@ public interface SweepEngine extends AutoCloseable {
     /** Engine name for reports, e.g. {@code local (2 workers)}. */
     String describe();
 
-    /** How many points run at once. */
-    int parallelism();
-
     /**
      * Runs the points and returns when all are done (or throws when the sink fails or the thread is
      * interrupted; results handed over before that are kept by the sink).

@@ -74,11 +74,6 @@ public final class SparkEngine implements SweepEngine {
     }
 
     @Override
-    public int parallelism() {
-        return slots;
-    }
-
-    @Override
     public void run(RunSetup setup, List<String> names, List<Point> points, Sink sink) throws IOException,
             InterruptedException {
         List<String> n = List.copyOf(names);

@@ -28,6 +28,11 @@ class ContactDynamicsTest {
         return Integrators.names();
     }
 
+    /** Every integrator but forward Euler, which amplifies every undamped oscillation. */
+    static List<String> integratorsStableUndamped() {
+        return Integrators.names().stream().filter(n -> !n.equals("euler")).toList();
+    }
+
     /** One free node of mass M at p, in contact (stiffness k, gap 0) with body sdf moved by motion. */
     private static Topology oneNode(Vec3 p, double k, SignedDistance sdf, RigidMotion motion) {
         Topology t = new Topology();
@@ -88,9 +93,8 @@ class ContactDynamicsTest {
      * ({@code |R| > 1} on the imaginary axis).
      */
     @ParameterizedTest
-    @MethodSource("allIntegrators")
+    @MethodSource("integratorsStableUndamped")
     void aSlidingNodeKeepsItsTangentialMomentum(String integrator) {
-        org.junit.jupiter.api.Assumptions.assumeFalse(integrator.equals("euler"), "forward Euler grows undamped");
         Topology t = oneNode(new Vec3(0, 0, 0), K, ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED);
         t.setGravity(new Vec3(0, -9.81, 0));
         Simulation sim = simulation(t, integrator);

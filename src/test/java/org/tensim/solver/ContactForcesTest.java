@@ -3,12 +3,15 @@ package org.tensim.solver;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tensim.testsupport.FiniteDifferences.maxAbs;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.RigidMotion;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.testsupport.AllocationCounter;
+import org.tensim.testsupport.FiniteDifferences;
 
 /**
  * The contact forces ({@link ContactForces}) as physics: minus the gradient of the penalty energy
@@ -34,14 +37,6 @@ class ContactForcesTest {
         return SystemState.compile(t);
     }
 
-    private static double maxAbs(double[] v) {
-        double m = 0;
-        for (double d : v) {
-            m = Math.max(m, Math.abs(d));
-        }
-        return m;
-    }
-
     @Test
     void forcesAreMinusTheEnergyGradientOnMovingPlaneAndSphere() {
         SystemState s = scene(new Random(7));
@@ -51,15 +46,9 @@ class ContactForcesTest {
         int active = s.contacts.activeCount(TIME, x);
         assertTrue(active > 10 && active < 70, "some pairs in contact, some not: " + active);
         double scale = maxAbs(f);
-        double h = 1e-7;
+        double[] g = FiniteDifferences.gradient(y -> s.contacts.energy(TIME, y), x, 1e-7);
         for (int k = 0; k < x.length; k++) {
-            double keep = x[k];
-            x[k] = keep + h;
-            double ep = s.contacts.energy(TIME, x);
-            x[k] = keep - h;
-            double em = s.contacts.energy(TIME, x);
-            x[k] = keep;
-            assertEquals(-(ep - em) / (2 * h), f[k], 1e-6 * scale, "component " + k);
+            assertEquals(-g[k], f[k], 1e-6 * scale, "component " + k);
         }
     }
 
@@ -84,22 +73,17 @@ class ContactForcesTest {
         s.contacts.multiplyAdd(z, kz, null, 1);
         // -df/dx z by central differences; exact for a plane up to rounding (no node crosses the surface).
         double eps = 1e-7;
-        double[] fp = new double[x.length];
-        double[] fm = new double[x.length];
-        double[] xp = x.clone();
-        double[] xm = x.clone();
-        for (int k = 0; k < x.length; k++) {
-            xp[k] += eps * z[k];
-            xm[k] -= eps * z[k];
-        }
-        s.contacts.forces(TIME, xp, fp);
-        s.contacts.forces(TIME, xm, fm);
+        double[] df = FiniteDifferences.directional((y, f) -> s.contacts.forces(TIME, y, f), x, z, eps);
         int active = s.contacts.activeCount(TIME, x);
         assertTrue(active > 5 && active < 25, "some nodes in contact, some not: " + active);
+        double[] xp = x.clone();
+        for (int k = 0; k < x.length; k++) {
+            xp[k] += eps * z[k];
+        }
         assertEquals(active, s.contacts.activeCount(TIME, xp), "no node crossed the surface");
         double scale = maxAbs(kz);
         for (int k = 0; k < x.length; k++) {
-            assertEquals(-(fp[k] - fm[k]) / (2 * eps), kz[k], 1e-6 * scale, "component " + k);
+            assertEquals(-df[k], kz[k], 1e-6 * scale, "component " + k);
         }
         // On a compact numbering that leaves node 0 out: the same rows, node 0's neither read nor written.
         int[] offset = new int[s.nodeCount];
@@ -164,20 +148,11 @@ class ContactForcesTest {
 
     @Test
     void theForcePassAndTangentAllocateNothing() {
-        var bean = java.lang.management.ManagementFactory.getThreadMXBean();
-        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
-                "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
-        long id = Thread.currentThread().getId();
         SystemState s = scene(new Random(3));
         ForceModel model = new ForceModel(s);
         double[] f = new double[s.x.length];
         double[] y = new double[s.x.length];
-        long bytes = 0;
-        for (int attempt = 0; attempt < 3; attempt++) {
-            long before = mx.getThreadAllocatedBytes(id);
+        long bytes = AllocationCounter.currentThread().bytesAllocatedBy(() -> {
             for (int i = 0; i < 2000; i++) {
                 double time = 1e-3 * i;
                 model.computeForces(time, s.x, s.v, f);
@@ -185,24 +160,13 @@ class ContactForcesTest {
                 s.contacts.multiplyAdd(f, y, null, 1e-6);
                 s.contacts.addDiagonal(y, 1e-6);
             }
-            bytes = mx.getThreadAllocatedBytes(id) - before;
-            if (bytes == 0) {
-                break;
-            }
-        }
+        }, 3);
         assertTrue(maxAbs(f) > 0, "contact forces were exerted");
         assertEquals(0, bytes, "bytes allocated by 2000 force passes with contacts");
     }
     /** Steps of rk2, implicit Euler and BDF2 with nodes on a rising floor allocate nothing (after warm-up). */
     @Test
     void stepsWithContactsAllocateNothing() {
-        var bean = java.lang.management.ManagementFactory.getThreadMXBean();
-        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
-                "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
-        long id = Thread.currentThread().getId();
         for (String name : new String[] {"rk2", "implicit-euler", "bdf2"}) {
             Topology t = new Topology();
             int floor = t.addContactBody(ContactShapes.body("floor", ContactShapes.plane(0, 1, 0, 0),
@@ -223,17 +187,11 @@ class ContactForcesTest {
             for (int i = 0; i < 300; i++) {
                 sim.step(h);
             }
-            long bytes = 0;
-            for (int attempt = 0; attempt < 3; attempt++) {
-                long before = mx.getThreadAllocatedBytes(id);
+            long bytes = AllocationCounter.currentThread().bytesAllocatedBy(() -> {
                 for (int i = 0; i < 300; i++) {
                     sim.step(h);
                 }
-                bytes = mx.getThreadAllocatedBytes(id) - before;
-                if (bytes == 0) {
-                    break;
-                }
-            }
+            }, 3);
             assertEquals(10, sim.state().contacts.activeCount(sim.time(), sim.state().x), name + ": all on the floor");
             assertEquals(0, bytes, name + ": bytes allocated by 300 steps with contacts");
         }

@@ -3,11 +3,15 @@ package org.tensim.solver;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tensim.testsupport.FiniteDifferences.maxAbs;
+import static org.tensim.testsupport.FiniteDifferences.perturbed;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.testsupport.FiniteDifferences;
+import org.tensim.testsupport.RandomMeshes;
 
 /**
  * The active fibre tension ({@link org.tensim.model.ActiveFibre}, {@link FibreTension}) as physics:
@@ -20,9 +24,9 @@ class FibreTensionTest {
     private static final double SIGMA = 20e3;
     private static final double T = 2.5e-3;
 
-    /** Fibres in random directions on the random triangles of {@link TriangleElementTest} (half with midpoint corners). */
+    /** Fibres in random directions on the random triangles of {@link RandomMeshes#triangles} (half with midpoint corners). */
     private static Topology randomFibres(Random rnd, double sigma) {
-        Topology t = TriangleElementTest.randomElements(rnd, 0.3);
+        Topology t = RandomMeshes.triangles(rnd, 0.3);
         for (org.tensim.model.TriangleElement te : t.triangles()) {
             int[] p = {te.p(0), te.p(1), te.p(2)};
             int[] q = {te.q(0), te.q(1), te.q(2)};
@@ -32,41 +36,19 @@ class FibreTensionTest {
         return t;
     }
 
-    private static double[] perturbed(SystemState s, Random rnd, double amount) {
-        double[] x = s.x.clone();
-        for (int k = 0; k < x.length; k++) {
-            x[k] += amount * rnd.nextGaussian();
-        }
-        return x;
-    }
-
-    private static double maxAbs(double[] v) {
-        double m = 0;
-        for (double d : v) {
-            m = Math.max(m, Math.abs(d));
-        }
-        return m;
-    }
-
     @Test
     void forcesAreMinusTheEnergyGradient() {
         Random rnd = new Random(3);
         SystemState s = SystemState.compile(randomFibres(rnd, SIGMA));
-        double[] x = perturbed(s, rnd, 0.2);
+        double[] x = perturbed(s.x, rnd, 0.2);
         double time = 0.5;
         double[] f = new double[x.length];
         s.fibres.forces(time, x, f);
         double scale = maxAbs(f);
         assertTrue(scale > 0, "the tensed fibres exert forces");
-        double h = 1e-6;
+        double[] g = FiniteDifferences.gradient(y -> s.fibres.energy(time, y), x, 1e-6);
         for (int k = 0; k < x.length; k++) {
-            double keep = x[k];
-            x[k] = keep + h;
-            double ep = s.fibres.energy(time, x);
-            x[k] = keep - h;
-            double em = s.fibres.energy(time, x);
-            x[k] = keep;
-            assertEquals(-(ep - em) / (2 * h), f[k], 1e-6 * scale, "component " + k);
+            assertEquals(-g[k], f[k], 1e-6 * scale, "component " + k);
         }
     }
 
@@ -74,7 +56,7 @@ class FibreTensionTest {
     void forcesAreInternalAndTheEnergyIgnoresRigidMotions() {
         Random rnd = new Random(5);
         SystemState s = SystemState.compile(randomFibres(rnd, SIGMA));
-        double[] x = perturbed(s, rnd, 0.3);
+        double[] x = perturbed(s.x, rnd, 0.3);
         double[] f = new double[x.length];
         s.fibres.forces(0, x, f);
         double scale = maxAbs(f);
@@ -126,7 +108,7 @@ class FibreTensionTest {
             t.addFibre(new int[] {0, 1, 2}, new int[] {0, 1, 2}, new Vec3(rnd.nextGaussian(), rnd.nextGaussian(),
                     rnd.nextGaussian()), T, time -> SIGMA);
             SystemState s = SystemState.compile(t);
-            double[] x = perturbed(s, rnd, 0.1);
+            double[] x = perturbed(s.x, rnd, 0.1);
             double[] f = new double[x.length];
             s.fibres.forces(0, x, f);
             double[] y = x.clone();
@@ -174,7 +156,7 @@ class FibreTensionTest {
     void tangentIsTheDerivativeOfTheForces() {
         Random rnd = new Random(13);
         SystemState s = SystemState.compile(randomFibres(rnd, SIGMA));
-        double[] x = perturbed(s, rnd, 0.1);
+        double[] x = perturbed(s.x, rnd, 0.1);
         double time = 0.25;
         int[] offset = new int[s.nodeCount];
         for (int i = 0; i < offset.length; i++) {
@@ -210,7 +192,7 @@ class FibreTensionTest {
         Random rnd = new Random(17);
         SystemState s = SystemState.compile(randomFibres(rnd, 0));
         double[] f = new double[s.x.length];
-        s.fibres.forces(1, perturbed(s, rnd, 0.2), f);
+        s.fibres.forces(1, perturbed(s.x, rnd, 0.2), f);
         assertEquals(0, maxAbs(f));
         Topology t = new Topology();
         t.addNode(0, 0, 0, 1);

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.Topology;
+import org.tensim.testsupport.RandomMeshes;
 
 /**
  * The transverse shear elements' Kelvin-Voigt damping ({@link org.tensim.model.TransverseShear#dampingS}):
@@ -15,12 +16,12 @@ import org.tensim.model.Topology;
  * dissipates and leaves rigid motions alone: {@link ShearElementsTest}.)
  */
 class ShearDampingTest {
-    private static final double KAPPA_G = 5.0 / 6 * 40e3 / (2 * 1.45);
-    private static final double T = 2.5e-3;
+    private static final double KAPPA_G = RandomMeshes.SHEAR_KAPPA_G;
+    private static final double T = RandomMeshes.SHEAR_T;
     private static final double BETA = 1.2e-4;
 
     private static SystemState randomElements(Random rnd) {
-        return SystemState.compile(ShearElementsTest.randomElements(rnd, BETA));
+        return SystemState.compile(RandomMeshes.shears(rnd, BETA));
     }
 
     private static double[] gaussian(Random rnd, int n, double scale) {

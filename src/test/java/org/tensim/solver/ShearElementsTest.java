@@ -3,12 +3,17 @@ package org.tensim.solver;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tensim.testsupport.FiniteDifferences.maxAbs;
+import static org.tensim.testsupport.FiniteDifferences.perturbed;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tensim.model.Topology;
 import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
+import org.tensim.testsupport.AllocationCounter;
+import org.tensim.testsupport.FiniteDifferences;
+import org.tensim.testsupport.RandomMeshes;
 
 /**
  * The transverse shear element ({@link org.tensim.model.TransverseShear}, {@link ShearElements}) as
@@ -17,108 +22,48 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * nothing (no shear locking) while a fold with upright columns does.
  */
 class ShearElementsTest {
-    private static final double KAPPA_G = 5.0 / 6 * 40e3 / (2 * 1.45);
-    private static final double T = 2.5e-3;
-
-    /** Random elements among a few nodes (upper 0..5, lower 6..11), perturbed. */
-    private static Topology randomElements(Random rnd) {
-        return randomElements(rnd, 0);
-    }
-
-    /** The same, each element with a damping time drawn from [beta/2, 3 beta/2) (s; none for 0). */
-    static Topology randomElements(Random rnd, double beta) {
-        Topology t = new Topology();
-        for (int i = 0; i < 6; i++) {
-            t.addNode(0.01 * rnd.nextDouble(), 0.01 * rnd.nextDouble(), 0, 1);
-        }
-        for (int i = 0; i < 6; i++) {
-            var u = t.node(i).position();
-            t.addNode(u.x() + 1e-3 * rnd.nextGaussian(), u.y() + 1e-3 * rnd.nextGaussian(), -T, 1);
-        }
-        for (int e = 0; e < 8; e++) {
-            int i = rnd.nextInt(6);
-            int j = (i + 1 + rnd.nextInt(5)) % 6;
-            int k = j;
-            while (k == i || k == j) {
-                k = rnd.nextInt(6);
-            }
-            t.addShear(new int[] {i, j, k}, new int[] {6 + i, 6 + j, 6 + k}, KAPPA_G * (0.5 + rnd.nextDouble()), T,
-                    beta == 0 ? 0 : beta * (0.5 + rnd.nextDouble()));
-        }
-        return t;
-    }
-
-    private static double[] perturbed(SystemState s, Random rnd, double amplitude) {
-        double[] x = s.x.clone();
-        for (int k = 0; k < x.length; k++) {
-            x[k] += amplitude * rnd.nextGaussian();
-        }
-        return x;
-    }
-
-    private static double maxAbs(double[] a) {
-        double m = 0;
-        for (double v : a) {
-            m = Math.max(m, Math.abs(v));
-        }
-        return m;
-    }
+    private static final double KAPPA_G = RandomMeshes.SHEAR_KAPPA_G;
+    private static final double T = RandomMeshes.SHEAR_T;
 
     @Test
     void forcesAreMinusTheEnergyGradient() {
         Random rnd = new Random(3);
-        SystemState s = SystemState.compile(randomElements(rnd));
-        double[] x = perturbed(s, rnd, 1e-3);
+        SystemState s = SystemState.compile(RandomMeshes.shears(rnd, 0));
+        double[] x = perturbed(s.x, rnd, 1e-3);
         double[] f = new double[x.length];
         s.shears.forces(x, f);
         double scale = maxAbs(f);
         assertTrue(scale > 0, "the deformed elements exert forces");
-        double h = 1e-8;
+        double[] g = FiniteDifferences.gradient(s.shears::energy, x, 1e-8);
         for (int k = 0; k < x.length; k++) {
-            double keep = x[k];
-            x[k] = keep + h;
-            double ep = s.shears.energy(x);
-            x[k] = keep - h;
-            double em = s.shears.energy(x);
-            x[k] = keep;
-            assertEquals(-(ep - em) / (2 * h), f[k], 1e-6 * scale, "component " + k);
+            assertEquals(-g[k], f[k], 1e-6 * scale, "component " + k);
         }
     }
 
     @Test
     void tangentIsTheDerivativeOfTheForcesAndItsFirstTermIsPositive() {
         Random rnd = new Random(5);
-        SystemState s = SystemState.compile(randomElements(rnd));
-        double[] x = perturbed(s, rnd, 1e-3);
-        double[] z = perturbed(s, rnd, 1);
+        SystemState s = SystemState.compile(RandomMeshes.shears(rnd, 0));
+        double[] x = perturbed(s.x, rnd, 1e-3);
+        double[] z = perturbed(s.x, rnd, 1);
         for (int k = 0; k < z.length; k++) {
             z[k] -= s.x[k];
         }
         s.shears.linearise(x, true);
         double[] kz = new double[x.length];
         s.shears.multiplyAdd(z, kz, null, 1);
-        double h = 1e-7;
-        double[] xp = x.clone();
-        double[] xm = x.clone();
-        for (int k = 0; k < x.length; k++) {
-            xp[k] += h * z[k];
-            xm[k] -= h * z[k];
-        }
-        double[] fp = new double[x.length];
-        double[] fm = new double[x.length];
-        s.shears.forces(xp, fp);
-        s.shears.forces(xm, fm);
+        double[] df = FiniteDifferences.directional(s.shears::forces, x, z, 1e-7);
         double scale = maxAbs(kz);
         assertTrue(scale > 0);
         for (int k = 0; k < x.length; k++) {
-            assertEquals(-(fp[k] - fm[k]) / (2 * h), kz[k], 1e-5 * scale, "component " + k);
+            assertEquals(-df[k], kz[k], 1e-5 * scale, "component " + k);
         }
         // Without the geometric term: z . K z >= 0 for any z, and the diagonal matches e_k . K e_k.
         s.shears.linearise(x, false);
         double[] diag = new double[x.length];
         s.shears.addDiagonal(diag, 1);
         for (int trial = 0; trial < 20; trial++) {
-            double[] w = perturbed(s, rnd, 1);
+            double[] w = perturbed(s.x, rnd, 1);
             double[] kw = new double[x.length];
             s.shears.multiplyAdd(w, kw, null, 1);
             double q = 0;
@@ -141,8 +86,8 @@ class ShearElementsTest {
         // The implicit solvers apply the tangent on the free nodes only (compact offsets, -1 for the
         // others): the same as the full product with z = 0 on the left-out nodes, read on the others.
         Random rnd = new Random(9);
-        SystemState s = SystemState.compile(randomElements(rnd));
-        double[] x = perturbed(s, rnd, 1e-3);
+        SystemState s = SystemState.compile(RandomMeshes.shears(rnd, 0));
+        double[] x = perturbed(s.x, rnd, 1e-3);
         s.shears.linearise(x, true);
         int n = s.nodeCount;
         int[] off = new int[n];
@@ -174,11 +119,11 @@ class ShearElementsTest {
     @Test
     void energyIgnoresRigidMotionsAndTheRestStateIsForceFree() {
         Random rnd = new Random(9);
-        SystemState s = SystemState.compile(randomElements(rnd));
+        SystemState s = SystemState.compile(RandomMeshes.shears(rnd, 0));
         double[] f = new double[s.x.length];
         s.shears.forces(s.x, f);
         assertEquals(0, maxAbs(f), 1e-15, "at rest, N");
-        double[] x = perturbed(s, rnd, 1e-3);
+        double[] x = perturbed(s.x, rnd, 1e-3);
         double e = s.shears.energy(x);
         assertTrue(e > 0);
         double c = Math.cos(1.1);
@@ -295,13 +240,6 @@ class ShearElementsTest {
      */
     @Test
     void stepsWithShearElementsAllocateNothing() {
-        java.lang.management.ThreadMXBean bean = java.lang.management.ManagementFactory.getThreadMXBean();
-        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
-                "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
-        long id = Thread.currentThread().getId();
         for (Integrator in : new Integrator[] {new MidpointRK2(), new PrefactoredBdf2(), new ImplicitEuler()}) {
             var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
             var s = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(3, 0.03), T);
@@ -323,17 +261,11 @@ class ShearElementsTest {
             for (int i = 0; i < 3000; i++) {
                 sim.step(h);
             }
-            long bytes = 0;
-            for (int attempt = 0; attempt < 2; attempt++) {
-                long before = mx.getThreadAllocatedBytes(id);
+            long bytes = AllocationCounter.currentThread().bytesAllocatedBy(() -> {
                 for (int i = 0; i < 300; i++) {
                     sim.step(h);
                 }
-                bytes = mx.getThreadAllocatedBytes(id) - before;
-                if (bytes == 0) {
-                    break;
-                }
-            }
+            }, 2);
             assertEquals(0, bytes, in.name() + ": bytes allocated by 300 steps");
         }
     }
@@ -348,7 +280,7 @@ class ShearElementsTest {
         Simulation serial = new Simulation(SystemState.compile(t));
         Simulation parallel = new Simulation(SystemState.compile(t));
         Random rnd = new Random(13);
-        double[] x = perturbed(serial.state(), rnd, 2e-4);
+        double[] x = perturbed(serial.state().x, rnd, 2e-4);
         double[] v = new double[x.length];
         double[] fs = new double[x.length];
         double[] fp = new double[x.length];
@@ -381,7 +313,7 @@ class ShearElementsTest {
     @Test
     void dampingDissipatesAndIgnoresRigidMotions() {
         Random rnd = new Random(17);
-        Topology t = randomElements(rnd);
+        Topology t = RandomMeshes.shears(rnd, 0);
         Topology damped = new Topology();
         for (var n : t.nodes()) {
             damped.addNode(n.position(), 1);
@@ -393,7 +325,7 @@ class ShearElementsTest {
         }
         SystemState s = SystemState.compile(damped);
         assertTrue(s.velocityDependentForces(), "damped shear elements make the forces depend on v");
-        double[] x = perturbed(s, rnd, 1e-3);
+        double[] x = perturbed(s.x, rnd, 1e-3);
         double[] v = new double[x.length];
         for (int k = 0; k < v.length; k++) {
             v[k] = rnd.nextGaussian();

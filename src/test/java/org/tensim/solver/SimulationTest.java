@@ -76,6 +76,24 @@ class SimulationTest {
     }
 
     @Test
+    void aRemovedListenerIsNoLongerNotifiedAndTheOthersStay() {
+        Topology t = new Topology();
+        t.addNode(0, 0, 0, 1);
+        Simulation sim = Simulation.of(t);
+        List<String> calls = new ArrayList<>();
+        StepListener a = s -> calls.add("a");
+        StepListener b = s -> calls.add("b");
+        sim.addListener(a);
+        sim.addListener(b);
+        sim.step(0.1);
+        sim.removeListener(a);
+        sim.step(0.1);
+        sim.removeListener(a); // removing twice changes nothing
+        sim.step(0.1);
+        assertEquals(List.of("a", "b", "b", "b"), calls);
+    }
+
+    @Test
     void drivenNodesFollowTheirMotionAndPullTheirNeighbours() {
         Topology t = new Topology();
         Node d = t.addNode(0, 0, 0, 1).drive((time, rest, out, o) -> {

@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.tensim.model.Topology;
+import org.tensim.testsupport.FiniteDifferences;
+import org.tensim.testsupport.RandomMeshes;
 
 /**
  * The St Venant-Kirchhoff membrane triangle ({@link org.tensim.model.TriangleElement},
@@ -18,61 +20,30 @@ import org.tensim.model.Topology;
  * small-strain stiffness is the linear constant-strain triangle's.
  */
 class TriangleElementTest {
-    private static final double E = 30e3;
-    private static final double T = 2e-3;
-
-    /** Random triangles among a few nodes; half of them with midpoint corners. */
-    static Topology randomElements(Random rnd, double nu) {
-        Topology t = new Topology();
-        int n = 9;
-        for (int i = 0; i < n; i++) {
-            t.addNode(rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble(), 1);
-        }
-        for (int e = 0; e < 6; e++) {
-            int[] p = new int[3];
-            int[] q = new int[3];
-            for (int k = 0; k < 3; k++) {
-                p[k] = 3 * k + rnd.nextInt(3);
-                q[k] = e % 2 == 0 ? p[k] : 3 * k + rnd.nextInt(3);
-            }
-            t.addTriangle(p, q, T * (0.5 + rnd.nextDouble()), E * (0.5 + rnd.nextDouble()), nu, 0);
-        }
-        return t;
-    }
+    private static final double E = RandomMeshes.TRIANGLE_E;
+    private static final double T = RandomMeshes.TRIANGLE_T;
 
     @ParameterizedTest
     @ValueSource(doubles = {-0.3, 0, 1.0 / 3, 0.45, 0.49})
     void forcesAreMinusTheEnergyGradient(double nu) {
         Random rnd = new Random(7);
-        SystemState s = SystemState.compile(randomElements(rnd, nu));
+        SystemState s = SystemState.compile(RandomMeshes.triangles(rnd, nu));
         ForceModel fm = new ForceModel(s);
-        double[] x = s.x.clone();
-        for (int k = 0; k < x.length; k++) {
-            x[k] += 0.2 * rnd.nextGaussian();
-        }
+        double[] x = FiniteDifferences.perturbed(s.x, rnd, 0.2);
         double[] f = new double[x.length];
         fm.triangles(x, f);
-        double h = 1e-6;
-        double scale = 0;
-        for (double v : f) {
-            scale = Math.max(scale, Math.abs(v));
-        }
+        double scale = FiniteDifferences.maxAbs(f);
         assertTrue(scale > 0, "the deformed elements exert forces");
+        double[] g = FiniteDifferences.gradient(fm::triangleEnergy, x, 1e-6);
         for (int k = 0; k < x.length; k++) {
-            double keep = x[k];
-            x[k] = keep + h;
-            double ep = fm.triangleEnergy(x);
-            x[k] = keep - h;
-            double em = fm.triangleEnergy(x);
-            x[k] = keep;
-            assertEquals(-(ep - em) / (2 * h), f[k], 1e-6 * scale, "component " + k);
+            assertEquals(-g[k], f[k], 1e-6 * scale, "component " + k);
         }
     }
 
     @Test
     void tangentIsTheDerivativeOfTheForces() {
         Random rnd = new Random(11);
-        SystemState s = SystemState.compile(randomElements(rnd, 0.3));
+        SystemState s = SystemState.compile(RandomMeshes.triangles(rnd, 0.3));
         ForceModel fm = new ForceModel(s);
         double[] x = s.x.clone();
         for (int k = 0; k < x.length; k++) {
@@ -86,23 +57,10 @@ class TriangleElementTest {
         }
         double[] kd = new double[x.length];
         tangent.multiplyAdd(dir, kd, null);
-        double h = 1e-6;
-        double[] xp = x.clone();
-        double[] xm = x.clone();
+        double[] df = FiniteDifferences.directional(fm::triangles, x, dir, 1e-6);
+        double scale = FiniteDifferences.maxAbs(kd);
         for (int k = 0; k < x.length; k++) {
-            xp[k] += h * dir[k];
-            xm[k] -= h * dir[k];
-        }
-        double[] fp = new double[x.length];
-        double[] fmn = new double[x.length];
-        fm.triangles(xp, fp);
-        fm.triangles(xm, fmn);
-        double scale = 0;
-        for (double v : kd) {
-            scale = Math.max(scale, Math.abs(v));
-        }
-        for (int k = 0; k < x.length; k++) {
-            assertEquals(-(fp[k] - fmn[k]) / (2 * h), kd[k], 1e-6 * scale, "component " + k);
+            assertEquals(-df[k], kd[k], 1e-6 * scale, "component " + k);
         }
         // The clamped tangent is positive semi-definite even where elements are compressed.
         for (int k = 0; k < x.length; k++) {
@@ -127,7 +85,7 @@ class TriangleElementTest {
     @Test
     void dampingDissipatesAndIgnoresRigidMotions() {
         Random rnd = new Random(21);
-        Topology t = randomElements(rnd, 0.4);
+        Topology t = RandomMeshes.triangles(rnd, 0.4);
         Topology damped = new Topology();
         for (var n : t.nodes()) {
             damped.addNode(n.position(), n.mass());
@@ -173,7 +131,7 @@ class TriangleElementTest {
     @Test
     void energyIgnoresRigidMotionsAndTheRestStateIsForceFree() {
         Random rnd = new Random(3);
-        SystemState s = SystemState.compile(randomElements(rnd, 0.45));
+        SystemState s = SystemState.compile(RandomMeshes.triangles(rnd, 0.45));
         ForceModel fm = new ForceModel(s);
         double[] f = new double[s.x.length];
         fm.triangles(s.x0, f);

@@ -14,6 +14,7 @@ import org.tensim.solver.parallel.ParallelSpringPass;
 import org.tensim.solver.parallel.Parallelism;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 import org.tensim.solver.stability.CriticalTimeStep;
+import org.tensim.testsupport.AllocationCounter;
 
 /**
  * Membrane triangles in the solvers: the critical step counts them (against a dense eigenvalue
@@ -137,13 +138,6 @@ class TriangleSolversTest {
     /** Steps with triangles allocate nothing once warm (explicit RK2, BDF2 with its Jacobian, implicit Euler). */
     @Test
     void stepsWithTrianglesAllocateNothing() {
-        java.lang.management.ThreadMXBean bean = java.lang.management.ManagementFactory.getThreadMXBean();
-        org.junit.jupiter.api.Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean,
-                "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        org.junit.jupiter.api.Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
-        long id = Thread.currentThread().getId();
         for (Integrator in : new Integrator[] {new MidpointRK2(), new PrefactoredBdf2(), new ImplicitEuler()}) {
             Topology t = sheet(5, 0.45, 0.01);
             t.setViscousDamping(1e-2); // RK2 needs some damping to be stable at any step
@@ -152,17 +146,11 @@ class TriangleSolversTest {
             for (int i = 0; i < 3000; i++) {
                 sim.step(h);
             }
-            long bytes = 0;
-            for (int attempt = 0; attempt < 2; attempt++) {
-                long before = mx.getThreadAllocatedBytes(id);
+            long bytes = AllocationCounter.currentThread().bytesAllocatedBy(() -> {
                 for (int i = 0; i < 300; i++) {
                     sim.step(h);
                 }
-                bytes = mx.getThreadAllocatedBytes(id) - before;
-                if (bytes == 0) {
-                    break;
-                }
-            }
+            }, 2);
             assertEquals(0, bytes, in.name() + ": bytes allocated by 300 steps");
         }
     }

@@ -31,16 +31,6 @@ public record ShellMaterial(double youngPa, double poisson, double thicknessM, d
         return youngPa * thicknessM;
     }
 
-    /** Mass per unit area {@code rho t}, kg/m^2. */
-    public double surfaceDensityKgPerM2() {
-        return densityKgPerM3 * thicknessM;
-    }
-
-    /** The same material with another Young's modulus, Pa. */
-    public ShellMaterial withYoung(double pa) {
-        return new ShellMaterial(pa, poisson, thicknessM, densityKgPerM3);
-    }
-
     /** The same material with another Poisson's ratio. */
     public ShellMaterial withPoisson(double nu) {
         return new ShellMaterial(youngPa, nu, thicknessM, densityKgPerM3);

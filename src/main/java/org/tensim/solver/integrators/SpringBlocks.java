@@ -1,5 +1,6 @@
 package org.tensim.solver.integrators;
 
+import org.tensim.solver.SpringKernels;
 import org.tensim.solver.SystemState;
 
 /**
@@ -36,20 +37,13 @@ final class SpringBlocks {
         for (int i = 0; i < sa.length; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
-            final double dx = px[b] - px[a];
-            final double dy = px[b + 1] - px[a + 1];
-            final double dz = px[b + 2] - px[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            final double inv = len > 0 ? 1 / len : 0;
+            final double len = SpringKernels.direction(px, a, b, dir, 3 * i);
             final double g = len > 0 ? Math.max(0, 1 - rl[i] / len) : 0;
-            final double ux = dx * inv;
-            final double uy = dy * inv;
-            final double uz = dz * inv;
+            final double ux = dir[3 * i];
+            final double uy = dir[3 * i + 1];
+            final double uz = dir[3 * i + 2];
             final double alpha = h2 * kk[i] * (1 - g) + h * cc[i];
             final double beta = h2 * kk[i] * g;
-            dir[3 * i] = ux;
-            dir[3 * i + 1] = uy;
-            dir[3 * i + 2] = uz;
             blockA[2 * i] = alpha;
             blockA[2 * i + 1] = beta;
             blockS[2 * i] = kk[i] * (1 - g);

@@ -1,5 +1,6 @@
 package org.tensim.solver.links;
 
+import org.tensim.solver.SpringKernels;
 import org.tensim.solver.SystemState;
 
 /**
@@ -174,14 +175,8 @@ public final class LinkTangent {
         for (int i = 0; i < count; i++) {
             final int a = 3 * nodeA[i];
             final int b = 3 * nodeB[i];
-            final double dx = x[b] - x[a];
-            final double dy = x[b + 1] - x[a + 1];
-            final double dz = x[b + 2] - x[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            final double inv = len > 0 ? 1 / len : 0; // coincident ends: no direction, left to stage 2
-            dir[3 * i] = dx * inv;
-            dir[3 * i + 1] = dy * inv;
-            dir[3 * i + 2] = dz * inv;
+            // Coincident ends: no direction (zero), left to stage 2.
+            final double len = SpringKernels.direction(x, a, b, dir, 3 * i);
             target[i] = len > 0 ? (length[i] - len) / beta : 0;
         }
     }

@@ -122,11 +122,6 @@ public final class ParallelTrianglePass implements TriangleForcePass {
         };
     }
 
-    /** Triangles on the seam (added by the calling thread after the slabs). */
-    public int seamTriangles() {
-        return seam.source.length;
-    }
-
     /** The slabs also add the transverse shear elements (those on the seam serially, as the triangles). */
     @Override
     public boolean addsShearForces() {

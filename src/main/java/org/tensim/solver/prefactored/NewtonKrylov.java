@@ -36,7 +36,6 @@ final class NewtonKrylov {
     private final double[] dv;
     private final double[] work;
     private final double[] scratch = new double[6];
-    int lastKrylovIterations;
     double lastRelativeResidual;
     long products;
     /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
@@ -78,7 +77,6 @@ final class NewtonKrylov {
         System.arraycopy(s.v, 0, vIt, 0, n3);
         s.applyMotions(t1, xIt, vIt, scratch);
         scatter(guess, vIt);
-        lastKrylovIterations = 0;
         for (int it = 0; it < newtonIterations; it++) {
             positions(beta);
             long t0 = System.nanoTime();
@@ -186,7 +184,6 @@ final class NewtonKrylov {
                 p[k] = z[k] + b * p[k];
             }
         }
-        lastKrylovIterations += it;
         lastRelativeResidual = relative;
     }
 

@@ -58,13 +58,11 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public static final int CONTACT_NEWTON_ITERATIONS = 3;
     /** Cap on CG iterations per Newton iteration where stiff contact acts (see {@link #CONTACT_NEWTON_ITERATIONS}). */
     public static final int CONTACT_KRYLOV_ITERATIONS = 20;
-    /** Default relative residual at which CG stops. */
-    public static final double DEFAULT_KRYLOV_TOLERANCE = 1e-3;
+    /** Relative residual (dimensionless) at which CG stops. */
+    public static final double KRYLOV_TOLERANCE = 1e-3;
 
     private int newtonIterations = DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
-    private double krylovTolerance = DEFAULT_KRYLOV_TOLERANCE;
-    private boolean secondOrder = true;
     private Executor executor;
 
     private SystemState s;
@@ -85,12 +83,12 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
 
     @Override
     public String name() {
-        return secondOrder ? NAME : "backward-euler";
+        return NAME;
     }
 
     @Override
     public int order() {
-        return secondOrder ? 2 : 1;
+        return 2;
     }
 
     /** At most: one residual pass per Newton iteration plus one pass per CG iteration. */
@@ -128,18 +126,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     /** Cap on CG iterations per Newton iteration (>= 1). */
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
-        return this;
-    }
-
-    /** Relative residual (dimensionless, > 0) at which CG stops. */
-    public PrefactoredBdf2 setKrylovTolerance(double r) {
-        krylovTolerance = Check.positive("BDF2 CG tolerance", "(relative residual)", r);
-        return this;
-    }
-
-    /** Backward Euler instead of BDF2 (order 1, same solver): separates the step's damping from the rest. */
-    public PrefactoredBdf2 firstOrder() {
-        secondOrder = false;
         return this;
     }
 
@@ -189,11 +175,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         return matrix == null ? 0 : matrix.factorNonZeros();
     }
 
-    /** CG iterations of the last step, all Newton iterations together. */
-    public int lastKrylovIterations() {
-        return newton == null ? 0 : newton.lastKrylovIterations;
-    }
-
     /**
      * Relative residual sqrt(r^T P^-1 r / r0^T P^-1 r0) of the last CG solve of the last step, as
      * last measured (before its final iteration when the iteration cap stopped it).
@@ -227,11 +208,11 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         if (!continuous) {
             history = 0;
         }
-        boolean bdf2 = secondOrder && history >= 1;
+        boolean bdf2 = history >= 1;
         double beta = bdf2 ? 2 * h / 3 : h;
         // The factor is that of BDF2's weight even for a start-up backward Euler step, for which it is a
         // preconditioner like any other: one factor per step size, no refactorisation after the first step.
-        PrefactoredMatrix.Factor factor = matrix.factorFor(secondOrder ? 2 * h / 3 : h);
+        PrefactoredMatrix.Factor factor = matrix.factorFor(2 * h / 3);
 
         final int[] nodes = matrix.freeNodes;
         final double[] x = st.x;
@@ -266,7 +247,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
 
         steps++;
-        newton.solve(model, factor.cholesky, t + h, beta, newtonIterations, krylovIterations, krylovTolerance);
+        newton.solve(model, factor.cholesky, t + h, beta, newtonIterations, krylovIterations, KRYLOV_TOLERANCE);
 
         final double[] xn = newton.xIt;
         final double[] vn = newton.vIt;

@@ -2,6 +2,7 @@ package org.tensim.solver.prefactored;
 
 import org.tensim.solver.NodeLoops;
 import org.tensim.solver.PartitionedTriangleTangent;
+import org.tensim.solver.SpringKernels;
 import org.tensim.solver.SystemState;
 
 /**
@@ -105,15 +106,8 @@ final class SpringJacobian {
         for (int i = from; i < to; i++) {
             final int a = 3 * sa[i];
             final int b = 3 * sb[i];
-            final double dx = px[b] - px[a];
-            final double dy = px[b + 1] - px[a + 1];
-            final double dz = px[b + 2] - px[a + 2];
-            final double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            final double inv = len > 0 ? 1 / len : 0;
+            final double len = SpringKernels.direction(px, a, b, dir, 3 * i);
             final double g = len > 0 ? Math.max(0, 1 - rl[i] / len) : 0;
-            dir[3 * i] = dx * inv;
-            dir[3 * i + 1] = dy * inv;
-            dir[3 * i + 2] = dz * inv;
             coef[2 * i] = b2 * kk[i] * (1 - g) + beta * cc[i];
             coef[2 * i + 1] = b2 * kk[i] * g;
         }

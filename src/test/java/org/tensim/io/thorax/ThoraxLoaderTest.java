@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.ProjectFolder;
+import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.thorax.ThoraxPart.Group;
 import org.tensim.io.thorax.ThoraxPart.Side;
 
@@ -26,7 +27,8 @@ class ThoraxLoaderTest {
     Path tmp;
 
     private static Path shared() {
-        Assumptions.assumeTrue(Files.isRegularFile(SHARED.resolve("parts.json")), SHARED + " not found");
+        Assumptions.assumeTrue(Files.isRegularFile(SHARED.resolve("parts.json")),
+                SHARED.resolve("parts.json").toAbsolutePath() + " not found");
         return SHARED;
     }
 
@@ -145,6 +147,7 @@ class ThoraxLoaderTest {
         Thorax t = ThoraxLoader.load(tmp);
         double[] b = t.rib(Side.LEFT, 3).orElseThrow().mesh().bounds();
         assertEquals(0.010, b[3] - b[0], 1e-12, "10 mm tetrahedron, m");
+        assertEquals(MeshUnits.M, t.fileUnits(), "the units declared in parts.json");
     }
 
     private static Set<Integer> numbers(int from, int to) {

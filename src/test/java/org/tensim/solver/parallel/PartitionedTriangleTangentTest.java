@@ -3,6 +3,7 @@ package org.tensim.solver.parallel;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tensim.testsupport.FiniteDifferences.maxAbs;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
@@ -12,6 +13,7 @@ import org.tensim.solver.NodeLoops;
 import org.tensim.solver.PartitionedTriangleTangent;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.TriangleTangent;
+import org.tensim.testsupport.FiniteDifferences;
 
 /**
  * {@link PartitionedTriangleTangent}, the fused and slab-parallel form of the triangles' clamped
@@ -81,14 +83,6 @@ class PartitionedTriangleTangentTest {
         return x;
     }
 
-    private static double maxAbs(double[] v) {
-        double m = 0;
-        for (double d : v) {
-            m = Math.max(m, Math.abs(d));
-        }
-        return m;
-    }
-
     @Test
     void productIsTheGeneralTangentsToRoundOff() {
         Random rnd = new Random(5);
@@ -136,20 +130,10 @@ class PartitionedTriangleTangentTest {
         double[] kd = new double[x.length];
         k.multiplyAdd(dir, kd, 1, 0, NodeLoops.SERIAL);
         ForceModel fm = new ForceModel(s);
-        double h = 1e-7;
-        double[] xp = x.clone();
-        double[] xm = x.clone();
-        for (int i = 0; i < x.length; i++) {
-            xp[i] += h * dir[i];
-            xm[i] -= h * dir[i];
-        }
-        double[] fp = new double[x.length];
-        double[] fmn = new double[x.length];
-        fm.triangles(xp, fp);
-        fm.triangles(xm, fmn);
+        double[] df = FiniteDifferences.directional(fm::triangles, x, dir, 1e-7);
         double scale = maxAbs(kd);
         for (int i = 0; i < x.length; i++) {
-            assertEquals(-(fp[i] - fmn[i]) / (2 * h), kd[i], 1e-6 * scale, "component " + i);
+            assertEquals(-df[i], kd[i], 1e-6 * scale, "component " + i);
         }
     }
 

@@ -2,8 +2,6 @@ package org.tensim.solver.prefactored;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.lang.management.ManagementFactory;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.tensim.scene.LatticeScene;
@@ -14,6 +12,7 @@ import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.parallel.Parallelism;
+import org.tensim.testsupport.AllocationCounter;
 
 /**
  * The BDF2 step allocates nothing after the first step (which factors): the per-thread allocation
@@ -38,38 +37,17 @@ class PrefactoredAllocationTest {
     }
 
     private static void assertNoAllocation(Simulation sim, int threads, double dt, int warmUp) {
-        java.lang.management.ThreadMXBean bean = ManagementFactory.getThreadMXBean();
-        Assumptions.assumeTrue(bean instanceof com.sun.management.ThreadMXBean, "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
-
         try (Parallelism p = threads > 1 ? Parallelism.install(sim, threads) : null) {
-            long[] workers = p == null ? new long[0] : p.pool().workerThreadIds();
-            long[] ids = new long[workers.length + 1];
-            ids[0] = Thread.currentThread().getId();
-            System.arraycopy(workers, 0, ids, 1, workers.length);
+            AllocationCounter counter = AllocationCounter.currentThreadAnd(
+                    p == null ? new long[0] : p.pool().workerThreadIds());
             for (int i = 0; i < warmUp; i++) {
                 sim.step(dt);
             }
-            long bytes = 0;
-            for (int attempt = 0; attempt < 2; attempt++) {
-                long before = 0;
-                for (long id : ids) {
-                    before += mx.getThreadAllocatedBytes(id);
-                }
+            long bytes = counter.bytesAllocatedBy(() -> {
                 for (int i = 0; i < 300; i++) {
                     sim.step(dt);
                 }
-                long after = 0;
-                for (long id : ids) {
-                    after += mx.getThreadAllocatedBytes(id);
-                }
-                bytes = after - before;
-                if (bytes == 0) {
-                    break;
-                }
-            }
+            }, 2);
             assertEquals(0, bytes, "bytes allocated by 300 steps");
         }
     }
