@@ -26,7 +26,7 @@ import picocli.CommandLine.Option;
             "one spring (stable: finite, and the displacement over the last quarter of",
             "the run at most twice that over the first, over --periods periods), across",
             "stiffness-to-mass ratios (w = sqrt(k/m)) and damping ratios, against",
-            "linear stability theory (PHYSICS.md). Writes stability.csv,",
+            "linear stability theory (docs/physics.md). Writes stability.csv,",
             "stability-omega.png and stability-damping.png to --out. The last line is",
             "one JSON object with, per integrator, the measured `critical_omega_h` and",
             "the `theory_omega_h` of the undamped spring (null = stable at every step",

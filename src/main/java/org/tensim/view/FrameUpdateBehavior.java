@@ -11,7 +11,7 @@ import org.jogamp.java3d.WakeupOnElapsedFrames;
  * Copies the newest simulation frame into the by-reference geometry. It wakes up
  * every other frame ({@code WakeupOnElapsedFrames(1)}), never every frame: Java3D
  * 1.7.2's update thread sometimes dies with a NullPointerException when
- * by-reference geometry is updated on every frame (docs: TOOLCHAIN.md), which
+ * by-reference geometry is updated on every frame (docs/gui.md, "How it works"), which
  * freezes the view. Frames published in between are skipped, never torn: the
  * {@link FrameBuffer} hands over whole frames only.
  */

@@ -70,7 +70,7 @@ public final class SceneView {
         canvas = new FpsCanvas(SimpleUniverse.getPreferredConfiguration());
         universe = new SimpleUniverse(canvas);
         View view = universe.getViewer().getView();
-        // Java3D 1.7.2 puts the default front clip plane too deep for small images (TOOLCHAIN.md):
+        // Java3D 1.7.2 puts the default front clip plane too deep for small images (docs/gui.md):
         // clip relative to the eye, at distances set from the scene's size in show().
         view.setFrontClipPolicy(View.VIRTUAL_EYE);
         view.setBackClipPolicy(View.VIRTUAL_EYE);

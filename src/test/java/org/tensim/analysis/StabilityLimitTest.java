@@ -12,7 +12,7 @@ import org.tensim.solver.stability.StabilityTheory;
 
 /**
  * The largest stable step measured by bisection through the whole simulation,
- * against linear stability theory (PHYSICS.md): 2 / w for symplectic Euler and
+ * against linear stability theory (docs/physics.md): 2 / w for symplectic Euler and
  * velocity Verlet, 2 sqrt(2) / w for RK4, on springs whose k/m spans six decades.
  */
 class StabilityLimitTest {

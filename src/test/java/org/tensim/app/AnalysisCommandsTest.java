@@ -57,7 +57,7 @@ class AnalysisCommandsTest {
         assertTrue(Files.size(dir.resolve("shell-material-convergence.png")) > 1000);
         // Plates of 3 and 4 rings (h = 12 t) are dominated by the material model's weak transverse shear
         // (measured +298 % at 4 rings, 2026-11-23), which falls as h^2: the order is the check here
-        // (docs/diaphragm.md, "Tissue models": +2.4 % at the default 43 rings).
+        // (docs/accuracy.md, "The shell's statics": +0.18 % at the default 43 rings).
         double order = json.get("shell").get("plate_order").asDouble();
         assertTrue(order > 1.5 && order < 2.6, json.toString());
         assertTrue(json.get("shell").get("patch_worst_error").get("jittered").asDouble() < 0.01, json.toString());

@@ -64,7 +64,7 @@ class MidpointRK2OrderTest {
 
     @Test
     void undampedAmplitudeGrowsAsTheAmplificationFactorPredicts() {
-        // |R(i w h)|^2 = 1 + (w h)^4 / 4: RK2 gains energy on an undamped spring (PHYSICS.md).
+        // |R(i w h)|^2 = 1 + (w h)^4 / 4: RK2 gains energy on an undamped spring (docs/physics.md).
         double w = Math.sqrt(K / M);
         double h = 0.2 / w;
         Topology t = new Topology();

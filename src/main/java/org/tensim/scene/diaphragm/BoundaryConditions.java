@@ -27,7 +27,7 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
     public static final double DEFAULT_BAND_PA_PER_M = 2.5e7;
     /**
      * Default taper of the band's outer edge, m: 1 mm, every node held or free; wider tapers (5, 15, 20 mm)
-     * made the field depend more on the mesh (docs/diaphragm.md, "Fibre insertion and the band's edge").
+     * made the field depend more on the mesh (docs/history.md, "The diaphragm's boundary conditions").
      */
     public static final double DEFAULT_TAPER_M = 0.001;
 

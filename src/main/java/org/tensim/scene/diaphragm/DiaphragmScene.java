@@ -48,7 +48,7 @@ import org.tensim.solver.stability.TimeStepPolicy;
  *
  * <p><b>Damping.</b> Axial damping {@code c = beta k} on every spring, with
  * {@code beta = 2 zeta_high / w_max}, gives the highest mode the damping ratio
- * zeta_high (RK2 needs damping, PHYSICS.md); global viscous damping
+ * zeta_high (RK2 needs damping, docs/physics.md); global viscous damping
  * {@code c = alpha m_mean} stands for the surrounding organs and damps the slow modes.
  */
 public final class DiaphragmScene {

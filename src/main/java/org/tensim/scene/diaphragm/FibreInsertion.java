@@ -25,7 +25,7 @@ import org.tensim.io.mesh.TriangleMesh;
  * carries none. The transmitted force is unchanged: the same tension reaches the band along each
  * fibre; only where it is handed over changes. On a real mesh the rim includes the boundaries of
  * its holes (foramina or meshing gaps): no fibre pulls across a hole. Measured (docs/diaphragm.md,
- * "Fibre insertion and the band's edge").
+ * "Boundary conditions"; the runs in docs/history.md).
  */
 final class FibreInsertion {
     /** Default insertion length L, m: one and a half times the band's 20 mm width (measured choice). */

@@ -80,7 +80,7 @@ final class SpringList implements ShellNetwork.Sink {
     /**
      * Gershgorin bound on the highest angular frequency of these springs, triangles and the
      * extra springs, rad/s: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} over the free
-     * nodes ({@link CriticalTimeStep#gershgorin}, rows form; PHYSICS.md), a triangle's
+     * nodes ({@link CriticalTimeStep#gershgorin}, rows form; docs/physics.md), a triangle's
      * 3 x 3 node blocks counted by their norms.
      */
     double omegaMaxBound(Topology t, java.util.List<int[]> extraPairs, java.util.List<Double> extraK) {

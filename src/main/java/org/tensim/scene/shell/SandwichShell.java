@@ -46,7 +46,7 @@ public record SandwichShell(double faceShare, double midShare, double diagonalSh
      * are not needed; their share of 3 % (an effective shear modulus {@code 0.03 E (t / h)^2}, 30 to 270
      * times too soft at the diaphragm's element sizes) moved the patch test by 0.8 % on right triangles,
      * against 0.00 % without them, and changes the plate by under 0.1 % with the shear elements
-     * (docs/diaphragm.md, "Tissue models").
+     * (docs/shell.md).
      */
     public static final double SHEAR_SHARE = 0;
 

@@ -53,7 +53,7 @@ public final class DiaphragmViewScene implements ViewScene {
     public static final String SURROUNDING_DAMPING = "surroundingDampingPerS";
     public static final String BREATHING_PERIOD = "breathingPeriodS";
 
-    /** Inspiration:expiration of quiet breathing, 1:2 (PHYSICS.md). */
+    /** Inspiration:expiration of quiet breathing, 1:2 (docs/physics.md). */
     static final double EXPIRATION_RATIO = 2;
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();

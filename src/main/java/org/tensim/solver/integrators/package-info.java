@@ -10,6 +10,6 @@
  * files or scenes).
  *
  * <p>Stability figures are for an undamped spring, omega = sqrt(k/m) (rad/s),
- * step h (s); see {@code ../shared/docs/PHYSICS.md}.
+ * step h (s); see {@code docs/physics.md}.
  */
 package org.tensim.solver.integrators;

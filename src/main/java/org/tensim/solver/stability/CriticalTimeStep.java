@@ -72,7 +72,7 @@ public record CriticalTimeStep(double omegaMaxGershgorin, double omegaMaxPower, 
     /** Which Gershgorin bound: the two forms of the same eigenvalue problem K u = w^2 M u. */
     public enum Form {
         /**
-         * Rows of M^-1 K: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} (PHYSICS.md),
+         * Rows of M^-1 K: {@code w_max^2 <= max_i 2 sum_j k_ij / m_i} (docs/physics.md),
          * every spring of a free node counted, fixed ends included. Cruder; what the
          * diaphragm's damping design and time step use.
          */

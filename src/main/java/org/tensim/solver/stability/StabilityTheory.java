@@ -7,7 +7,7 @@ package org.tensim.solver.stability;
  * own description ({@link LinearStability#oscillatorStep}); the method is stable when
  * the spectral radius of A is at most 1.
  *
- * <p>Undamped limits (PHYSICS.md): forward Euler and the two-stage RK2 never
+ * <p>Undamped limits (docs/physics.md): forward Euler and the two-stage RK2 never
  * (|R(i w h)| &gt; 1), symplectic Euler and velocity Verlet w h &lt; 2, classic RK4
  * w h &lt;= 2 sqrt(2), implicit Euler always; each method states its own
  * ({@link LinearStability#undampedLimit()}, computed from the stability polynomial

@@ -11,7 +11,7 @@ package org.tensim.solver.stability;
  * found by bisection, times {@link #SAFETY}. A mode of frequency w has the
  * eigenvalues {@code w (-zeta +/- i sqrt(1 - zeta^2))} with zeta from
  * {@link ModalBounds#dampingRatio}. Without damping there is no stable step for RK2
- * (PHYSICS.md); with {@code zeta(w_max) = 0.3} it is about {@code 1.5 / w_max}.</li>
+ * (docs/physics.md); with {@code zeta(w_max) = 0.3} it is about {@code 1.5 / w_max}.</li>
  * <li>An explicit method on an undamped scene: its undamped limit over w_max (the
  * real-axis limit 2 / w_max for methods that grow at every step without damping),
  * times {@link #SAFETY}.</li>

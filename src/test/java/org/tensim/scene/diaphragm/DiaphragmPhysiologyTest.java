@@ -9,7 +9,7 @@ import org.junit.jupiter.api.TestInstance;
 import org.tensim.solver.Simulation;
 
 /**
- * The whole scene against physiology (PHYSICS.md) on a coarse double dome, one
+ * The whole scene against physiology (docs/physics.md) on a coarse double dome, one
  * inspiration each (quiet breathing: dome excursion about 18 mm, 10-30 mm accepted;
  * antero-posterior and transverse dimensions grow on inspiration), and each control
  * alone changing the result in the expected direction.

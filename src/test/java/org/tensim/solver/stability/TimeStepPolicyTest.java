@@ -27,7 +27,7 @@ class TimeStepPolicyTest {
 
     @Test
     void withoutDampingNoStepIsStable() {
-        // |1 + z + z^2/2|^2 = 1 + (w h)^4 / 4 on the imaginary axis (PHYSICS.md)
+        // |1 + z + z^2/2|^2 = 1 + (w h)^4 / 4 on the imaginary axis (docs/physics.md)
         assertEquals(Math.sqrt(1 + Math.pow(0.5, 4) / 4), amplification(0, 0.5), 1e-15);
         // Only steps so small that the growth per step is below round-off pass: w h < 0.01.
         assertTrue(stable(1000, 0, 0) * 1000 < 0.01);
