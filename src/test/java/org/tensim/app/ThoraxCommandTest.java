@@ -69,6 +69,11 @@ class ThoraxCommandTest {
         assertTrue(((Number) s.get("ap_extent_change_mm")).doubleValue() > 0, s.toString());
         assertTrue(((Number) s.get("transverse_extent_change_mm")).doubleValue() > 0, s.toString());
         assertTrue(((Number) s.get("max_penetration_past_rest_mm")).doubleValue() < 5, s.toString());
+        // The area touching the bones at end-inspiration: some of the muscle, at most the largest over the run.
+        double contact = ((Number) s.get("contact_area_mm2")).doubleValue();
+        assertTrue(contact > 0 && contact < 0.5 * area, "contact " + contact + " of " + area);
+        assertTrue(((Number) s.get("max_contact_area_mm2")).doubleValue() >= contact, s.toString());
+        assertTrue(s.containsKey("contact_area_expiration_mm2"), s.toString());
     }
 
     @Test

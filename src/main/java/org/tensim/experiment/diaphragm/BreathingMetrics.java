@@ -44,6 +44,16 @@ public final class BreathingMetrics implements StepListener {
     private final int[] cartilageMarkers;
     private double[] markerExp;
     private double[] markerInsp;
+    /** Per contact pair, its signed distance at the last step, m (scratch). */
+    private final double[] distances;
+    /** Per diaphragm node, whether it was counted in the contact area of this step (scratch, cleared after). */
+    private final boolean[] contactNodes;
+    /** Per diaphragm node, its lumped area, m^2. */
+    private final double[] nodeArea;
+    private double contactArea;
+    private double contactAreaExp = Double.NaN;
+    private double contactAreaInsp = Double.NaN;
+    private double maxContactArea;
     private double maxPenetration;
     private double maxPastGap;
     private int worstPair = -1;
@@ -66,31 +76,15 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
-        double[][] tops = scene.domeTops();
-        this.half = new int[nodes];
-        for (int v = 0; v < nodes; v++) {
-            if (!scene.surfaces().isUpper(v) || origin[v]) {
-                continue;
-            }
-            for (int d = 0; d < 2; d++) {
-                if (tops[d] != null && Math.hypot(scene.surfaces().mesh().coord(v, 0) - tops[d][0],
-                        scene.surfaces().mesh().coord(v, 1) - tops[d][1]) < DOME_RADIUS_M) {
-                    half[v] = d + 1;
-                }
-            }
-        }
-        java.util.Set<Integer> markers = new java.util.TreeSet<>();
-        for (org.tensim.scene.diaphragm.RibCage.Segment sg : scene.cage().segments()) {
-            if (sg.kind() == org.tensim.scene.diaphragm.RibCage.Kind.CARTILAGE && sg.name().matches(".*[^0-9][345]")) {
-                markers.add(sg.a());
-                markers.add(sg.b());
-            }
-        }
-        this.cartilageMarkers = markers.stream().mapToInt(Integer::intValue).toArray();
+        this.half = scene.domeTopCandidates(DOME_RADIUS_M);
+        this.cartilageMarkers = scene.cartilageMarkerNodes();
+        this.distances = new double[scene.topology().contacts().size()];
+        this.contactNodes = new boolean[nodes];
+        this.nodeArea = scene.nodeAreasM2();
     }
 
     /** Horizontal radius about each dome's rest top within which its top is sought at every moment, m. */
-    public static final double DOME_RADIUS_M = 0.025;
+    public static final double DOME_RADIUS_M = DiaphragmScene.DOME_TOP_RADIUS_M;
 
     /**
      * The height of each dome's top (right, left), m: the highest free upper node within {@link #DOME_RADIUS_M}
@@ -135,12 +129,16 @@ public final class BreathingMetrics implements StepListener {
     public void afterStep(Simulation sim) {
         double t = sim.time();
         SystemState s = sim.state();
+        if (s.contacts.count() > 0) {
+            contacts(s, t);
+        }
         if (extentsExp == null && t >= start - 1e-12) {
             extentsExp = extents(s, null);
             originsExp = extents(s, origin);
             apexAtExp = s.x[3 * apex + 2];
             domeTopsExp = domeTops(s);
             markerExp = marker(s);
+            contactAreaExp = contactArea;
             heightsExp = new double[nodes]; // once per run, at the measured cycle's start
             for (int i = 0; i < nodes; i++) {
                 heightsExp[i] = s.x[3 * i + 2];
@@ -152,19 +150,10 @@ public final class BreathingMetrics implements StepListener {
             apexAtInsp = s.x[3 * apex + 2];
             domeTopsInsp = domeTops(s);
             markerInsp = marker(s);
+            contactAreaInsp = contactArea;
             largestDescent = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < nodes; i++) {
                 largestDescent = Math.max(largestDescent, heightsExp[i] - s.x[3 * i + 2]);
-            }
-        }
-        if (s.contacts.count() > 0) {
-            // One pass over the pairs a step: both depths and where the deepest past its start is.
-            double[] past = s.contacts.maxPenetrationPastGap(t, s.x);
-            maxPenetration = Math.max(maxPenetration, past[2]);
-            if (past[0] > maxPastGap) {
-                maxPastGap = past[0];
-                worstPair = (int) past[1];
-                worstPairT = t;
             }
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
@@ -172,6 +161,39 @@ public final class BreathingMetrics implements StepListener {
             apexMin = Math.min(apexMin, z);
             apexMax = Math.max(apexMax, z);
         }
+    }
+
+    /**
+     * One pass over the contact pairs at the state after a step, without allocating: both penetration depths, where
+     * the deepest past its start is, and the area of the diaphragm nodes in contact (each node once, by its lumped
+     * area, however many bones it touches).
+     */
+    private void contacts(SystemState s, double t) {
+        org.tensim.solver.ContactForces c = s.contacts;
+        c.distances(t, s.x, distances);
+        double area = 0;
+        for (int e = 0; e < distances.length; e++) {
+            double past = c.gap(e) - distances[e];
+            if (past > maxPastGap) {
+                maxPastGap = past;
+                worstPair = e;
+                worstPairT = t;
+            }
+            maxPenetration = Math.max(maxPenetration, -distances[e]);
+            int v = c.node(e);
+            if (past > 0 && v < nodes && !contactNodes[v]) {
+                contactNodes[v] = true;
+                area += nodeArea[v];
+            }
+        }
+        for (int e = 0; e < distances.length; e++) {
+            int v = c.node(e);
+            if (v < nodes) {
+                contactNodes[v] = false;
+            }
+        }
+        contactArea = area;
+        maxContactArea = Math.max(maxContactArea, area);
     }
 
     private double[] extents(SystemState s, boolean[] only) {
@@ -284,6 +306,13 @@ public final class BreathingMetrics implements StepListener {
             }
         }
         if (scene.topology().contacts().size() > 0) {
+            if (complete()) {
+                f.put("contact_area_mm2", 1e6 * contactAreaInsp);
+            }
+            if (!Double.isNaN(contactAreaExp)) {
+                f.put("contact_area_expiration_mm2", 1e6 * contactAreaExp);
+            }
+            f.put("max_contact_area_mm2", 1e6 * maxContactArea);
             f.put("max_bone_penetration_mm", 1e3 * maxPenetration);
             f.put("max_penetration_past_rest_mm", 1e3 * maxPastGap);
         }
