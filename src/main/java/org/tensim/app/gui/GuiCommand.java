@@ -50,7 +50,7 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--thorax", paramLabel = "DIR",
             description = "a thorax of bone surfaces (a folder with a parts.json), as `tensim diaphragm --thorax`:"
-                    + " the diaphragm attached at its origins (green) and sliding on the bones (blue tint)")
+                    + " the diaphragm attached at its origins (green), the nodes touching a bone at each frame (blue)")
     Path thorax;
 
     @Option(names = "--labels", paramLabel = "FILE", description = "per-vertex labels of --mesh, as `tensim diaphragm"
