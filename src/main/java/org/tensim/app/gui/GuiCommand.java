@@ -261,7 +261,7 @@ public final class GuiCommand implements Callable<Integer> {
             return null;
         }
         try {
-            Settings s = PresetFile.read(file, tuning);
+            Settings s = readLastUsed(file, tuning);
             if (keepLoad && s.muscleLoad() != null && !s.muscleLoad().equals(tuning.muscleLoad())) {
                 return "Last-used parameters not restored: they were tuned with muscle load " + s.muscleLoad()
                         + ", and --muscle-load " + tuning.muscleLoad() + " was given (" + file + ")";
@@ -277,6 +277,56 @@ public final class GuiCommand implements Callable<Integer> {
                 bad = file;
             }
             return "Last-used parameters not restored (kept as " + bad + "): " + e.getMessage();
+        }
+    }
+
+    /**
+     * Reads last-used parameters for this window. The tendon boundary's control belongs to how the scene was opened
+     * (the tendon rule, or none with a label file), which may change from one start to the next (tune the plane, save
+     * the labels, reopen with them): a tendon control this window does not have is left out rather than making the
+     * whole file unusable. Anything else wrong is refused as {@link PresetFile#read} refuses it.
+     */
+    static Settings readLastUsed(Path file, Tuning tuning) throws PresetFile.PresetException {
+        try {
+            return PresetFile.read(file, tuning);
+        } catch (PresetFile.PresetException first) {
+            com.fasterxml.jackson.databind.node.ObjectNode root;
+            try {
+                com.fasterxml.jackson.databind.JsonNode n = org.tensim.io.Json.mapper().readTree(Files.readAllBytes(file));
+                if (!(n instanceof com.fasterxml.jackson.databind.node.ObjectNode o)
+                        || !(o.get("parameters") instanceof com.fasterxml.jackson.databind.node.ObjectNode params)) {
+                    throw first;
+                }
+                boolean dropped = false;
+                for (String key : java.util.List.of(org.tensim.scene.tunable.DiaphragmViewScene.TENDON_PLANE,
+                        org.tensim.scene.tunable.DiaphragmViewScene.TENDON_SHARE)) {
+                    if (params.has(key) && !tuning.keys().contains(key)) {
+                        params.remove(key);
+                        dropped = true;
+                    }
+                }
+                if (!dropped) {
+                    throw first;
+                }
+                root = o;
+            } catch (java.io.IOException e) {
+                throw first;
+            }
+            Path tmp = file.resolveSibling(file.getFileName() + ".tendon.tmp");
+            try {
+                Files.write(tmp, org.tensim.io.Json.mapper().writeValueAsBytes(root));
+                return PresetFile.read(tmp, tuning);
+            } catch (java.io.IOException e) {
+                throw first;
+            } catch (PresetFile.PresetException e) {
+                throw new PresetFile.PresetException(e.getMessage().replace(tmp.toString(), file.toString()), e);
+            } finally {
+                try {
+                    Files.deleteIfExists(tmp);
+                } catch (java.io.IOException ignored) {
+                    // a left-over temporary file is harmless
+                }
+            }
         }
     }
 

@@ -25,7 +25,8 @@ public final class DiaphragmLiveState implements LiveState {
     public static final byte IN_CONTACT = 1;
 
     private final int nodes;
-    private final int[] half;
+    /** The candidates for each dome's top (right, left), node ids. */
+    private final int[][] candidates = new int[2][];
     private final double[] restTop = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
     private final int[] markers;
     private final double[] restMarker = new double[3];
@@ -52,11 +53,11 @@ public final class DiaphragmLiveState implements LiveState {
      */
     public DiaphragmLiveState(DiaphragmScene scene, double[] rest) {
         this.nodes = scene.diaphragmNodes();
-        this.half = scene.domeTopCandidates(DiaphragmScene.DOME_TOP_RADIUS_M);
-        for (int v = 0; v < nodes; v++) {
-            if (half[v] > 0) {
-                restTop[half[v] - 1] = Math.max(restTop[half[v] - 1], rest[3 * v + 2]);
-            }
+        int[] half = scene.domeTopCandidates(DiaphragmScene.DOME_TOP_RADIUS_M);
+        for (int d = 0; d < 2; d++) {
+            int dome = d + 1;
+            candidates[d] = java.util.stream.IntStream.range(0, nodes).filter(v -> half[v] == dome).toArray();
+            restTop[d] = top(rest, candidates[d]);
         }
         this.markers = scene.cartilageMarkerNodes();
         mean(rest, restMarker);
@@ -80,6 +81,15 @@ public final class DiaphragmLiveState implements LiveState {
         if (contact) {
             legend.add(new Legend("touching a bone now", DiaphragmViewScene.IN_CONTACT_COLOUR));
         }
+    }
+
+    /** The highest z of the nodes, m (-infinity for none). */
+    private static double top(double[] x, int[] nodes) {
+        double top = Double.NEGATIVE_INFINITY;
+        for (int v : nodes) {
+            top = Math.max(top, x[3 * v + 2]);
+        }
+        return top;
     }
 
     private int add(String label, String unit, String key) {
@@ -121,17 +131,8 @@ public final class DiaphragmLiveState implements LiveState {
     @Override
     public void measure(Simulation sim, byte[] marks, double[] out) {
         SystemState s = sim.state();
-        double topR = Double.NEGATIVE_INFINITY;
-        double topL = Double.NEGATIVE_INFINITY;
-        for (int v = 0; v < nodes; v++) {
-            if (half[v] == 1) {
-                topR = Math.max(topR, s.x[3 * v + 2]);
-            } else if (half[v] == 2) {
-                topL = Math.max(topL, s.x[3 * v + 2]);
-            }
-        }
-        out[right] = 1e3 * (restTop[0] - topR);
-        out[left] = 1e3 * (restTop[1] - topL);
+        out[right] = 1e3 * (restTop[0] - top(s.x, candidates[0]));
+        out[left] = 1e3 * (restTop[1] - top(s.x, candidates[1]));
         if (cranial >= 0) {
             double z = 0;
             double y = 0;
@@ -142,9 +143,9 @@ public final class DiaphragmLiveState implements LiveState {
             out[cranial] = 1e3 * (z - restMarker[2]);
             out[ventral] = -1e3 * (y - restMarker[1]); // +y is posterior
         }
-        java.util.Arrays.fill(marks, (byte) 0);
         ContactForces c = s.contacts;
         if (contactArea >= 0 && c.count() == distances.length) {
+            java.util.Arrays.fill(marks, (byte) 0);
             c.distances(sim.time(), s.x, distances);
             double area = 0;
             double deepestNow = 0;
