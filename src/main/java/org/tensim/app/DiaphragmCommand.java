@@ -5,8 +5,8 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.tensim.bench.RealTimeSetting;
-import org.tensim.bench.RealTimeStudy;
+import org.tensim.experiment.diaphragm.RealTimeSetting;
+import org.tensim.experiment.diaphragm.RealTimeStudy;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.experiment.diaphragm.ResolutionPick;
@@ -187,13 +187,14 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--newton", paramLabel = "N",
             description = "bdf2 only: Newton iterations per step (default: "
-                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS + "; a thorax with contact"
-                    + " needs 3, docs/thorax.md)")
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS + "; with --thorax: "
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS + ", docs/thorax.md)")
     Integer newton;
 
     @Option(names = "--cg-iterations", paramLabel = "N",
             description = "bdf2 only: cap on CG iterations per Newton iteration (default: "
-                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS + "; with a thorax: 20)")
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS + "; with --thorax: "
+                    + org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ")")
     Integer cgIterations;
 
     @Option(names = "--dt", paramLabel = "S",
@@ -203,7 +204,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--realtime",
             description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
-                    + " default mesh, on all cores; the summary names it and its measured error")
+                    + " default mesh, on all cores; the summary names it (realtime_setting)")
     boolean realtime;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
@@ -270,6 +271,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         "--cg-tolerance applies to --integrator implicit-euler only, not " + integrator);
             }
             ie.setTolerance(cgTolerance);
+        }
+        if (thorax != null && contact && chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
+            // Contact with bone surfaces needs the converged step (docs/thorax.md); the options below may change it.
+            b.setNewtonIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
+            b.setKrylovIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
         }
         if (newton != null || cgIterations != null) {
             if (!(chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b)) {
@@ -392,9 +398,17 @@ public final class DiaphragmCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
-        if ((realtimeStudy || resolutionStudy) && (thorax != null || labels != null)) {
+        if (realtimeStudy && (thorax != null || labels != null)) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--thorax and --labels are not yet"
-                    + " taken by --realtime-study and --resolution-study");
+                    + " taken by --realtime-study");
+        }
+        if (resolutionStudy && labels != null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--labels cannot go with"
+                    + " --resolution-study: a label file names the vertices of one mesh, and the study decimates it");
+        }
+        if (resolutionStudy && thorax != null && mesh.equals(DiaphragmSetup.DEFAULT_MESH)) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--resolution-study with --thorax"
+                    + " needs --mesh: the diaphragm registered to that thorax");
         }
         if (realtimeStudy) {
             return RunFolder.run(out, "diaphragm --realtime-study", REALTIME_OUTPUTS, run -> {
@@ -410,10 +424,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         "--refine must be 0 or more and --cells positive sizes in mm, got " + refine + " and "
                                 + java.util.Arrays.toString(cellsMm));
             }
+            ResolutionStudy.Thorax inThorax = thorax == null ? null : new ResolutionStudy.Thorax(sceneSpec,
+                    DiaphragmSetup.read(sceneSpec),
+                    () -> configured(org.tensim.solver.integrators.Integrators.create(integrator)), dt);
             ResolutionStudy.Setup rs;
             try {
                 rs = new ResolutionStudy.Setup(DiaphragmSetup.boxes(boxes), p, bc, cycle, controls,
-                        Math.min(seconds, cycle.inspirationS()), tolerance, System.out);
+                        Math.min(seconds, cycle.inspirationS()), tolerance, System.out, inThorax);
             } catch (IllegalArgumentException e) {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--tolerance: " + e.getMessage());
             }
@@ -442,6 +459,29 @@ public final class DiaphragmCommand implements Callable<Integer> {
         for (String n : names) {
             run.file(n);
         }
+    }
+
+    /**
+     * The integrator as the options configure it for every model of a study: a thorax's converged {@code bdf2}
+     * step, then {@code --newton}, {@code --cg-iterations} and {@code --cg-tolerance} (checked before).
+     */
+    private org.tensim.solver.Integrator configured(org.tensim.solver.Integrator i) {
+        if (i instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
+            if (thorax != null && contact) {
+                b.setNewtonIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
+                b.setKrylovIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
+            }
+            if (newton != null) {
+                b.setNewtonIterations(newton);
+            }
+            if (cgIterations != null) {
+                b.setKrylovIterations(cgIterations);
+            }
+        }
+        if (cgTolerance != null && i instanceof org.tensim.solver.integrators.ImplicitEuler ie) {
+            ie.setTolerance(cgTolerance);
+        }
+        return i;
     }
 
     private void simulate(RunFolder run, org.tensim.scene.diaphragm.DiaphragmSpec sceneSpec, DiaphragmReport.Options o,

@@ -106,7 +106,7 @@ public final class BenchCommand implements Callable<Integer> {
         }
         boolean builtin = "builtin".equals(solver);
         List<Integer> threadCounts = builtin ? List.of(1) : threads;
-        IntegratorChoice.create(integrator); // fails early on an unknown name
+        Integrators.create(integrator); // fails early on an unknown name
         if (out == null) {
             measure(builtin, threadCounts, ord, null);
             return 0;
@@ -131,12 +131,12 @@ public final class BenchCommand implements Callable<Integer> {
                 if (diaphragm) {
                     // A new scene per case: a simulation is consumed by its run.
                     org.tensim.scene.diaphragm.DiaphragmScene d = DiaphragmBenchScene.build();
-                    org.tensim.solver.Integrator in = IntegratorChoice.create(integrator);
+                    org.tensim.solver.Integrator in = Integrators.create(integrator);
                     c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false, in, t, ord,
                             builtin, d.timeStep(in, dt != null ? dt : 0).seconds(), steps, repeats);
                 } else {
                     c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links), null, shuffle,
-                            IntegratorChoice.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,
+                            Integrators.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,
                             repeats);
                 }
                 Map<String, Object> r = LatticeBenchmark.run(c);

@@ -4,6 +4,7 @@ import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import org.tensim.experiment.SceneGraphSync;
 import org.tensim.model.Topology;
 import org.tensim.scene.LatticeScene;
 import org.tensim.scene.ShuffledScene;

@@ -14,7 +14,7 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
  * of the parameters that are not swept, and extra measures taken during each run
  * (calibration targets).
  *
- * @param scene       scene name, as the GUI's ({@code diaphragm} or {@code cube})
+ * @param scene       scene name, as in {@link org.tensim.tuning.TunableScenes} ({@code diaphragm} or {@code cube})
  * @param meshFile    diaphragm mesh file (.obj, .stl, .off), or null for the generated double dome
  * @param units       units of the mesh file, {@code mm} or {@code m}
  * @param thicknessMm thickness given to a single-surface mesh, mm
@@ -23,7 +23,8 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
  *                    rib cage (the GUI's default)
  * @param muscleLoad  diaphragm muscle load model as on the command line ({@code fibres}, the default,
  *                    {@code pressure}, {@code paper-nodes}); null for the default, fibres
- * @param integrator  integrator name, as the GUI's (e.g. {@code rk2}, {@code implicit-euler-cg1e-3})
+ * @param integrator  name of a setup in the integrator catalogue ({@link org.tensim.solver.integrators.Integrators}:
+ *                    e.g. {@code rk2}, {@code implicit-euler-cg1e-3}, {@code bdf2-newton2})
  * @param dtS         time step, s; 0 for the scene's own (see {@link SceneRun})
  * @param seconds     simulated time of each run, s
  * @param fixed       values of parameters held fixed, by key (the others not swept keep their defaults)

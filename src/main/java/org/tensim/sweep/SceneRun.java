@@ -6,23 +6,23 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
-import org.tensim.app.gui.GuiScenes;
-import org.tensim.app.gui.IntegratorCatalog;
-import org.tensim.app.gui.IntegratorChoice;
 import org.tensim.experiment.diaphragm.BreathingMetrics;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
-import org.tensim.solver.Simulation;
-import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.integrators.IntegratorChoice;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.TunableScenes;
 
 /**
  * One point of a sweep, run headless on one thread: the scene is made by the GUI's own
- * factory ({@link GuiScenes}) with the point's values applied exactly as the GUI applies
+ * factory ({@link TunableScenes}) with the point's values applied exactly as the GUI applies
  * them, so that a preset written from a sweep or a calibration reproduces the run in
  * {@code ./tensim gui --preset}. The scene's simulations are stepped with the chosen
  * integrator and time step for the set simulated time.
@@ -65,7 +65,7 @@ public final class SceneRun {
             case "diaphragm" -> DiaphragmViewScene.PARAMETERS;
             case "cube" -> org.tensim.scene.tunable.CubeViewScene.PARAMETERS;
             default -> throw new IllegalArgumentException("scene '" + scene + "' is not a scene; expected one of "
-                    + GuiScenes.names());
+                    + TunableScenes.names());
         };
     }
 
@@ -84,7 +84,7 @@ public final class SceneRun {
             for (Map.Entry<String, Double> e : values.entrySet()) {
                 parameter(setup.scene(), e.getKey()).validate(e.getValue(), "point " + point.id());
             }
-            integrator = integrator(setup.integrator());
+            integrator = Integrators.choice(setup.integrator());
             scene = factory(setup).create(true, values);
             for (TunableParameter p : scene.parameters()) {
                 if (!p.restarts() && values.containsKey(p.key())) {
@@ -140,18 +140,6 @@ public final class SceneRun {
                 + parameters(scene).stream().map(TunableParameter::key).toList());
     }
 
-    /** The GUI's integrator choice of that name, or an exception naming the known ones. */
-    public static IntegratorChoice integrator(String name) {
-        List<IntegratorChoice> all = IntegratorCatalog.available();
-        for (IntegratorChoice c : all) {
-            if (c.name().equals(name)) {
-                return c;
-            }
-        }
-        throw new IllegalArgumentException("integrator '" + name + "' is unknown; expected one of "
-                + all.stream().map(IntegratorChoice::name).toList());
-    }
-
     private static double defaultStep(ViewScene scene, Map<String, Double> values) {
         double dt = scene.defaultTimeStep();
         Double e = values.get(DiaphragmViewScene.TISSUE_STIFFNESS);
@@ -162,7 +150,7 @@ public final class SceneRun {
     private static SceneFactory factory(RunSetup s) {
         String key = s.scene() + "|" + s.meshFile() + "|" + s.units() + "|" + s.thicknessMm() + "|" + s.rings() + "|"
                 + s.boxesFile() + "|" + s.muscleLoad();
-        return FACTORIES.computeIfAbsent(key, k -> GuiScenes.factory(s.scene(), new GuiScenes.Source(
+        return FACTORIES.computeIfAbsent(key, k -> TunableScenes.factory(s.scene(), new TunableScenes.Source(
                 s.meshFile() == null ? null : Path.of(s.meshFile()), s.units(), s.thicknessMm(), s.rings(),
                 s.boxesFile() == null ? null : Path.of(s.boxesFile()), s.muscleLoad())));
     }

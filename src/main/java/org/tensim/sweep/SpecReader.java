@@ -13,10 +13,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import org.tensim.app.gui.GuiScenes;
 import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.TunableScenes;
 
 /**
  * Reads and validates a sweep spec ({@link SweepSpec} shows the format). Everything is
@@ -95,14 +96,14 @@ public final class SpecReader {
     /** The shared part of sweep and calibration specs: scene, mesh, boxes, solver and fixed values. */
     public RunSetup setup(JsonNode root) throws SpecException {
         String scene = text(root, "scene", null);
-        if (!GuiScenes.names().contains(scene)) {
-            throw fail("scene", root.get("scene"), "one of " + GuiScenes.names());
+        if (!TunableScenes.names().contains(scene)) {
+            throw fail("scene", root.get("scene"), "one of " + TunableScenes.names());
         }
         JsonNode mesh = root.get("mesh");
         String file = null;
         String units = "mm";
         double thicknessMm = 2.5;
-        int rings = GuiScenes.Source.defaults().rings(); // the GUI's default resolution
+        int rings = TunableScenes.Source.defaults().rings(); // the GUI's default resolution
         if (mesh != null) {
             if (!scene.equals("diaphragm")) {
                 throw fail("mesh", mesh, "no mesh: scene '" + scene + "' is built in");
@@ -156,7 +157,7 @@ public final class SpecReader {
             allowOnly(solver, "solver.", Set.of("integrator", "dtS", "seconds"));
             integrator = text(solver, "integrator", integrator);
             try {
-                SceneRun.integrator(integrator);
+                Integrators.choice(integrator);
             } catch (IllegalArgumentException e) {
                 throw fail("solver.integrator", solver.get("integrator"), e.getMessage());
             }

@@ -18,6 +18,8 @@ import javax.swing.JPanel;
 import javax.swing.JRadioButton;
 import javax.swing.JToggleButton;
 import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.solver.integrators.IntegratorChoice;
+import org.tensim.tuning.Tuning;
 
 /**
  * The control panel: transport (play, pause, single step, reset), the scene's

@@ -8,6 +8,12 @@ import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.ConfigDir;
+import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.Settings;
+import org.tensim.tuning.TunableScenes;
+import org.tensim.tuning.Tuning;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -22,7 +28,7 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--scene", paramLabel = "NAME", description = "scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})",
             completionCandidates = SceneNames.class)
-    String scene = GuiScenes.names().get(0);
+    String scene = TunableScenes.names().get(0);
 
     @Option(names = "--mesh", paramLabel = "FILE",
             description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
@@ -30,17 +36,17 @@ public final class GuiCommand implements Callable<Integer> {
     Path mesh;
 
     @Option(names = "--units", paramLabel = "mm|m", description = "units of the --mesh file (default: ${DEFAULT-VALUE})")
-    String units = GuiScenes.Source.defaults().units();
+    String units = TunableScenes.Source.defaults().units();
 
     @Option(names = "--thickness", paramLabel = "MM",
             description = "thickness given to a single-surface --mesh, mm (default: ${DEFAULT-VALUE})")
-    double thicknessMm = GuiScenes.Source.defaults().thicknessMm();
+    double thicknessMm = TunableScenes.Source.defaults().thicknessMm();
 
     @Option(names = "--resolution", paramLabel = "RINGS",
             description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
                     + " 2,500 (default: ${DEFAULT-VALUE}, the resolution study's pick in meshes/resolution-pick.json,"
                     + " the paper's 43 when there is none); the diaphragm opens with the large-step bdf2 solver")
-    int rings = GuiScenes.Source.defaults().rings();
+    int rings = TunableScenes.Source.defaults().rings();
 
     @Option(names = "--boxes", paramLabel = "FILE",
             description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
@@ -114,7 +120,7 @@ public final class GuiCommand implements Callable<Integer> {
     static final class SceneNames implements Iterable<String> {
         @Override
         public java.util.Iterator<String> iterator() {
-            return GuiScenes.names().iterator();
+            return TunableScenes.names().iterator();
         }
     }
 
@@ -141,8 +147,8 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
         }
         // Bad names and files fail here, before any window.
-        SceneFactory factory = GuiScenes.factory(scene,
-                new GuiScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad, thorax, labels, tendonRule,
+        SceneFactory factory = TunableScenes.factory(scene,
+                new TunableScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad, thorax, labels, tendonRule,
                         model));
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
@@ -151,7 +157,7 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
-                GuiScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null);
+                TunableScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null, thorax != null);
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();
@@ -213,15 +219,28 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime, boolean loadGiven) throws Exception {
+        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, loadGiven, false);
+    }
+
+    /**
+     * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean, boolean)}; with {@code contact} (a
+     * thorax of bone surfaces) starting from the step converged for contact ({@link Integrators#CONTACT}), which
+     * takes precedence over realTime: the real-time step drifts there (docs/thorax.md).
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
+            boolean realTime, boolean loadGiven, boolean contact) throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = factory.muscleLoad() == null
                 ? new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
-                        IntegratorCatalog.available())
+                        Integrators.choices())
                 : new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
-                        IntegratorCatalog.available(), factory.muscleLoad(), factory::parameters);
-        if (realTime) {
-            tuning.setIntegrator(IntegratorCatalog.REAL_TIME);
-            tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
+                        Integrators.choices(), factory.muscleLoad(), factory::parameters);
+        if (contact) {
+            tuning.setIntegrator(Integrators.CONTACT);
+            tuning.set(Tuning.TIME_STEP, Integrators.CONTACT_STEP_S);
+        } else if (realTime) {
+            tuning.setIntegrator(Integrators.REAL_TIME);
+            tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
         }
         String note = restoreDir == null ? null
                 : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()), loadGiven);

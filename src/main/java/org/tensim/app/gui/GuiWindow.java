@@ -25,13 +25,18 @@ import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import javax.swing.filechooser.FileNameExtensionFilter;
-import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
-import org.tensim.view.SceneView;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.tuning.ConfigDir;
+import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.Settings;
+import org.tensim.tuning.SimulationRunner;
+import org.tensim.tuning.Tuning;
+import org.tensim.view.SceneView;
 
 /**
  * The main window: the Java3D view, the control panel, the live probe chart and

@@ -10,6 +10,7 @@ import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JTextField;
 import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.tuning.Tuning;
 
 /**
  * One row of the control panel: the parameter's label and unit, a slider over its

@@ -6,6 +6,8 @@ import java.util.Locale;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import org.tensim.tuning.ErrorReadout;
+import org.tensim.tuning.SimulationRunner;
 
 /**
  * The status line: simulated time, steps per second, real-time factor, frames

@@ -8,8 +8,9 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
-import org.tensim.solver.SystemState;
 import org.tensim.scene.tunable.Body;
+import org.tensim.solver.SystemState;
+import org.tensim.tuning.SimulationRunner;
 
 /**
  * {@code gui --run-for S}: plays the window for S seconds of wall time once its

@@ -34,10 +34,12 @@ public final class BreathingMetrics implements StepListener {
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
     /**
-     * Per diaphragm node: 0 not a dome candidate, 1 near the right dome's top, 2 near the left's (free upper
-     * nodes within {@link #DOME_RADIUS_M} of the top horizontally).
+     * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's
+     * ({@link DiaphragmScene#domeTopCandidates}).
      */
     private final int[] half;
+    /** Where each half's top is measured (right, left), for the summary. */
+    private final String[] site;
     private double[] domeTopsExp;
     private double[] domeTopsInsp;
     /** Nodes of the 3rd-5th costal cartilages (marker: their mean), empty when the cage has none. */
@@ -77,6 +79,7 @@ public final class BreathingMetrics implements StepListener {
             origin[v] = scene.isAttached(v);
         }
         this.half = scene.domeTopCandidates(DOME_RADIUS_M);
+        this.site = scene.domeTopSites(DOME_RADIUS_M);
         this.cartilageMarkers = scene.cartilageMarkerNodes();
         this.distances = new double[scene.topology().contacts().size()];
         this.contactNodes = new boolean[nodes];
@@ -87,9 +90,10 @@ public final class BreathingMetrics implements StepListener {
     public static final double DOME_RADIUS_M = DiaphragmScene.DOME_TOP_RADIUS_M;
 
     /**
-     * The height of each dome's top (right, left), m: the highest free upper node within {@link #DOME_RADIUS_M}
-     * of its top at rest, the local highest point (the mesh's highest node may lie on the other dome, or on the
-     * chest wall the ribs lift).
+     * The height of each dome's top (right, left), m: the highest of its candidate nodes
+     * ({@link DiaphragmScene#domeTopCandidates}): within {@link #DOME_RADIUS_M} of its top at rest, the local
+     * highest point (the mesh's highest node may lie on the other dome, or on the chest wall the ribs lift), or,
+     * for a half without a dome top of its own, on its midclavicular line.
      */
     private double[] domeTops(SystemState s) {
         double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
@@ -212,6 +216,11 @@ public final class BreathingMetrics implements StepListener {
             e[a] = hi - lo;
         }
         return e;
+    }
+
+    /** Where each hemidiaphragm's descent is measured: {right, left} ({@link DiaphragmScene#domeTopSites}). */
+    public String[] domeSites() {
+        return site.clone();
     }
 
     public double measuredCycleStart() {

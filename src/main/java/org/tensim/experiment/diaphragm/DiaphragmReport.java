@@ -253,6 +253,13 @@ public final class DiaphragmReport {
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */
     private static void describeBreathing(Map<String, Object> summary, BreathingMetrics metrics) {
         metrics.fields().forEach((k, v) -> summary.put(k, round(v, 3)));
+        if (metrics.complete()) {
+            Map<String, Object> sites = new LinkedHashMap<>();
+            String[] site = metrics.domeSites();
+            sites.put("right", site[0]);
+            sites.put("left", site[1]);
+            summary.put("dome_descent_measured_at", sites);
+        }
         if (metrics.worstPenetration() != null) {
             summary.put("deepest_penetration_at", metrics.worstPenetration());
         }

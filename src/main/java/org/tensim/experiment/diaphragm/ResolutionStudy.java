@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Supplier;
 import org.tensim.io.ProjectFolder;
 import org.tensim.io.Json;
 import org.tensim.io.mesh.MeshCleaner;
@@ -20,6 +21,7 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
+import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
@@ -27,8 +29,10 @@ import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 
 /**
@@ -78,7 +82,8 @@ public final class ResolutionStudy {
 
     /** What the study needs besides the scene: simulated time, tolerance, models, where to write. */
     public record Setup(Map<String, double[]> boxes, DiaphragmParameters p, BoundaryConditions bc,
-            BreathingCycle cycle, DiaphragmControls controls, double seconds, double tolerance, PrintStream log) {
+            BreathingCycle cycle, DiaphragmControls controls, double seconds, double tolerance, PrintStream log,
+            Thorax thorax) {
         public Setup {
             if (!(tolerance > 0 && tolerance < 1)) {
                 throw new IllegalArgumentException("resolution tolerance must be in (0, 1) (relative RMS error), got "
@@ -86,8 +91,32 @@ public final class ResolutionStudy {
             }
         }
 
+        /** A study in the cage of boxes, each model with RK2 at its recommended step. */
+        public Setup(Map<String, double[]> boxes, DiaphragmParameters p, BoundaryConditions bc, BreathingCycle cycle,
+                DiaphragmControls controls, double seconds, double tolerance, PrintStream log) {
+            this(boxes, p, bc, cycle, controls, seconds, tolerance, log, null);
+        }
+
         Setup withBoxes(Map<String, double[]> b) {
-            return new Setup(b, p, bc, cycle, controls, seconds, tolerance, log);
+            return new Setup(b, p, bc, cycle, controls, seconds, tolerance, log, thorax);
+        }
+    }
+
+    /**
+     * A study in a thorax of bone surfaces: every model of the family is built by the scene definition
+     * {@code spec} (its tissue, boundary, breathing and contact) with the bones read once, and stepped by a fresh
+     * {@code integrator} at {@code dtS} (contact makes RK2's stable step too small to be worth it).
+     *
+     * @param bones the thorax as read once ({@link DiaphragmSetup#read}); its surfaces are replaced by each model's
+     * @param dtS   time step, s (0: the scene's recommended step for the integrator, as a single run chooses)
+     */
+    public record Thorax(DiaphragmSpec spec, DiaphragmSetup.Inputs bones, Supplier<Integrator> integrator,
+            double dtS) {
+        public Thorax {
+            if (bones.bones() == null) {
+                throw new IllegalArgumentException("a thorax study needs a spec with a thorax (--thorax)");
+            }
+            Check.nonNegative("time step", "s", dtS);
         }
     }
 
@@ -234,6 +263,11 @@ public final class ResolutionStudy {
         summary.put("tolerance", s.tolerance());
         summary.put("attachment", s.bc().attachment().name().toLowerCase(Locale.ROOT));
         summary.put("muscle_load", s.bc().muscleLoad().name().toLowerCase(Locale.ROOT));
+        if (s.thorax() != null) {
+            summary.put("thorax", String.valueOf(s.thorax().spec().cage().thorax()));
+            summary.put("contact", s.thorax().spec().cage().contact());
+            summary.put("integrator", s.thorax().integrator().get().name());
+        }
         summary.put("families", fams);
         summary.put("models", rows);
         ResolutionAnalysis.csv(out.resolve("resolution.csv"), rows);
@@ -248,9 +282,21 @@ public final class ResolutionStudy {
 
     /** As {@link #simulate(String, String, TwoSurfaces, Setup)} with the given action lines (null: the default). */
     static Run simulate(String family, String label, TwoSurfaces surf, Setup s, List<ActionLines.Line> lines) {
-        DiaphragmScene scene = DiaphragmScene.build(surf, s.boxes(), s.p(), s.cycle(), s.controls(), lines, s.bc());
+        Thorax th = s.thorax();
+        DiaphragmScene scene;
+        if (th == null) {
+            scene = DiaphragmScene.build(surf, s.boxes(), s.p(), s.cycle(), s.controls(), lines, s.bc());
+        } else {
+            DiaphragmSetup.Inputs in = new DiaphragmSetup.Inputs(new DiaphragmSetup.Surfaces(surf,
+                    DiaphragmSetup.SurfaceMode.SHELL), null, Map.of(), th.bones().bones(), null, label);
+            scene = DiaphragmSetup.build(in, th.spec(), s.controls()).scene();
+        }
         Simulation sim = scene.newSimulation();
         double dt = scene.recommendedTimeStep();
+        if (th != null) {
+            sim.setIntegrator(th.integrator().get());
+            dt = scene.timeStep(sim.integrator(), th.dtS()).seconds();
+        }
         long t0 = System.nanoTime();
         sim.runUntil(s.seconds(), dt);
         double wall = (System.nanoTime() - t0) / 1e9;

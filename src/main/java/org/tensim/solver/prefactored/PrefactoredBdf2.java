@@ -50,6 +50,14 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public static final int DEFAULT_NEWTON_ITERATIONS = 1;
     /** Default cap on CG iterations per Newton iteration. */
     public static final int DEFAULT_KRYLOV_ITERATIONS = 4;
+    /**
+     * Newton iterations per step where stiff one-sided contact acts (a diaphragm in bone surfaces): with the
+     * default single iteration the contact's stiffness, linearised once, leaves a residual that accumulates, and
+     * a diaphragm at rest in the thorax sinks (docs/thorax.md).
+     */
+    public static final int CONTACT_NEWTON_ITERATIONS = 3;
+    /** Cap on CG iterations per Newton iteration where stiff contact acts (see {@link #CONTACT_NEWTON_ITERATIONS}). */
+    public static final int CONTACT_KRYLOV_ITERATIONS = 20;
     /** Default relative residual at which CG stops. */
     public static final double DEFAULT_KRYLOV_TOLERANCE = 1e-3;
 

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.app.Main;
+import org.tensim.tuning.TunableScenes;
 import picocli.CommandLine;
 
 class GuiCommandTest {
@@ -58,7 +59,7 @@ class GuiCommandTest {
         assertEquals(org.tensim.experiment.diaphragm.ResolutionPick.read().rings(), c.rings,
                 "the resolution study's pick (the paper's 43 rings when none is committed)");
         assertEquals("diaphragm", c.scene);
-        assertTrue(GuiScenes.opensInRealTime("diaphragm") && !GuiScenes.opensInRealTime("cube"));
+        assertTrue(TunableScenes.opensInRealTime("diaphragm") && !TunableScenes.opensInRealTime("cube"));
     }
 
     @Test

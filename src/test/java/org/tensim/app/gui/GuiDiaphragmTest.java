@@ -19,6 +19,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.ParameterBindingTest;
 
 /**
  * The GUI on the diaphragm (coarse, so that it moves quickly): drawn as a shaded
@@ -53,9 +55,9 @@ class GuiDiaphragmTest {
         GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, true, 2, true);
         try {
             waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
-            assertEquals(IntegratorCatalog.REAL_TIME, w.tuning().integrator().name());
-            assertEquals(IntegratorCatalog.REAL_TIME_STEP_S, w.runner().timeStep());
-            assertEquals(IntegratorCatalog.REAL_TIME,
+            assertEquals(Integrators.REAL_TIME, w.tuning().integrator().name());
+            assertEquals(Integrators.REAL_TIME_STEP_S, w.runner().timeStep());
+            assertEquals(Integrators.REAL_TIME,
                     w.scene().bodies().get(0).simulation().integrator().name(), "the running simulation's");
             assertEquals(2, w.runner().threads(), "--threads 2 reaches the step");
             // BDF2 estimates its error once two steps of the same size are behind it.

@@ -17,6 +17,8 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.tunable.CubeViewScene;
+import org.tensim.tuning.MembraneTestScene;
+import org.tensim.tuning.Tuning;
 
 /**
  * Shaded two-colour surfaces, the tendon model switch (a rebuild), displacement

@@ -20,13 +20,16 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.ObjWriter;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * {@code tensim gui --thorax}: the decimated BodyParts3D diaphragm of {@code ThoraxCommandTest} in the shared thorax
  * opens, runs two seconds at most in real time and reports the live readouts (dome descent, contact area, penetration,
- * attached area) in its closing line. Paced: the window opens with {@code bdf2} at 25 ms, one Newton iteration of four
- * CG iterations, which the thorax needs more of (docs/thorax.md, "Solver settings"): kept short, the run stays within
- * the first breath. Skipped where {@code ../shared} or a display is absent.
+ * attached area) in its closing line. With a thorax the window opens with the step converged for contact
+ * ({@code bdf2-contact}: 3 Newton x 20 CG at 5 ms; docs/thorax.md, "Solver settings"), not the real-time step that
+ * drifts there. Skipped where {@code ../shared} or a display is absent.
  */
 class GuiThoraxTest {
     static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
@@ -42,8 +45,14 @@ class GuiThoraxTest {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
         assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
         assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
-        TriangleMesh full = MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh();
-        TriangleMesh coarse = VertexClustering.simplify(full, new int[full.vertexCount()], 0.006).mesh();
+        // decimated face by face, as ThoraxCommandTest does: the 3 mm shell's faces must not merge
+        TwoSurfaces faces = DiaphragmSetup.surfaces(MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh(), 0.003)
+                .surfaces();
+        int[] groups = new int[faces.mesh().vertexCount()];
+        for (int v = 0; v < groups.length; v++) {
+            groups[v] = faces.isUpper(v) ? 1 : 0;
+        }
+        TriangleMesh coarse = VertexClustering.simplify(faces.mesh(), groups, 0.006).mesh();
         Path mesh = dir.resolve("coarse.obj");
         ObjWriter.write(mesh, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
@@ -64,6 +73,8 @@ class GuiThoraxTest {
                 new com.fasterxml.jackson.core.type.TypeReference<Map<String, Object>>() { });
         System.out.println("gui --thorax: " + m);
         assertEquals("diaphragm", m.get("scene"));
+        assertEquals(Integrators.CONTACT, m.get("integrator"), m.toString());
+        assertEquals(Integrators.CONTACT_STEP_S, ((Number) m.get("dt_s")).doubleValue(), 1e-12, m.toString());
         assertTrue(((Number) m.get("steps")).longValue() > 0, m.toString());
         for (String key : new String[] {"right_dome_descent_mm", "left_dome_descent_mm", "contact_area_mm2",
             "bone_penetration_mm", "max_bone_penetration_mm", "cartilage_marker_cranial_mm"}) {

@@ -21,6 +21,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.tuning.Settings;
 
 /**
  * The window as a user sees it: it draws the scene, the picture moves while the

@@ -12,6 +12,9 @@ import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.Tuning;
 
 /**
  * Last-used parameters tuned with the plane rule's tendon control come back in a window without it (opened with the
@@ -23,7 +26,7 @@ class LastUsedTendonTest {
 
     private static Tuning tuning(TendonRule rule, boolean labelled) {
         return new Tuning("diaphragm", DiaphragmViewScene.parameters(BoundaryConditions.MuscleLoad.FIBRES, rule,
-                labelled), 0.025, true, IntegratorCatalog.available(), "fibres");
+                labelled), 0.025, true, Integrators.choices(), "fibres");
     }
 
     @Test

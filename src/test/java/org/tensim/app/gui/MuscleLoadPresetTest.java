@@ -19,6 +19,13 @@ import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.ParameterBindingTest;
+import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.RecordingTarget;
+import org.tensim.tuning.Settings;
+import org.tensim.tuning.TunableScenes;
+import org.tensim.tuning.Tuning;
 
 /**
  * The GUI's muscle load: the fibres' tension by default, with their amplitude; presets of version 2 record the
@@ -33,7 +40,7 @@ class MuscleLoadPresetTest {
 
     private Tuning tuning(ViewScene s, SceneFactory f) {
         Tuning t = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), f.hasTendonChoice(),
-                IntegratorCatalog.available(), f.muscleLoad());
+                Integrators.choices(), f.muscleLoad());
         t.bind(new RecordingTarget(applied));
         return t;
     }
@@ -85,8 +92,8 @@ class MuscleLoadPresetTest {
         assertEquals(List.of("muscleLoad=pressure", "muscleActionPa=3000.0"), applied,
                 "the load first (it rebuilds the scene), then the values");
         // What the user had: the pressure scene at 3 kPa, as built when the pressure was the default.
-        SceneFactory pressureFactory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 6,
-                GuiScenes.Source.defaults().boxes(), "pressure"));
+        SceneFactory pressureFactory = TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 6,
+                TunableScenes.Source.defaults().boxes(), "pressure"));
         ViewScene before = pressureFactory.create(true, Map.of(DiaphragmViewScene.MUSCLE_ACTION, 3000.0));
         ViewScene loaded = f.create(t.tensegrityTendon(), t.muscleLoad(), t.snapshot().values());
         double dt = before.defaultTimeStep();
@@ -136,7 +143,7 @@ class MuscleLoadPresetTest {
         assertTrue(m.contains("'muscleLoad'") && m.contains("'fibers'") && m.contains("pressure"), m);
         ViewScene cube = CubeViewScene.create();
         Tuning c = new Tuning(cube.name(), cube.parameters(), cube.defaultTimeStep(), false,
-                IntegratorCatalog.available());
+                Integrators.choices());
         Files.writeString(p, "{\"version\": 2, \"scene\": \"cube\", \"muscleLoad\": \"fibres\"}");
         m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(p, c)).getMessage();
         assertTrue(m.contains("'muscleLoad'") && m.contains("no muscle"), m);
@@ -165,7 +172,7 @@ class MuscleLoadPresetTest {
         SceneFactory f = ParameterBindingTest.coarseDiaphragm();
         ViewScene first = f.create(true);
         Tuning t = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), f.hasTendonChoice(),
-                IntegratorCatalog.available(), f.muscleLoad(), f::parameters);
+                Integrators.choices(), f.muscleLoad(), f::parameters);
         t.bind(new RecordingTarget(applied));
         ParameterControl slider = new ParameterControl(t.parameter(DiaphragmViewScene.MUSCLE_ACTION), t, m -> { });
         t.addListener(slider::refresh);

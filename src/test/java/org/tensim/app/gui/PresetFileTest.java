@@ -15,6 +15,12 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.ConfigDir;
+import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.RecordingTarget;
+import org.tensim.tuning.Settings;
+import org.tensim.tuning.Tuning;
 
 /** Presets: round trip, atomic writes, and every kind of malformed file refused with the field named. */
 class PresetFileTest {
@@ -27,7 +33,7 @@ class PresetFileTest {
     @BeforeEach
     void setUp() {
         ViewScene s = CubeViewScene.create();
-        tuning = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), false, IntegratorCatalog.available());
+        tuning = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), false, Integrators.choices());
         applied = new java.util.ArrayList<>();
         tuning.bind(new RecordingTarget(applied));
     }
@@ -42,7 +48,7 @@ class PresetFileTest {
         PresetFile.write(f, saved);
 
         ViewScene s = CubeViewScene.create();
-        Tuning other = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), false, IntegratorCatalog.available());
+        Tuning other = new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), false, Integrators.choices());
         Settings read = PresetFile.read(f, other);
         assertEquals(saved, read);
         other.apply(read, f.toString());

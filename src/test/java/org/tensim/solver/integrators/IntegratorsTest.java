@@ -42,6 +42,50 @@ class IntegratorsTest {
         assertTrue(e.getMessage().contains("'rk45'") && e.getMessage().contains("implicit-euler"), e.getMessage());
     }
 
+    /**
+     * One catalogue: the methods, then the named variants; every name is accepted by {@link Integrators#create},
+     * an unknown one is refused with every valid name.
+     */
+    @Test
+    void catalogueHoldsTheMethodsAndTheirNamedVariants() {
+        List<String> all = Integrators.choiceNames();
+        assertEquals(Integrators.names(), all.subList(0, Integrators.names().size()));
+        assertEquals(List.of(Integrators.REAL_TIME_IMPLICIT, Integrators.LARGE_STEP_ACCURATE, Integrators.CONTACT),
+                all.subList(Integrators.names().size(), all.size()));
+        List<IntegratorChoice> menu = Integrators.choices();
+        assertEquals(Integrators.DEFAULT, menu.get(0).name(), "the paper's first");
+        assertEquals(all.size(), menu.size());
+        for (IntegratorChoice c : menu) {
+            assertEquals(c, Integrators.choice(c.name()));
+            if (c.name().equals(Integrators.REAL_TIME_IMPLICIT)) {
+                ImplicitEuler ie = (ImplicitEuler) c.create();
+                assertEquals("implicit-euler", ie.name());
+                assertEquals(Integrators.REAL_TIME_CG_TOLERANCE, ie.tolerance());
+            } else if (c.name().equals(Integrators.LARGE_STEP_ACCURATE)) {
+                org.tensim.solver.prefactored.PrefactoredBdf2 b =
+                        (org.tensim.solver.prefactored.PrefactoredBdf2) Integrators.create(c.name());
+                assertEquals("bdf2", b.name());
+                assertEquals(2, b.newtonIterations());
+                assertEquals(8, b.krylovIterations());
+            } else if (c.name().equals(Integrators.CONTACT)) {
+                org.tensim.solver.prefactored.PrefactoredBdf2 b =
+                        (org.tensim.solver.prefactored.PrefactoredBdf2) Integrators.create(c.name());
+                assertEquals("bdf2", b.name());
+                assertEquals(3, b.newtonIterations());
+                assertEquals(20, b.krylovIterations());
+            } else {
+                assertEquals(c.name(), c.create().name());
+            }
+            assertTrue(c.create() != c.create(), "a new instance for every body");
+        }
+        assertEquals(Integrators.REAL_TIME, Integrators.choice(Integrators.REAL_TIME).create().name());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Integrators.choice("bdf3"));
+        assertEquals("unknown integrator 'bdf3': expected one of " + String.join(", ", all), e.getMessage());
+        java.util.List<String> completion = new java.util.ArrayList<>();
+        new Integrators.Names().forEach(completion::add);
+        assertEquals(all, completion, "help texts list every name");
+    }
+
     /** A free, tumbling 4-node chain with damped springs and no external force keeps its momentum. */
     @ParameterizedTest
     @MethodSource("names")

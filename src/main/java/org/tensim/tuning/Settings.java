@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.util.Collections;
 import java.util.LinkedHashMap;

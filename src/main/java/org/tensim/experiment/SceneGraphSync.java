@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment;
 
 import org.tensim.solver.Simulation;
 import org.tensim.solver.StepListener;
@@ -6,14 +6,16 @@ import org.tensim.solver.StepListener;
 /**
  * What a scene graph does after each step: copy the positions, by authored node id,
  * into a float array laid out like a vertex buffer (x, y, z per vertex). Timed so
- * that the benchmark can report the sync separately from the solver.
+ * that the benchmark and the real-time study can report the sync separately from the
+ * solver; a stand-in for the view's own copy, without a display.
  */
-final class SceneGraphSync implements StepListener {
+public final class SceneGraphSync implements StepListener {
     private final float[] coords;
     private long nanos;
     private long calls;
 
-    SceneGraphSync(int nodes) {
+    /** A sync of {@code nodes} nodes. */
+    public SceneGraphSync(int nodes) {
         coords = new float[3 * nodes];
     }
 
@@ -30,17 +32,18 @@ final class SceneGraphSync implements StepListener {
     }
 
     /** Mean time per sync since the last reset, ms. */
-    double meanMillis() {
+    public double meanMillis() {
         return calls == 0 ? 0 : nanos / 1e6 / calls;
     }
 
-    void reset() {
+    /** Starts the mean of {@link #meanMillis()} again. */
+    public void reset() {
         nanos = 0;
         calls = 0;
     }
 
     /** The copied coordinates (keeps the copy from being optimised away). */
-    float[] coords() {
+    public float[] coords() {
         return coords;
     }
 }

@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -12,9 +12,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
-import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions;
@@ -22,7 +20,6 @@ import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
-import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
@@ -47,8 +44,8 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * <p>Configurations: the paper's RK2 at the scene's stable step (1 and 2 threads;
  * and with the sternum's node mass scaled, which lifts the sternum's limit on the
  * step at coarse resolutions), and implicit Euler at 5, 10 and 20 ms with a CG
- * tolerance of 1e-3 (a larger step than RK2's stability allows; the CG solve is
- * the price), and the large-step BDF2 ({@link PrefactoredBdf2}, two threads) at
+ * tolerance of 1e-3 (the catalogue's {@value Integrators#REAL_TIME_IMPLICIT}; a larger
+ * step than RK2's stability allows; the CG solve is the price), and the large-step BDF2 ({@link PrefactoredBdf2}, two threads) at
  * 5-25 ms with 4 and 8 CG iterations a step. The comparison with RK2 at the same
  * resolution separates the integrator's error from the resolution's.
  */
@@ -57,8 +54,6 @@ public final class RealTimeStudy {
     public static final int[] RINGS = {10, 14, 20, 28, 43};
     /** Implicit Euler steps tried, s. */
     static final double[] IMPLICIT_STEPS = {0.005, 0.01, 0.02};
-    /** CG relative residual for the implicit steps: 1e-2 and 1e-3 gave the same field to 4 digits here. */
-    static final double CG_TOLERANCE = 1e-3;
     /** BDF2 steps tried, s (a multiple of each divides {@link StudyRun#SAMPLE_S} or the run). */
     static final double[] BDF2_STEPS = {0.005, 0.01, 0.02, 0.025, 1.0 / 30, 0.05};
     /** CG iterations per step of the more accurate BDF2 rows (the default is {@link PrefactoredBdf2#DEFAULT_KRYLOV_ITERATIONS}). */
@@ -100,7 +95,7 @@ public final class RealTimeStudy {
                 1, true));
         for (double h : IMPLICIT_STEPS) {
             c.add(new Config(String.format(Locale.ROOT, "implicit-euler at %.0f ms / 1 thread", 1e3 * h),
-                    () -> new ImplicitEuler().setTolerance(CG_TOLERANCE), h, 1, false));
+                    Integrators.choice(Integrators.REAL_TIME_IMPLICIT)::create, h, 1, false));
         }
         for (double h : BDF2_STEPS) {
             c.add(new Config(String.format(Locale.ROOT, "bdf2 at %.0f ms / 2 threads", 1e3 * h),

@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -10,12 +10,13 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * A stiffness change made in the GUI while the diaphragm runs must not stall the
@@ -65,15 +66,15 @@ class RunnerStallTest {
     private static final double MAX_WALL_RATIO = 10;
 
     @ParameterizedTest
-    @ValueSource(strings = {"rk2", IntegratorCatalog.REAL_TIME})
+    @ValueSource(strings = {"rk2", Integrators.REAL_TIME})
     void stiffnessChangeWhileRunningDoesNotStallTheSteps(String integrator) throws Exception {
-        SceneFactory factory = GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 14, null));
+        SceneFactory factory = TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 14, null));
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), true,
-                IntegratorCatalog.available());
+                Integrators.choices());
         tuning.setIntegrator(integrator);
         if (!"rk2".equals(integrator)) {
-            tuning.set(Tuning.TIME_STEP, IntegratorCatalog.REAL_TIME_STEP_S);
+            tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
         }
         long[] stepNanos = new long[1 << 20];
         long[] gcNanos = new long[stepNanos.length];
@@ -121,7 +122,7 @@ class RunnerStallTest {
         runner.play();
         long[] changeNanos = new long[CHANGES + WARM_UP_CHANGES];
         try {
-            GuiTestSupport.waitFor("the first steps", () -> recorded.get() > 4 * WINDOW);
+            waitFor("the first steps", () -> recorded.get() > 4 * WINDOW);
             Thread.sleep(400); // the first critical-step estimate of the new scene
             double e0 = tuning.get(DiaphragmViewScene.TISSUE_STIFFNESS);
             for (int c = 0; c < changeNanos.length; c++) {
@@ -129,7 +130,7 @@ class RunnerStallTest {
                 // Softer, then back: stays stable for RK2 at the scene's step.
                 changeNanos[c] = System.nanoTime();
                 tuning.set(DiaphragmViewScene.TISSUE_STIFFNESS, c % 2 == 0 ? 0.7 * e0 : e0);
-                GuiTestSupport.waitFor("steps after change " + c, () -> recorded.get() > before + 4 * WINDOW);
+                waitFor("steps after change " + c, () -> recorded.get() > before + 4 * WINDOW);
                 Thread.sleep(500); // longer than the critical-step estimate's 0.3 s throttle
             }
         } finally {
@@ -208,5 +209,16 @@ class RunnerStallTest {
         List<Long> s = new ArrayList<>(l);
         s.sort(null);
         return s.get((int) Math.min(s.size() - 1, Math.floor(q * s.size())));
+    }
+
+    /** Waits for a condition; the limit only guards against hanging, it is not what is tested. */
+    private static void waitFor(String what, java.util.function.BooleanSupplier condition) throws InterruptedException {
+        long end = System.nanoTime() + 60_000_000_000L;
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > end) {
+                org.junit.jupiter.api.Assertions.fail("gave up waiting for " + what);
+            }
+            Thread.sleep(20);
+        }
     }
 }

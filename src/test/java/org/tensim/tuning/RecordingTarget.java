@@ -1,12 +1,13 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.util.List;
+import org.tensim.solver.integrators.IntegratorChoice;
 
 /** A tuning target that records what reaches it, as "key=value" in order (preset tests). */
-final class RecordingTarget implements Tuning.Target {
+public final class RecordingTarget implements Tuning.Target {
     private final List<String> applied;
 
-    RecordingTarget(List<String> applied) {
+    public RecordingTarget(List<String> applied) {
         this.applied = applied;
     }
 

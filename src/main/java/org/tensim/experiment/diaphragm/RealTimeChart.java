@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import java.io.IOException;
 import java.nio.file.Path;

@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import org.tensim.solver.ErrorEstimating;
 import org.tensim.solver.Integrator;
@@ -8,17 +8,17 @@ import org.tensim.solver.Integrator;
  * ({@link ErrorEstimating}), for the status bar and the {@code --run-for} summary.
  * Integrators without one read NaN: nothing is shown rather than a guess.
  */
-final class ErrorReadout {
+public final class ErrorReadout {
     private ErrorReadout() {
     }
 
     /** The integrator's relative error estimate of its last step, or NaN when it has none. */
-    static double of(Integrator i) {
+    public static double of(Integrator i) {
         return i instanceof ErrorEstimating e ? e.errorEstimate() : Double.NaN;
     }
 
     /** The larger of two estimates, NaN (none) counting as absent. */
-    static double worse(double a, double b) {
+    public static double worse(double a, double b) {
         if (Double.isNaN(a)) {
             return b;
         }

@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;

@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -17,12 +17,12 @@ import org.tensim.scene.tunable.ViewScene;
  * that can be mass-spring or tensegrity (rigid links along the tendon's edges).
  * A square membrane in the x-z plane, border fixed, sagging under gravity.
  */
-final class MembraneTestScene implements ViewScene {
+public final class MembraneTestScene implements ViewScene {
     static final int N = 12;
     static final double SPACING_M = 0.1;
     static final String STIFFNESS = "stiffnessNPerM";
     /** Needs a new scene: gravity is set when the topology is built (a stand-in for a new mesh or cycle). */
-    static final String GRAVITY = "gravityMPerS2";
+    public static final String GRAVITY = "gravityMPerS2";
     static final List<TunableParameter> PARAMETERS = List.of(
             TunableParameter.log(STIFFNESS, "Stiffness", "N/m", 1, 1000, 50, "every spring"),
             TunableParameter.linear(GRAVITY, "Gravity", "m/s^2", 0, 20, 9.81, "set at build").restarting());
@@ -83,7 +83,7 @@ final class MembraneTestScene implements ViewScene {
         }
     }
 
-    static SceneFactory factory() {
+    public static SceneFactory factory() {
         return new SceneFactory() {
             @Override
             public String name() {

@@ -1,4 +1,4 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;

@@ -1,12 +1,12 @@
-package org.tensim.bench;
+package org.tensim.experiment.diaphragm;
 
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.nio.file.Path;
-import org.tensim.experiment.diaphragm.ResolutionStudy;
+import org.tensim.experiment.SceneGraphSync;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;

@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
+import org.tensim.solver.integrators.IntegratorChoice;
 
 /**
  * The values the user has tuned, and the one way they reach the simulation.

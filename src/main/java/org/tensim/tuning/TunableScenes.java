@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,10 +12,11 @@ import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.solver.integrators.Integrators;
 
 /** The scenes the GUI can show, by name. */
-public final class GuiScenes {
-    private GuiScenes() {
+public final class TunableScenes {
+    private TunableScenes() {
     }
 
     /**
@@ -57,8 +58,8 @@ public final class GuiScenes {
     }
 
     /**
-     * Whether the scene opens with the large-step solver ({@link IntegratorCatalog#REAL_TIME} at
-     * {@link IntegratorCatalog#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
+     * Whether the scene opens with the large-step solver ({@link Integrators#REAL_TIME} at
+     * {@link Integrators#REAL_TIME_STEP_S}) rather than the paper's RK2: the diaphragm, which RK2
      * runs at a few hundredths of real time at the paper's resolution (43 rings: 11,354 diaphragm nodes,
      * the mesh of {@code ./tensim diaphragm}). Last-used parameters and presets
      * still apply over it.

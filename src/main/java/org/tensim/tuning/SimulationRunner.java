@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.util.List;
 import java.util.Map;
@@ -6,13 +6,15 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
-import org.tensim.solver.Simulation;
-import org.tensim.solver.SimulationDivergedException;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.integrators.IntegratorChoice;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * Runs a scene's simulations on their own thread. Everything that changes the
@@ -228,9 +230,9 @@ public final class SimulationRunner implements Tuning.Target {
         commands.add(() -> {
             ViewScene s = source.get();
             Settings now = settings.get();
-            IntegratorChoice integrator = IntegratorCatalog.available().stream()
+            IntegratorChoice integrator = Integrators.choices().stream()
                     .filter(c -> c.name().equals(now.integrator())).findFirst()
-                    .orElse(IntegratorCatalog.available().get(0));
+                    .orElse(Integrators.choices().get(0));
             for (Map.Entry<String, Double> e : now.values().entrySet()) {
                 if (!e.getKey().equals(Tuning.TIME_STEP) && !restarts(s, e.getKey())) {
                     s.apply(e.getKey(), e.getValue());

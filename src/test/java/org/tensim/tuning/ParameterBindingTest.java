@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -9,22 +9,24 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.api.Test;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.solver.integrators.IntegratorChoice;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * Each control reaches the simulation: a value set through {@link Tuning} changes
  * what the scene's simulations compute, for every parameter of every scene; a
  * refused value changes nothing.
  */
-class ParameterBindingTest {
+public class ParameterBindingTest {
     /** Applies changes at once to one scene, as the runner does between steps. */
     static final class DirectTarget implements Tuning.Target {
         final ViewScene scene;
@@ -72,9 +74,9 @@ class ParameterBindingTest {
     }
 
     /** The diaphragm at a coarse resolution (6 rings per face), quick to build and step. */
-    static SceneFactory coarseDiaphragm() {
-        return GuiScenes.factory("diaphragm", new GuiScenes.Source(null, "mm", 2.5, 6,
-                GuiScenes.Source.defaults().boxes()));
+    public static SceneFactory coarseDiaphragm() {
+        return TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 6,
+                TunableScenes.Source.defaults().boxes()));
     }
 
     static SceneFactory factory(String name) {
@@ -83,11 +85,11 @@ class ParameterBindingTest {
 
     static Tuning tuning(ViewScene s, SceneFactory f) {
         return new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), f.hasTendonChoice(),
-                IntegratorCatalog.available());
+                Integrators.choices());
     }
 
     /** Steps the scene and returns every body's positions, concatenated. */
-    static double[] run(ViewScene s, double dt, int steps) {
+    public static double[] run(ViewScene s, double dt, int steps) {
         for (int i = 0; i < steps; i++) {
             for (Body b : s.bodies()) {
                 b.simulation().step(dt);
@@ -205,7 +207,7 @@ class ParameterBindingTest {
         t.set(Tuning.TIME_STEP, 2e-4);
         assertEquals(2e-4, target.dt);
         var before = s.bodies().get(0).simulation().integrator();
-        t.setIntegrator(IntegratorCatalog.available().get(0).name());
+        t.setIntegrator(Integrators.choices().get(0).name());
         assertNotSame(before, s.bodies().get(0).simulation().integrator(), "a fresh integrator instance per body");
         assertThrows(IllegalArgumentException.class, () -> t.setIntegrator("no-such-integrator"));
     }
