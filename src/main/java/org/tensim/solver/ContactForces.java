@@ -293,6 +293,27 @@ public final class ContactForces {
         return max;
     }
 
+    /** Gap g of pair e, m: the signed distance below which the pair is in contact (negative for a node that started inside). */
+    public double gap(int e) {
+        return gap[e];
+    }
+
+    /**
+     * Every pair's signed distance d (m) at time t (s) and positions x (m), into {@code d} (one per pair): pair e
+     * is in contact when {@code d[e] < gap(e)}. For a listener reading the state after a step (which nodes touch,
+     * how deep): it uses the force pass's cached poses and scratch, so it allocates nothing and must be called on
+     * the simulation thread, between steps.
+     */
+    public void distances(double t, double[] x, double[] d) {
+        if (d.length < node3.length) {
+            throw new IllegalArgumentException("distances: room for " + d.length + " of " + node3.length + " pairs");
+        }
+        final double[] n = scratch;
+        for (int e = 0; e < node3.length; e++) {
+            d[e] = distance(e, t, x, n);
+        }
+    }
+
     /** Body index of pair e (in the topology's contact bodies). */
     public int body(int e) {
         return body[e];

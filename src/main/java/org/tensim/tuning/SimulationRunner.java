@@ -244,7 +244,7 @@ public final class SimulationRunner implements Tuning.Target {
                 b.simulation().setWarningSink(m -> events.warning(b.name() + ": " + m));
             }
             threads.attach(bodies);
-            FrameBuffer frames = new FrameBuffer(bodies);
+            FrameBuffer frames = new FrameBuffer(bodies, s.liveState());
             ProbeRecorder probes = new ProbeRecorder(bodies, PROBE_INTERVAL_S, 1 << 14);
             Simulation last = bodies.get(bodies.size() - 1).simulation();
             last.addListener(frames);

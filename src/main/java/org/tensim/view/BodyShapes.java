@@ -2,6 +2,7 @@ package org.tensim.view;
 
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.Body;
+import org.tensim.scene.tunable.LiveState;
 import java.util.ArrayList;
 import java.util.List;
 import org.jogamp.java3d.Appearance;
@@ -40,6 +41,9 @@ final class BodyShapes {
     private final float[] rest;
     private final double vectorScale;
     private final List<Part> parts = new ArrayList<>();
+    /** Colours of the live state's marks (null: the body is not marked), and the marks of the frame being drawn. */
+    private final float[][] markColours;
+    private byte[] marks;
 
     /** One shape, its geometry, its layer, and the updater that refills its arrays from positions. */
     private static final class Part implements GeometryUpdater {
@@ -74,8 +78,13 @@ final class BodyShapes {
         void fill(float[] positions);
     }
 
-    BodyShapes(Body body, float[] initial, double vectorScale) {
+    /**
+     * @param markColours colours of the live state's marks 1, 2, ... on this body's surface ({@code LiveState}), or
+     *                    null when it has none
+     */
+    BodyShapes(Body body, float[] initial, double vectorScale, float[][] markColours) {
         this.body = body;
+        this.markColours = markColours;
         this.vectorScale = vectorScale;
         this.rest = new float[initial.length];
         SystemState s = body.simulation().state();
@@ -128,6 +137,15 @@ final class BodyShapes {
 
     /** Rewrites every geometry from positions (m, 3 per node). Behaviour thread only. */
     void update(float[] positions) {
+        update(positions, null);
+    }
+
+    /**
+     * Rewrites every geometry from positions (m, 3 per node) and, on a marked body, the surface's colours from the
+     * frame's marks (one per node; null: the body's own colours). Behaviour thread only.
+     */
+    void update(float[] positions, byte[] frameMarks) {
+        marks = frameMarks;
         for (Part p : parts) {
             p.refill(positions);
         }
@@ -171,9 +189,12 @@ final class BodyShapes {
         float[] normals = new float[3 * n];
         g.setCoordRefFloat(coords);
         g.setNormalRefFloat(normals);
+        float[] own = coloured ? body.vertexColours().clone() : null;
+        float[] colours = coloured ? own.clone() : null;
         if (coloured) {
-            g.setColorRefFloat(body.vertexColours().clone());
+            g.setColorRefFloat(colours);
         }
+        boolean live = coloured && markColours != null;
         Appearance app = new Appearance();
         Material m = new Material();
         m.setDiffuseColor(0.8f, 0.45f, 0.4f);
@@ -193,6 +214,9 @@ final class BodyShapes {
         parts.add(new Part(Layer.SURFACE, new Shape3D(g, app), g, ra, p -> {
             System.arraycopy(p, 0, coords, 0, coords.length);
             Normals.compute(p, tri, normals);
+            if (live && marks != null) {
+                LiveState.paint(own, marks, markColours, colours);
+            }
         }));
     }
 

@@ -36,8 +36,9 @@ final class FrameUpdateBehavior extends Behavior {
     public void processStimulus(Iterator<WakeupCriterion> criteria) {
         FrameBuffer.Frame f = buffer.takeNewer();
         if (f != null) {
+            int marked = buffer.live() == null ? -1 : buffer.live().body();
             for (int b = 0; b < shapes.size(); b++) {
-                shapes.get(b).update(f.positions[b]);
+                shapes.get(b).update(f.positions[b], b == marked ? f.marks : null);
             }
             shownTime = f.time;
             shownStep = f.step;

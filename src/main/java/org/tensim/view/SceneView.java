@@ -139,7 +139,8 @@ public final class SceneView {
                     hi[a] = Math.max(hi[a], x[3 * node + a] + off[a]);
                 }
             }
-            BodyShapes s = new BodyShapes(b, initial, displacementScale);
+            boolean marked = frames.live() != null && frames.live().body() == bodies.indexOf(b);
+            BodyShapes s = new BodyShapes(b, initial, displacementScale, marked ? frames.live().markColours() : null);
             Transform3D t = new Transform3D();
             t.setTranslation(new Vector3d(off));
             TransformGroup tg = new TransformGroup(t);

@@ -102,6 +102,11 @@ class ThoraxCommandTest {
         assertTrue(num(s, "cartilage_marker_cranial_mm") > 0 && num(s, "cartilage_marker_ventral_mm") > 0,
                 s.toString());
         assertTrue(num(s, "max_penetration_past_rest_mm") < 1, s.toString());
+        // The area touching the bones at end-inspiration: some of the muscle, at most the largest over the run.
+        double contact = num(s, "contact_area_mm2");
+        assertTrue(contact > 0 && contact < 0.5 * area, "contact " + contact + " of " + area);
+        assertTrue(num(s, "max_contact_area_mm2") >= contact, s.toString());
+        assertTrue(s.containsKey("contact_area_expiration_mm2"), s.toString());
         // With the muscle off and the ribs breathing, the converged step keeps the dome's top where the ribs
         // leave it (lifted by a millimetre or so with the costal margin): the single-iteration step let it
         // sink 3.5 mm by 1.4 s under the contact's residual.

@@ -56,7 +56,7 @@ public final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--thorax", paramLabel = "DIR",
             description = "a thorax of bone surfaces (a folder with a parts.json), as `tensim diaphragm --thorax`:"
-                    + " the diaphragm attached at its origins (green) and sliding on the bones (blue tint)")
+                    + " the diaphragm attached at its origins (green), the nodes touching a bone at each frame (blue)")
     Path thorax;
 
     @Option(names = "--labels", paramLabel = "FILE", description = "per-vertex labels of --mesh, as `tensim diaphragm"
@@ -157,7 +157,7 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
-                TunableScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null);
+                TunableScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null, thorax != null);
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();
@@ -219,13 +219,26 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime, boolean loadGiven) throws Exception {
+        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, loadGiven, false);
+    }
+
+    /**
+     * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean, boolean)}; with {@code contact} (a
+     * thorax of bone surfaces) starting from the step converged for contact ({@link Integrators#CONTACT}), which
+     * takes precedence over realTime: the real-time step drifts there (docs/thorax.md).
+     */
+    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
+            boolean realTime, boolean loadGiven, boolean contact) throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = factory.muscleLoad() == null
                 ? new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
                         Integrators.choices())
                 : new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
                         Integrators.choices(), factory.muscleLoad(), factory::parameters);
-        if (realTime) {
+        if (contact) {
+            tuning.setIntegrator(Integrators.CONTACT);
+            tuning.set(Tuning.TIME_STEP, Integrators.CONTACT_STEP_S);
+        } else if (realTime) {
             tuning.setIntegrator(Integrators.REAL_TIME);
             tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
         }
@@ -267,7 +280,7 @@ public final class GuiCommand implements Callable<Integer> {
             return null;
         }
         try {
-            Settings s = PresetFile.read(file, tuning);
+            Settings s = readLastUsed(file, tuning);
             if (keepLoad && s.muscleLoad() != null && !s.muscleLoad().equals(tuning.muscleLoad())) {
                 return "Last-used parameters not restored: they were tuned with muscle load " + s.muscleLoad()
                         + ", and --muscle-load " + tuning.muscleLoad() + " was given (" + file + ")";
@@ -283,6 +296,56 @@ public final class GuiCommand implements Callable<Integer> {
                 bad = file;
             }
             return "Last-used parameters not restored (kept as " + bad + "): " + e.getMessage();
+        }
+    }
+
+    /**
+     * Reads last-used parameters for this window. The tendon boundary's control belongs to how the scene was opened
+     * (the tendon rule, or none with a label file), which may change from one start to the next (tune the plane, save
+     * the labels, reopen with them): a tendon control this window does not have is left out rather than making the
+     * whole file unusable. Anything else wrong is refused as {@link PresetFile#read} refuses it.
+     */
+    static Settings readLastUsed(Path file, Tuning tuning) throws PresetFile.PresetException {
+        try {
+            return PresetFile.read(file, tuning);
+        } catch (PresetFile.PresetException first) {
+            com.fasterxml.jackson.databind.node.ObjectNode root;
+            try {
+                com.fasterxml.jackson.databind.JsonNode n = org.tensim.io.Json.mapper().readTree(Files.readAllBytes(file));
+                if (!(n instanceof com.fasterxml.jackson.databind.node.ObjectNode o)
+                        || !(o.get("parameters") instanceof com.fasterxml.jackson.databind.node.ObjectNode params)) {
+                    throw first;
+                }
+                boolean dropped = false;
+                for (String key : java.util.List.of(org.tensim.scene.tunable.DiaphragmViewScene.TENDON_PLANE,
+                        org.tensim.scene.tunable.DiaphragmViewScene.TENDON_SHARE)) {
+                    if (params.has(key) && !tuning.keys().contains(key)) {
+                        params.remove(key);
+                        dropped = true;
+                    }
+                }
+                if (!dropped) {
+                    throw first;
+                }
+                root = o;
+            } catch (java.io.IOException e) {
+                throw first;
+            }
+            Path tmp = file.resolveSibling(file.getFileName() + ".tendon.tmp");
+            try {
+                Files.write(tmp, org.tensim.io.Json.mapper().writeValueAsBytes(root));
+                return PresetFile.read(tmp, tuning);
+            } catch (java.io.IOException e) {
+                throw first;
+            } catch (PresetFile.PresetException e) {
+                throw new PresetFile.PresetException(e.getMessage().replace(tmp.toString(), file.toString()), e);
+            } finally {
+                try {
+                    Files.deleteIfExists(tmp);
+                } catch (java.io.IOException ignored) {
+                    // a left-over temporary file is harmless
+                }
+            }
         }
     }
 

@@ -27,6 +27,7 @@ import javax.swing.ToolTipManager;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
+import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.SimulationDivergedException;
@@ -53,6 +54,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private final ControlPanel controls;
     private final ProbeChart chart;
     private final StatusBar status = new StatusBar();
+    private final LivePanel live = new LivePanel();
+    private JMenuItem saveLabels;
     private final SimulationRunner runner;
     private final Timer uiTimer;
     private final Timer saveTimer;
@@ -103,8 +106,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         side.setPreferredSize(new Dimension(375, 700));
         side.getVerticalScrollBar().setUnitIncrement(16);
         frame.setJMenuBar(menus());
+        JPanel east = new JPanel(new BorderLayout());
+        east.add(live, BorderLayout.NORTH);
+        east.add(side, BorderLayout.CENTER);
         frame.getContentPane().add(centre, BorderLayout.CENTER);
-        frame.getContentPane().add(side, BorderLayout.EAST);
+        frame.getContentPane().add(east, BorderLayout.EAST);
         frame.getContentPane().add(status, BorderLayout.SOUTH);
         frame.pack();
         frame.setLocation(0, 0);
@@ -112,6 +118,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
 
         uiTimer = new Timer(250, e -> {
             chart.refresh();
+            live.refresh();
             status.update(runner, view.framesRendered());
             if (runner.divergence() != null) {
                 controls.showPlaying(false);
@@ -137,6 +144,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         file.add(item("Load preset...", this::loadPreset));
         file.add(item("Save preset...", this::savePreset));
         file.add(item("Save screenshot...", this::saveScreenshotDialog));
+        saveLabels = item("Save labels...", this::saveLabelsDialog);
+        saveLabels.setToolTipText("Writes the diaphragm's label per mesh vertex (tendon as tuned, muscle, origins) for"
+                + " --labels");
+        saveLabels.setEnabled(false);
+        file.add(saveLabels);
         file.addSeparator();
         file.add(item("Quit", this::close));
         bar.add(file);
@@ -165,6 +177,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
                 controls.setLayer("nodes", s.wireframeAtStart());
             }
             chart.attach(probes, s.bodies());
+            live.show(frames.live(), frames.readouts());
+            saveLabels.setEnabled(s instanceof DiaphragmViewScene);
             frame.setTitle("tensim: " + s.title());
         });
     }
@@ -282,6 +296,47 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         }
     }
 
+    private void saveLabelsDialog() {
+        JFileChooser c = new JFileChooser();
+        c.setFileFilter(new FileNameExtensionFilter("tensim vertex labels (*.labels, *.txt)", "labels", "txt"));
+        if (c.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path p = c.getSelectedFile().toPath();
+        boolean replace = false;
+        if (java.nio.file.Files.exists(p)) {
+            replace = JOptionPane.showConfirmDialog(frame, p + " exists. Replace it?", "Save labels",
+                    JOptionPane.YES_NO_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.YES_OPTION;
+            if (!replace) {
+                status.message("Labels not saved: " + p + " exists", true);
+                return;
+            }
+        }
+        saveLabels(p, replace);
+    }
+
+    /**
+     * Writes the labels of the diaphragm on screen ({@link DiaphragmViewScene#saveLabels}); an existing file is
+     * replaced only when {@code replace} (the dialog asks first). Reports in the status bar.
+     */
+    boolean saveLabels(Path file, boolean replace) {
+        if (!(scene instanceof DiaphragmViewScene d)) {
+            status.message("Labels: only the diaphragm has vertex labels", true);
+            return false;
+        }
+        try {
+            int n = d.saveLabels(file, replace);
+            status.message("Saved the labels of " + n + " vertices to " + file, false);
+            return true;
+        } catch (java.nio.file.FileAlreadyExistsException e) {
+            status.message("Labels not saved: " + file + " exists (not replaced)", true);
+            return false;
+        } catch (IOException | RuntimeException e) {
+            status.message("Cannot save labels to " + file + ": " + e.getMessage(), true);
+            return false;
+        }
+    }
+
     private static JFileChooser chooser() {
         JFileChooser c = new JFileChooser();
         c.setFileFilter(new FileNameExtensionFilter("tensim presets (*.json)", "json"));
@@ -370,6 +425,10 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
 
     StatusBar status() {
         return status;
+    }
+
+    LivePanel live() {
+        return live;
     }
 
     Tuning tuning() {

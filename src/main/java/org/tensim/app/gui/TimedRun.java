@@ -140,6 +140,9 @@ final class TimedRun {
         if (screenshot != null) {
             m.put("screenshot", screenshot.toAbsolutePath().toString());
         }
+        // The scene's live readouts at the end (the diaphragm's dome descent, contact area...), null where unmeasured.
+        SwingUtilities.invokeAndWait(() -> w.live().shownValues().forEach((k, v) -> m.put(k,
+                Double.isFinite(v) ? round(v, 3) : null)));
         SwingUtilities.invokeAndWait(w::close);
         if (error.get() != null) {
             throw new java.io.IOException("cannot save screenshot " + screenshot + ": " + error.get().getMessage(),

@@ -34,11 +34,11 @@ public final class BreathingMetrics implements StepListener {
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
     /**
-     * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's (free upper
-     * nodes within {@link #DOME_RADIUS_M} of the top horizontally, or on the midclavicular strip).
+     * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's
+     * ({@link DiaphragmScene#domeTopCandidates}).
      */
     private final int[] half;
-    /** Where each half's top is measured (right, left), for the summary; null for a half without upper nodes. */
+    /** Where each half's top is measured (right, left), for the summary. */
     private final String[] site;
     private double[] domeTopsExp;
     private double[] domeTopsInsp;
@@ -46,6 +46,16 @@ public final class BreathingMetrics implements StepListener {
     private final int[] cartilageMarkers;
     private double[] markerExp;
     private double[] markerInsp;
+    /** Per contact pair, its signed distance at the last step, m (scratch). */
+    private final double[] distances;
+    /** Per diaphragm node, whether it was counted in the contact area of this step (scratch, cleared after). */
+    private final boolean[] contactNodes;
+    /** Per diaphragm node, its lumped area, m^2. */
+    private final double[] nodeArea;
+    private double contactArea;
+    private double contactAreaExp = Double.NaN;
+    private double contactAreaInsp = Double.NaN;
+    private double maxContactArea;
     private double maxPenetration;
     private double maxPastGap;
     private int worstPair = -1;
@@ -68,64 +78,22 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
-        double[][] tops = scene.domeTops();
-        double[] b = scene.surfaces().mesh().bounds();
-        double centreX = 0.5 * (b[0] + b[3]);
-        double halfWidth = 0.5 * (b[3] - b[0]);
-        this.site = new String[2];
-        this.half = new int[nodes];
-        for (int d = 0; d < 2; d++) {
-            // A half's top is its own dome's when it lies clear of the midline; otherwise (the top found on the
-            // midline, next to the other, higher dome) the half has no dome of its own and is measured where the
-            // radiograph sees it, on its midclavicular line.
-            boolean own = tops[d] != null && Math.abs(tops[d][0] - centreX) >= OWN_TOP_FROM_MIDLINE * halfWidth;
-            double mcl = centreX + (d == 0 ? -0.5 : 0.5) * halfWidth;
-            site[d] = tops[d] == null ? null : own
-                    ? String.format(java.util.Locale.ROOT, "local top, within %.0f mm of (%.1f, %.1f) mm",
-                            1e3 * DOME_RADIUS_M, 1e3 * tops[d][0], 1e3 * tops[d][1])
-                    : String.format(java.util.Locale.ROOT, "midclavicular line, x = %.1f +/- %.0f mm",
-                            1e3 * mcl, 1e3 * STRIP_HALF_WIDTH_M);
-            for (int v = 0; v < nodes; v++) {
-                if (tops[d] == null || !scene.surfaces().isUpper(v) || origin[v]) {
-                    continue;
-                }
-                double x = scene.surfaces().mesh().coord(v, 0);
-                double y = scene.surfaces().mesh().coord(v, 1);
-                boolean in = own ? Math.hypot(x - tops[d][0], y - tops[d][1]) < DOME_RADIUS_M
-                        : Math.abs(x - mcl) < STRIP_HALF_WIDTH_M;
-                if (in) {
-                    half[v] = d + 1;
-                }
-            }
-        }
-        java.util.Set<Integer> markers = new java.util.TreeSet<>();
-        for (org.tensim.scene.diaphragm.RibCage.Segment sg : scene.cage().segments()) {
-            if (sg.kind() == org.tensim.scene.diaphragm.RibCage.Kind.CARTILAGE && sg.name().matches(".*[^0-9][345]")) {
-                markers.add(sg.a());
-                markers.add(sg.b());
-            }
-        }
-        this.cartilageMarkers = markers.stream().mapToInt(Integer::intValue).toArray();
+        this.half = scene.domeTopCandidates(DOME_RADIUS_M);
+        this.site = scene.domeTopSites(DOME_RADIUS_M);
+        this.cartilageMarkers = scene.cartilageMarkerNodes();
+        this.distances = new double[scene.topology().contacts().size()];
+        this.contactNodes = new boolean[nodes];
+        this.nodeArea = scene.nodeAreasM2();
     }
 
     /** Horizontal radius about each dome's rest top within which its top is sought at every moment, m. */
-    public static final double DOME_RADIUS_M = 0.025;
-    /**
-     * Least distance of a half's top from the midline, as a fraction of the half's width, for it to count as that
-     * hemidiaphragm's own dome top.
-     */
-    public static final double OWN_TOP_FROM_MIDLINE = 0.2;
-    /** Half-width of the sagittal strip on the midclavicular line that measures a half without a dome top, m. */
-    public static final double STRIP_HALF_WIDTH_M = 0.010;
+    public static final double DOME_RADIUS_M = DiaphragmScene.DOME_TOP_RADIUS_M;
 
     /**
-     * The height of each dome's top (right, left), m: the highest free upper node within {@link #DOME_RADIUS_M}
-     * of its top at rest, the local highest point (the mesh's highest node may lie on the other dome, or on the
-     * chest wall the ribs lift). A half whose highest point at rest lies on the midline, rising towards the other
-     * dome (the BodyParts3D diaphragm's left, the double dome's left), has no dome top of its own; its height is
-     * the highest free upper node in the sagittal strip {@link #STRIP_HALF_WIDTH_M} either side of its
-     * midclavicular line (half-way from the midline to its lateral edge): the coronal silhouette a frontal
-     * radiograph shows there, lateral to the heart, where the hemidiaphragm's excursion is read (Hida et al.).
+     * The height of each dome's top (right, left), m: the highest of its candidate nodes
+     * ({@link DiaphragmScene#domeTopCandidates}): within {@link #DOME_RADIUS_M} of its top at rest, the local
+     * highest point (the mesh's highest node may lie on the other dome, or on the chest wall the ribs lift), or,
+     * for a half without a dome top of its own, on its midclavicular line.
      */
     private double[] domeTops(SystemState s) {
         double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
@@ -165,12 +133,16 @@ public final class BreathingMetrics implements StepListener {
     public void afterStep(Simulation sim) {
         double t = sim.time();
         SystemState s = sim.state();
+        if (s.contacts.count() > 0) {
+            contacts(s, t);
+        }
         if (extentsExp == null && t >= start - 1e-12) {
             extentsExp = extents(s, null);
             originsExp = extents(s, origin);
             apexAtExp = s.x[3 * apex + 2];
             domeTopsExp = domeTops(s);
             markerExp = marker(s);
+            contactAreaExp = contactArea;
             heightsExp = new double[nodes]; // once per run, at the measured cycle's start
             for (int i = 0; i < nodes; i++) {
                 heightsExp[i] = s.x[3 * i + 2];
@@ -182,19 +154,10 @@ public final class BreathingMetrics implements StepListener {
             apexAtInsp = s.x[3 * apex + 2];
             domeTopsInsp = domeTops(s);
             markerInsp = marker(s);
+            contactAreaInsp = contactArea;
             largestDescent = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < nodes; i++) {
                 largestDescent = Math.max(largestDescent, heightsExp[i] - s.x[3 * i + 2]);
-            }
-        }
-        if (s.contacts.count() > 0) {
-            // One pass over the pairs a step: both depths and where the deepest past its start is.
-            double[] past = s.contacts.maxPenetrationPastGap(t, s.x);
-            maxPenetration = Math.max(maxPenetration, past[2]);
-            if (past[0] > maxPastGap) {
-                maxPastGap = past[0];
-                worstPair = (int) past[1];
-                worstPairT = t;
             }
         }
         if (t >= start - 1e-12 && t <= end + 1e-12) {
@@ -202,6 +165,39 @@ public final class BreathingMetrics implements StepListener {
             apexMin = Math.min(apexMin, z);
             apexMax = Math.max(apexMax, z);
         }
+    }
+
+    /**
+     * One pass over the contact pairs at the state after a step, without allocating: both penetration depths, where
+     * the deepest past its start is, and the area of the diaphragm nodes in contact (each node once, by its lumped
+     * area, however many bones it touches).
+     */
+    private void contacts(SystemState s, double t) {
+        org.tensim.solver.ContactForces c = s.contacts;
+        c.distances(t, s.x, distances);
+        double area = 0;
+        for (int e = 0; e < distances.length; e++) {
+            double past = c.gap(e) - distances[e];
+            if (past > maxPastGap) {
+                maxPastGap = past;
+                worstPair = e;
+                worstPairT = t;
+            }
+            maxPenetration = Math.max(maxPenetration, -distances[e]);
+            int v = c.node(e);
+            if (past > 0 && v < nodes && !contactNodes[v]) {
+                contactNodes[v] = true;
+                area += nodeArea[v];
+            }
+        }
+        for (int e = 0; e < distances.length; e++) {
+            int v = c.node(e);
+            if (v < nodes) {
+                contactNodes[v] = false;
+            }
+        }
+        contactArea = area;
+        maxContactArea = Math.max(maxContactArea, area);
     }
 
     private double[] extents(SystemState s, boolean[] only) {
@@ -222,7 +218,7 @@ public final class BreathingMetrics implements StepListener {
         return e;
     }
 
-    /** Where each hemidiaphragm's descent is measured: {right, left} (see {@code domeTops}). */
+    /** Where each hemidiaphragm's descent is measured: {right, left} ({@link DiaphragmScene#domeTopSites}). */
     public String[] domeSites() {
         return site.clone();
     }
@@ -319,6 +315,13 @@ public final class BreathingMetrics implements StepListener {
             }
         }
         if (scene.topology().contacts().size() > 0) {
+            if (complete()) {
+                f.put("contact_area_mm2", 1e6 * contactAreaInsp);
+            }
+            if (!Double.isNaN(contactAreaExp)) {
+                f.put("contact_area_expiration_mm2", 1e6 * contactAreaExp);
+            }
+            f.put("max_contact_area_mm2", 1e6 * maxContactArea);
             f.put("max_bone_penetration_mm", 1e3 * maxPenetration);
             f.put("max_penetration_past_rest_mm", 1e3 * maxPastGap);
         }

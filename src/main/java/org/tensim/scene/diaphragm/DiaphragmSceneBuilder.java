@@ -199,27 +199,7 @@ final class DiaphragmSceneBuilder {
         if (p.tendonPoint() != null) {
             cut = n.dot(p.tendonPoint());
         } else {
-            // The plane's offset that leaves tendonAreaFraction of the upper area on its positive side.
-            Integer[] order = new Integer[nv];
-            double total = 0;
-            int k = 0;
-            for (int v = 0; v < nv; v++) {
-                if (surfaces.isUpper(v)) {
-                    order[k++] = v;
-                    total += area[v];
-                }
-            }
-            Integer[] up = Arrays.copyOf(order, k);
-            Arrays.sort(up, (a, b) -> Double.compare(height(n, b), height(n, a)));
-            double acc = 0;
-            cut = height(n, up[0]);
-            for (Integer v : up) {
-                acc += area[v];
-                cut = height(n, v);
-                if (acc >= p.tendonAreaFraction() * total) {
-                    break;
-                }
-            }
+            cut = TendonPlane.offsetForShare(surfaces, area, n, p.tendonAreaFraction());
         }
         tendonCut = cut;
         labels = new int[nv];

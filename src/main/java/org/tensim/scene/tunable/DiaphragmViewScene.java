@@ -17,7 +17,11 @@ import org.tensim.model.Topology;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.RibCage;
+import org.tensim.scene.diaphragm.TendonPlane;
+import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.io.mesh.VertexLabel;
+import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
@@ -44,6 +48,14 @@ import org.tensim.solver.SystemState;
  *
  * <p>Tendon model: with rigid links (tensegrity, the paper's), or with every link
  * replaced by a spring ({@link RigidLinksAsSprings}) to compare.
+ *
+ * <p><b>Tendon boundary.</b> Without a label file, one more parameter moves the tendon's boundary: the plane's
+ * height ({@link #TENDON_PLANE}, plane rule) or the area share ({@link #TENDON_SHARE}, geodesic rule). It changes
+ * the topology (rigid links, fibres), so it restarts: the factory builds the scene from its spec with the boundary
+ * moved ({@link #withTendonBoundary}). {@link #saveLabels} writes the labels of the scene on screen.
+ *
+ * <p><b>Live state</b> ({@link #liveState()}, {@link DiaphragmLiveState}): the nodes touching a bone, drawn blue over
+ * their own colour, and the readouts (dome descent, contact area, penetration...), measured after every step.
  */
 public final class DiaphragmViewScene implements ViewScene {
     public static final String RIB_AMPLITUDE = "ribAmplitudeFactor";
@@ -52,6 +64,14 @@ public final class DiaphragmViewScene implements ViewScene {
     public static final String TISSUE_DAMPING = "tissueDampingRatio";
     public static final String SURROUNDING_DAMPING = "surroundingDampingPerS";
     public static final String BREATHING_PERIOD = "breathingPeriodS";
+    /** The tendon's share of the upper surface (geodesic rule): moves the tendon's boundary; restarts. */
+    public static final String TENDON_SHARE = "tendonAreaShare";
+    /** The tendon plane's height from where the default share places it, mm (plane rule): moves it; restarts. */
+    public static final String TENDON_PLANE = "tendonPlaneHeightMm";
+    /** Range of {@link #TENDON_PLANE}, mm either way. */
+    public static final double TENDON_PLANE_RANGE_MM = 40;
+    /** Range of {@link #TENDON_SHARE}: a small cap to a large one (adults: 0.10-0.15). */
+    public static final double[] TENDON_SHARE_RANGE = {0.03, 0.4};
 
     /** Inspiration:expiration of quiet breathing, 1:2 (docs/physics.md). */
     static final double EXPIRATION_RATIO = 2;
@@ -69,6 +89,32 @@ public final class DiaphragmViewScene implements ViewScene {
      * the load's (an active fibre stress for fibres, a pressure for the others; {@link DiaphragmSetup#defaultMusclePa}).
      */
     public static List<TunableParameter> parameters(BoundaryConditions.MuscleLoad load) {
+        return parameters(load, TendonRule.PLANE, false);
+    }
+
+    /**
+     * The tunable parameters of a scene with a muscle-load model and a tendon rule: with the plane rule the tendon
+     * plane's height ({@link #TENDON_PLANE}), with the geodesic rule the tendon's area share ({@link #TENDON_SHARE});
+     * neither when a label file sets the tendon ({@code labelled}).
+     */
+    public static List<TunableParameter> parameters(BoundaryConditions.MuscleLoad load, TendonRule rule,
+            boolean labelled) {
+        List<TunableParameter> l = new java.util.ArrayList<>(common(load));
+        if (!labelled && rule == TendonRule.GEODESIC) {
+            l.add(TunableParameter.linear(TENDON_SHARE, "Tendon area share", "", TENDON_SHARE_RANGE[0],
+                    TENDON_SHARE_RANGE[1], P.tendonAreaFraction(), "Share of the upper surface's area that is central"
+                            + " tendon, grown around the dome tops along the surface (geodesic rule; adults 0.10-0.15)."
+                            + " Rebuilds the scene: the run restarts.").restarting());
+        } else if (!labelled) {
+            l.add(TunableParameter.linear(TENDON_PLANE, "Tendon plane height", "mm", -TENDON_PLANE_RANGE_MM,
+                    TENDON_PLANE_RANGE_MM, 0, "Moves the plane above which the mesh is central tendon along its normal,"
+                            + " from where the default area share (" + P.tendonAreaFraction() + ") places it: up gives"
+                            + " less tendon. Rebuilds the scene: the run restarts.").restarting());
+        }
+        return List.copyOf(l);
+    }
+
+    private static List<TunableParameter> common(BoundaryConditions.MuscleLoad load) {
         String muscle = load == BoundaryConditions.MuscleLoad.FIBRES
                 ? "Peak active stress of the muscle fibres along their meridians to the central tendon, at"
                         + " end-inspiration (muscle load: fibres)."
@@ -99,13 +145,13 @@ public final class DiaphragmViewScene implements ViewScene {
     private final Simulation sim;
     private final List<Body> bodies;
     /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
-    private DiaphragmScene scene;
+    private volatile DiaphragmScene scene;
     /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
     private volatile DiaphragmScene prepared;
 
     private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load) {
         this.load = load;
-        this.parameters = parameters(load);
+        this.parameters = parameters(load, scene.spec().tendonRule(), scene.spec().mesh().labels() != null);
         this.scene = scene;
         this.prepared = scene;
         this.tensegrity = tensegrity;
@@ -125,31 +171,32 @@ public final class DiaphragmViewScene implements ViewScene {
                 scene.apexNode(), scene.simulatedNodes(), structure));
     }
 
+    /** Colour of the muscle. */
+    static final float[] MUSCLE_COLOUR = {0.78f, 0.23f, 0.2f};
+    /** Colour of the central tendon. */
+    static final float[] TENDON_COLOUR = {0.94f, 0.91f, 0.8f};
     /** Colour of the nodes attached at the diaphragm's origins. */
     static final float[] ATTACHED = {0.25f, 0.62f, 0.3f};
-    /** Colour mixed into the nodes that may slide on a bone (contact pairs). */
-    static final float[] SLIDING = {0.3f, 0.45f, 0.85f};
+    /** Colour of the nodes touching a bone at the frame drawn ({@link DiaphragmLiveState#IN_CONTACT}). */
+    static final float[] IN_CONTACT_COLOUR = {0.2f, 0.5f, 1f};
 
-    private static float[] colours(DiaphragmScene scene, int nodes) {
+    /**
+     * Each node's own colour (3 per node): muscle red, tendon pale, attached nodes green, ribs and spine bone, sternum
+     * and cartilage blue-grey. The nodes touching a bone are marked over it frame by frame ({@link #liveState()}).
+     */
+    static float[] colours(DiaphragmScene scene, int nodes) {
         int[] labels = scene.labels();
-        boolean[] mayTouch = new boolean[nodes];
-        for (org.tensim.model.ContactPair p : scene.topology().contacts()) {
-            mayTouch[p.node()] = true;
-        }
         float[] c = new float[3 * nodes];
         for (int i = 0; i < nodes; i++) {
             float[] rgb = switch (i < labels.length ? labels[i] : -1) {
-                case DiaphragmScene.MUSCLE -> new float[] {0.78f, 0.23f, 0.2f};
-                case DiaphragmScene.TENDON -> new float[] {0.94f, 0.91f, 0.8f};
+                case DiaphragmScene.MUSCLE -> MUSCLE_COLOUR;
+                case DiaphragmScene.TENDON -> TENDON_COLOUR;
                 case DiaphragmScene.RIB -> new float[] {0.93f, 0.89f, 0.76f};
                 case DiaphragmScene.STERNUM_CARTILAGE -> new float[] {0.62f, 0.76f, 0.86f};
                 default -> new float[] {0.5f, 0.5f, 0.5f};
             };
             if (i < scene.diaphragmNodes() && scene.isAttached(i)) {
                 rgb = ATTACHED;
-            } else if (i < scene.diaphragmNodes() && mayTouch[i]) {
-                rgb = new float[] {0.5f * rgb[0] + 0.5f * SLIDING[0], 0.5f * rgb[1] + 0.5f * SLIDING[1],
-                        0.5f * rgb[2] + 0.5f * SLIDING[2]};
             }
             System.arraycopy(rgb, 0, c, 3 * i, 3);
         }
@@ -191,12 +238,20 @@ public final class DiaphragmViewScene implements ViewScene {
      * may switch the muscle load.
      */
     public static SceneFactory factory(DiaphragmSpec base) {
+        return factory(base, null);
+    }
+
+    /**
+     * As {@link #factory(DiaphragmSpec)} from inputs already read ({@link DiaphragmSetup#read} of {@code base}, or of
+     * a spec that differs only in its label file, whose labels the inputs then carry); null to read them on first use.
+     */
+    public static SceneFactory factory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
         BoundaryConditions bc = base.boundary();
         return new SceneFactory() {
             // Read or generated once; every scene, the first included, is then built from these inputs by
             // the same call, outside the lock: the same values give the same scene whatever was built before,
             // and parallel sweep workers do not queue for each other's scene building.
-            private DiaphragmSetup.Inputs inputs;
+            private DiaphragmSetup.Inputs inputs = read;
 
             @Override
             public String name() {
@@ -228,7 +283,7 @@ public final class DiaphragmViewScene implements ViewScene {
             @Override
             public List<TunableParameter> parameters(String muscleLoad) {
                 return DiaphragmViewScene.parameters(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
-                        muscleLoad));
+                        muscleLoad), base.tendonRule(), base.mesh().labels() != null);
             }
 
             @Override
@@ -242,7 +297,9 @@ public final class DiaphragmViewScene implements ViewScene {
                                 values.getOrDefault(RIB_AMPLITUDE, 1.0), values.getOrDefault(MUSCLE_ACTION,
                                         DiaphragmSetup.defaultMusclePa(b.muscleLoad()))));
                 try {
-                    DiaphragmScene s = DiaphragmSetup.build(inputs(), spec, spec.newControls()).scene();
+                    DiaphragmSetup.Inputs in = inputs();
+                    spec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
+                    DiaphragmScene s = DiaphragmSetup.build(in, spec, spec.newControls()).scene();
                     return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
                 } catch (IOException e) {
                     throw new UncheckedIOException(e.getMessage(), e);
@@ -251,6 +308,80 @@ public final class DiaphragmViewScene implements ViewScene {
                 }
             }
         };
+    }
+
+    /**
+     * The spec with the tendon's boundary the values set: the area share of the geodesic rule
+     * ({@link #TENDON_SHARE}), or the plane of the plane rule moved along its normal by {@link #TENDON_PLANE} mm from
+     * where the spec's share (or point) places it; unchanged with a label file or without either value.
+     *
+     * @throws IllegalArgumentException when the moved plane leaves no tendon or no muscle on the upper surface
+     */
+    static DiaphragmSpec withTendonBoundary(DiaphragmSpec spec, TwoSurfaces surfaces, Map<String, Double> values) {
+        if (spec.mesh().labels() != null) {
+            return spec;
+        }
+        DiaphragmParameters p = spec.tissue();
+        if (spec.tendonRule() == TendonRule.GEODESIC) {
+            Double share = values.get(TENDON_SHARE);
+            return share == null ? spec : spec.withTissue(p.withTendonAreaFraction(share));
+        }
+        Double shiftMm = values.get(TENDON_PLANE);
+        if (shiftMm == null || shiftMm == 0) {
+            return spec;
+        }
+        Vec3 n = p.tendonNormal();
+        double from = p.tendonPoint() != null ? n.dot(p.tendonPoint())
+                : TendonPlane.offsetForShare(surfaces, n, p.tendonAreaFraction());
+        double to = from + 1e-3 * shiftMm;
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
+            if (surfaces.isUpper(v)) {
+                double h = n.x() * surfaces.mesh().coord(v, 0) + n.y() * surfaces.mesh().coord(v, 1)
+                        + n.z() * surfaces.mesh().coord(v, 2);
+                lo = Math.min(lo, h);
+                hi = Math.max(hi, h);
+            }
+        }
+        if (!(to <= hi && to > lo)) {
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "tendon plane height %+.1f mm"
+                    + " puts the plane %s the upper surface (it spans %.1f to %+.1f mm from the default plane): no %s"
+                    + " would be left", shiftMm, to > hi ? "above" : "below", 1e3 * (lo - from), 1e3 * (hi - from),
+                    to > hi ? "tendon" : "muscle"));
+        }
+        return spec.withTissue(p.withTendonPlane(n, n.times(to)));
+    }
+
+    /**
+     * Writes the labels of the scene on screen, one per mesh vertex ({@link DiaphragmScene#currentVertexLabels()}:
+     * the tendon as now tuned, the origins), as a label file ({@link VertexLabelsFile}) that {@code --labels} reads
+     * back; written to a temporary file beside it, then renamed over it.
+     *
+     * @param overwrite whether an existing file may be replaced
+     * @return the number of vertices written
+     * @throws java.nio.file.FileAlreadyExistsException when the file exists and {@code overwrite} is false
+     */
+    public int saveLabels(Path file, boolean overwrite) throws IOException {
+        if (!overwrite && java.nio.file.Files.exists(file)) {
+            throw new java.nio.file.FileAlreadyExistsException(file.toString(), null,
+                    "exists; choose another name or confirm replacing it");
+        }
+        VertexLabel[] labels = scene.currentVertexLabels();
+        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
+        VertexLabelsFile.write(tmp, labels);
+        try {
+            java.nio.file.Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING,
+                    java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+        } catch (java.nio.file.AtomicMoveNotSupportedException e) {
+            java.nio.file.Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
+        return labels.length;
+    }
+
+    @Override
+    public LiveState liveState() {
+        return new DiaphragmLiveState(scene, sim.state().x0);
     }
 
     /** The underlying scene (for tests and reports): the built one, or its rebuild with the latest constants. */
@@ -268,7 +399,7 @@ public final class DiaphragmViewScene implements ViewScene {
         return "Diaphragm: " + scene.diaphragmNodes() + " nodes, muscle (red) mass-spring, tendon (pale) "
                 + (sim.state().linkCount() > 0 ? "tensegrity" : "mass-spring") + ", muscle load "
                 + BoundaryConditions.name(load) + (scene.bones() == null ? "" : ", in " + scene.bones().source()
-                + ": attached at the origins (green), sliding on the bones (blue tint)");
+                + ": attached at the origins (green), touching a bone (blue)");
     }
 
     @Override

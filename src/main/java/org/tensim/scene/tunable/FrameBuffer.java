@@ -18,7 +18,9 @@ import org.tensim.solver.StepListener;
  * all bodies have completed the step when it copies.
  *
  * <p>The copy converts to float (what the graphics card takes) and allocates
- * nothing.
+ * nothing. A scene's {@link LiveState} (the nodes in contact, the domes' descent) is
+ * measured at the same moment into the same frame, so the marks drawn always belong to
+ * the positions drawn; its readouts are also handed to the window ({@link #readouts()}).
  */
 public final class FrameBuffer implements StepListener {
     /** One published frame: positions of each body (3 floats per node, m), time and step count. */
@@ -29,12 +31,18 @@ public final class FrameBuffer implements StepListener {
         public double time;
         /** Steps completed at the frame. */
         public long step;
+        /** The live state's mark per node of its body ({@link LiveState#body()}), or null without one. */
+        public final byte[] marks;
+        /** The live state's readouts, or null without one. */
+        public final double[] readouts;
 
-        Frame(List<Body> bodies) {
+        Frame(List<Body> bodies, LiveState live) {
             positions = new float[bodies.size()][];
             for (int b = 0; b < bodies.size(); b++) {
                 positions[b] = new float[3 * bodies.get(b).nodeCount()];
             }
+            marks = live == null ? null : new byte[bodies.get(live.body()).nodeCount()];
+            readouts = live == null ? null : new double[live.readouts().size()];
         }
     }
 
@@ -48,10 +56,20 @@ public final class FrameBuffer implements StepListener {
     private int writing;
     private int reading = 2;
 
+    private final LiveState live;
+    private final LatestValues readouts;
+
     public FrameBuffer(List<Body> bodies) {
+        this(bodies, null);
+    }
+
+    /** As {@link #FrameBuffer(List)} with a scene's live state (null for none), measured into every frame. */
+    public FrameBuffer(List<Body> bodies, LiveState live) {
         this.bodies = List.copyOf(bodies);
+        this.live = live;
+        this.readouts = live == null ? null : new LatestValues(live.readouts().size());
         for (int i = 0; i < 3; i++) {
-            frames[i] = new Frame(this.bodies);
+            frames[i] = new Frame(this.bodies, live);
         }
         // All three start with the initial state, so the first frame drawn is a whole one.
         for (int i = 0; i < 3; i++) {
@@ -76,6 +94,23 @@ public final class FrameBuffer implements StepListener {
         }
         f.time = timeSource.time();
         f.step = timeSource.steps();
+        if (live != null) {
+            live.measure(bodies.get(live.body()).simulation(), f.marks, f.readouts);
+            readouts.publish(f.readouts);
+        }
+    }
+
+    /** The scene's live state, or null. */
+    public LiveState live() {
+        return live;
+    }
+
+    /**
+     * The newest readouts of the live state, for the window's thread (one reader: {@link LatestValues}); null
+     * without a live state.
+     */
+    public LatestValues readouts() {
+        return readouts;
     }
 
     /**

@@ -50,6 +50,14 @@ public interface ViewScene {
         return () -> apply(key, value);
     }
 
+    /**
+     * What the scene shows of its running state beside the positions (nodes marked in their own colours, readouts), or
+     * null for nothing; a new object for each call's caller, measured on the simulation thread ({@link LiveState}).
+     */
+    default LiveState liveState() {
+        return null;
+    }
+
     /** The time step the scene is meant to run at, s. */
     double defaultTimeStep();
 

@@ -60,6 +60,14 @@ public final class Integrators {
     public static final int LARGE_STEP_ACCURATE_NEWTON = 2;
     /** CG iterations per Newton iteration of {@link #LARGE_STEP_ACCURATE}. */
     public static final int LARGE_STEP_ACCURATE_KRYLOV = 8;
+    /**
+     * {@link #REAL_TIME} converged for stiff one-sided contact (a diaphragm sliding on bone surfaces,
+     * docs/thorax.md): {@link PrefactoredBdf2#CONTACT_NEWTON_ITERATIONS} Newton iterations of up to
+     * {@link PrefactoredBdf2#CONTACT_KRYLOV_ITERATIONS} CG iterations a step, at {@link #CONTACT_STEP_S}.
+     */
+    public static final String CONTACT = "bdf2-contact";
+    /** The step the thorax was measured stable and converged at with {@link #CONTACT}, s. */
+    public static final double CONTACT_STEP_S = 0.005;
 
     private static final Map<String, Supplier<Integrator>> METHODS = new LinkedHashMap<>();
     private static final Map<String, IntegratorChoice> BY_NAME = new LinkedHashMap<>();
@@ -84,6 +92,9 @@ public final class Integrators {
         add(new IntegratorChoice(LARGE_STEP_ACCURATE, "bdf2, 2 Newton x 8 CG (large steps, within 2 % of RK2)",
                 () -> new PrefactoredBdf2().setNewtonIterations(LARGE_STEP_ACCURATE_NEWTON)
                         .setKrylovIterations(LARGE_STEP_ACCURATE_KRYLOV)));
+        add(new IntegratorChoice(CONTACT, "bdf2, 3 Newton x 20 CG (contact with bone surfaces)",
+                () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
+                        .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));
     }
 
     private Integrators() {

@@ -1,6 +1,7 @@
 package org.tensim.app.gui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeFalse;
 import static org.tensim.app.gui.GuiTestSupport.assertDrawn;
@@ -67,6 +68,39 @@ class GuiDiaphragmTest {
             String[] text = new String[1];
             onEdt(() -> text[0] = w.status().numbersText());
             assertTrue(text[0].contains("real-time x") && text[0].contains("error ~"), text[0]);
+        } finally {
+            onEdt(w::close);
+        }
+    }
+
+    @Test
+    void saveLabelsWritesTheDiaphragmOnScreenNeverOverAFileUnaskedAndTheReadoutsShow() throws Exception {
+        GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, false);
+        try {
+            waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
+            java.nio.file.Path file = dir.resolve("gui.labels");
+            boolean[] saved = new boolean[2];
+            onEdt(() -> saved[0] = w.saveLabels(file, false));
+            assertTrue(saved[0], "saved");
+            byte[] first = java.nio.file.Files.readAllBytes(file);
+            onEdt(() -> saved[1] = w.saveLabels(file, false));
+            assertFalse(saved[1], "an existing file is not replaced unasked");
+            org.junit.jupiter.api.Assertions.assertArrayEquals(first, java.nio.file.Files.readAllBytes(file));
+            org.tensim.scene.diaphragm.DiaphragmScene s = ((DiaphragmViewScene) w.scene()).scene();
+            org.tensim.io.mesh.VertexLabel[] read = org.tensim.io.mesh.VertexLabelsFile.read(file, s.diaphragmNodes());
+            for (int v = 0; v < read.length; v++) {
+                assertEquals(s.isAttached(v), read[v].isOrigin(), "vertex " + v);
+                assertEquals(s.isTendon(v) && !s.isAttached(v), read[v] == org.tensim.io.mesh.VertexLabel.TENDON,
+                        "vertex " + v);
+            }
+            Thread.sleep(600); // the readouts refresh every 250 ms
+            String[] shown = new String[2];
+            onEdt(() -> {
+                shown[0] = w.live().shown("Right dome descent");
+                shown[1] = w.live().shown("Tendon share of upper surface");
+            });
+            assertEquals("0.00", shown[0], "at rest");
+            assertEquals(String.format(java.util.Locale.ROOT, "%.2f", 100 * s.tendonAreaFraction()), shown[1]);
         } finally {
             onEdt(w::close);
         }

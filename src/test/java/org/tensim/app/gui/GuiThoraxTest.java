@@ -1,0 +1,86 @@
+package org.tensim.app.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.awt.GraphicsEnvironment;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tensim.io.ProjectFolder;
+import org.tensim.io.mesh.MeshLoader;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.ObjWriter;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.io.mesh.VertexClustering;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.solver.integrators.Integrators;
+
+/**
+ * {@code tensim gui --thorax}: the decimated BodyParts3D diaphragm of {@code ThoraxCommandTest} in the shared thorax
+ * opens, runs two seconds at most in real time and reports the live readouts (dome descent, contact area, penetration,
+ * attached area) in its closing line. With a thorax the window opens with the step converged for contact
+ * ({@code bdf2-contact}: 3 Newton x 20 CG at 5 ms; docs/thorax.md, "Solver settings"), not the real-time step that
+ * drifts there. Skipped where {@code ../shared} or a display is absent.
+ */
+class GuiThoraxTest {
+    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
+    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
+            "diaphragm-FJ3131-dec28k-mm.obj");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    @Tag("gui")
+    void theThoraxOpensRunsAndReportsItsReadouts() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
+        assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
+        // decimated face by face, as ThoraxCommandTest does: the 3 mm shell's faces must not merge
+        TwoSurfaces faces = DiaphragmSetup.surfaces(MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh(), 0.003)
+                .surfaces();
+        int[] groups = new int[faces.mesh().vertexCount()];
+        for (int v = 0; v < groups.length; v++) {
+            groups[v] = faces.isUpper(v) ? 1 : 0;
+        }
+        TriangleMesh coarse = VertexClustering.simplify(faces.mesh(), groups, 0.006).mesh();
+        Path mesh = dir.resolve("coarse.obj");
+        ObjWriter.write(mesh, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, StandardCharsets.UTF_8));
+        try {
+            code = GuiCommandTest.run(err, "gui", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
+                    THORAX.toString(), "--config-dir", dir.toString(), "--fresh", "--run-for", "2");
+        } finally {
+            System.setOut(saved);
+        }
+        String printed = out.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, err + printed);
+        String[] lines = printed.trim().split("\\R");
+        Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<Map<String, Object>>() { });
+        System.out.println("gui --thorax: " + m);
+        assertEquals("diaphragm", m.get("scene"));
+        assertEquals(Integrators.CONTACT, m.get("integrator"), m.toString());
+        assertEquals(Integrators.CONTACT_STEP_S, ((Number) m.get("dt_s")).doubleValue(), 1e-12, m.toString());
+        assertTrue(((Number) m.get("steps")).longValue() > 0, m.toString());
+        for (String key : new String[] {"right_dome_descent_mm", "left_dome_descent_mm", "contact_area_mm2",
+            "bone_penetration_mm", "max_bone_penetration_mm", "cartilage_marker_cranial_mm"}) {
+            assertTrue(m.get(key) instanceof Number, key + " in " + m);
+        }
+        assertTrue(((Number) m.get("attached_area_mm2")).doubleValue() > 1000, m.toString());
+        assertTrue(((Number) m.get("tendon_area_percent")).doubleValue() > 5, m.toString());
+    }
+}
