@@ -71,6 +71,13 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "also write DIR/bench.jsonl and DIR/scaling.png")
     Path out;
 
+    @Option(names = "--compare", split = ",", paramLabel = "A,B",
+            description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-single), each on "
+                + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (default 20) on "
+                + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
+                + "time and load), then the median ratios and how far apart the two ended"})
+    List<String> compare;
+
     @Override
     public Integer call() throws Exception {
         if (!"lattice".equals(scene) && !"diaphragm".equals(scene)) {
@@ -107,6 +114,17 @@ public final class BenchCommand implements Callable<Integer> {
         boolean builtin = "builtin".equals(solver);
         List<Integer> threadCounts = builtin ? List.of(1) : threads;
         Integrators.create(integrator); // fails early on an unknown name
+        if (compare != null) {
+            if (compare.size() != 2 || !"diaphragm".equals(scene)) {
+                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--compare takes two "
+                        + "integrator names, with --scene diaphragm; got " + compare + " on " + scene);
+            }
+            compare.forEach(Integrators::create);
+            int k = steps > 0 ? steps : 20;
+            InterleavedComparison.run(DiaphragmBenchScene::build, compare, threads.get(0), dt != null ? dt : 0, k,
+                    repeats, k, m -> System.out.println(Json.line(m)));
+            return 0;
+        }
         if (out == null) {
             measure(builtin, threadCounts, ord, null);
             return 0;

@@ -40,6 +40,20 @@ class CommandLineTest {
         assertTrue(b[2].contains("--n 1"), b[2]);
     }
 
+    /** bench --compare takes two names of the catalogue, on the diaphragm; anything else is refused at once. */
+    @Test
+    void benchCompareIsRefusedWithoutTwoKnownIntegratorsOnTheDiaphragm() {
+        String[] one = run("bench", "--scene", "diaphragm", "--compare", "bdf2");
+        assertEquals("2", one[0]);
+        assertTrue(one[2].contains("--compare takes two"), one[2]);
+        String[] lattice = run("bench", "--compare", "bdf2,bdf2-single");
+        assertEquals("2", lattice[0]);
+        assertTrue(lattice[2].contains("with --scene diaphragm"), lattice[2]);
+        String[] unknown = run("bench", "--scene", "diaphragm", "--compare", "bdf2,bdf3");
+        assertTrue(!"0".equals(unknown[0]), "refused");
+        assertTrue(unknown[2].contains("unknown integrator 'bdf3'"), unknown[2]);
+    }
+
     @Test
     void unknownOptionsAreRefused() {
         String[] r = run("cube", "--nonsense");

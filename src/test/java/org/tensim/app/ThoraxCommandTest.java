@@ -14,14 +14,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.Json;
 import org.tensim.io.ProjectFolder;
-import org.tensim.io.mesh.MeshLoader;
-import org.tensim.io.mesh.MeshUnits;
-import org.tensim.io.mesh.ObjWriter;
-import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.io.mesh.VertexClustering;
-import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
+import org.tensim.testsupport.CoarseMeshes;
 import picocli.CommandLine;
 
 /**
@@ -52,16 +46,7 @@ class ThoraxCommandTest {
      * fold them into a non-manifold sheet), at a large step with the thorax's default converged bdf2.
      */
     private Path coarseMesh() throws Exception {
-        TriangleMesh given = MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh();
-        TwoSurfaces faces = DiaphragmSetup.surfaces(given, 0.003).surfaces();
-        int[] groups = new int[faces.mesh().vertexCount()];
-        for (int v = 0; v < groups.length; v++) {
-            groups[v] = faces.isUpper(v) ? 1 : 0;
-        }
-        TriangleMesh coarse = VertexClustering.simplify(faces.mesh(), groups, 0.006).mesh();
-        Path mesh = dir.resolve("coarse.obj");
-        ObjWriter.write(mesh, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
-        return mesh;
+        return CoarseMeshes.faceByFace(MESH, 0.006, dir.resolve("coarse.obj"));
     }
 
     private Map<String, Object> inspire(Path mesh, String name, String... extra) throws Exception {

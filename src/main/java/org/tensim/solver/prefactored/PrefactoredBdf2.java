@@ -63,6 +63,8 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
 
     private int newtonIterations = DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
+    private double krylovTolerance = KRYLOV_TOLERANCE;
+    private FactorPrecision factorPrecision = FactorPrecision.DOUBLE;
     private Executor executor;
 
     private SystemState s;
@@ -127,6 +129,33 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
         return this;
+    }
+
+    /**
+     * Relative residual (dimensionless, > 0) at which CG stops (default {@link #KRYLOV_TOLERANCE}); a tight one
+     * with many iterations gives the converged step, against which preconditioner variants are compared.
+     */
+    public PrefactoredBdf2 setKrylovTolerance(double r) {
+        krylovTolerance = Check.positive("BDF2 CG tolerance", "(relative residual)", r);
+        return this;
+    }
+
+    /**
+     * The precision of the preconditioner factor's entries in its solves ({@link FactorPrecision}; default
+     * double). Set before the first step, it is the first factor's; later, the next factor (made in the
+     * background) takes it.
+     */
+    public PrefactoredBdf2 setFactorPrecision(FactorPrecision p) {
+        factorPrecision = java.util.Objects.requireNonNull(p, "factor precision");
+        if (matrix != null) {
+            matrix.setPrecision(p);
+        }
+        return this;
+    }
+
+    /** The precision of the preconditioner factor's entries in its solves. */
+    public FactorPrecision factorPrecision() {
+        return factorPrecision;
     }
 
     /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
@@ -247,7 +276,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
 
         steps++;
-        newton.solve(model, factor.cholesky, t + h, beta, newtonIterations, krylovIterations, KRYLOV_TOLERANCE);
+        newton.solve(model, factor.cholesky, t + h, beta, newtonIterations, krylovIterations, krylovTolerance);
 
         final double[] xn = newton.xIt;
         final double[] vn = newton.vIt;
@@ -303,6 +332,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         s = st;
         matrix = new PrefactoredMatrix(st);
+        matrix.setPrecision(factorPrecision);
         if (executor != null) {
             matrix.setExecutor(executor);
         }

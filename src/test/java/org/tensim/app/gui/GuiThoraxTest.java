@@ -15,14 +15,8 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.ProjectFolder;
-import org.tensim.io.mesh.MeshLoader;
-import org.tensim.io.mesh.MeshUnits;
-import org.tensim.io.mesh.ObjWriter;
-import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.io.mesh.VertexClustering;
-import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.integrators.Integrators;
+import org.tensim.testsupport.CoarseMeshes;
 
 /**
  * {@code tensim gui --thorax}: the decimated BodyParts3D diaphragm of {@code ThoraxCommandTest} in the shared thorax
@@ -45,16 +39,7 @@ class GuiThoraxTest {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
         assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
         assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
-        // decimated face by face, as ThoraxCommandTest does: the 3 mm shell's faces must not merge
-        TwoSurfaces faces = DiaphragmSetup.surfaces(MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh(), 0.003)
-                .surfaces();
-        int[] groups = new int[faces.mesh().vertexCount()];
-        for (int v = 0; v < groups.length; v++) {
-            groups[v] = faces.isUpper(v) ? 1 : 0;
-        }
-        TriangleMesh coarse = VertexClustering.simplify(faces.mesh(), groups, 0.006).mesh();
-        Path mesh = dir.resolve("coarse.obj");
-        ObjWriter.write(mesh, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
+        Path mesh = CoarseMeshes.faceByFace(MESH, 0.006, dir.resolve("coarse.obj"));
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
         java.io.PrintStream saved = System.out;
         StringWriter err = new StringWriter();

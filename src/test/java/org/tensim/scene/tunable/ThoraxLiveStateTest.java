@@ -16,11 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.experiment.diaphragm.BreathingMetrics;
 import org.tensim.io.ProjectFolder;
-import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
-import org.tensim.io.mesh.ObjWriter;
-import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.io.mesh.VertexClustering;
 import org.tensim.io.mesh.VertexLabel;
 import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.model.ContactBody;
@@ -52,10 +48,7 @@ class ThoraxLiveStateTest {
     static void buildOnce() throws Exception {
         assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
         assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
-        TriangleMesh full = MeshLoader.load(MESH, MeshUnits.parse("mm")).mesh();
-        TriangleMesh coarse = VertexClustering.simplify(full, new int[full.vertexCount()], 0.006).mesh();
-        Path mesh = dir.resolve("coarse.obj");
-        ObjWriter.write(mesh, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
+        Path mesh = org.tensim.testsupport.CoarseMeshes.faceByFace(MESH, 0.006, dir.resolve("coarse.obj"));
         spec = DiaphragmSpec.defaults().withMesh(DiaphragmSpec.Mesh.defaults().withFile(mesh, MeshUnits.parse("mm")))
                 .withCage(DiaphragmSpec.Cage.defaults().withThorax(THORAX));
         inputs = DiaphragmSetup.read(spec);
@@ -144,20 +137,15 @@ class ThoraxLiveStateTest {
         assertEquals(1e6 * expectedArea, metrics.fields().get("contact_area_expiration_mm2"), 1e-6);
 
         // Per step, nothing is allocated (after a warm-up that lets the JIT compile the pass).
-        java.lang.management.ThreadMXBean bean = java.lang.management.ManagementFactory.getThreadMXBean();
-        assumeTrue(bean instanceof com.sun.management.ThreadMXBean, "no allocation counters");
-        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) bean;
-        assumeTrue(mx.isThreadAllocatedMemorySupported(), "no allocation counters");
-        mx.setThreadAllocatedMemoryEnabled(true);
+        org.tensim.testsupport.AllocationCounter counter = org.tensim.testsupport.AllocationCounter.currentThread();
         for (int i = 0; i < 3000; i++) {
             frames.afterStep(sim);
         }
-        long id = Thread.currentThread().getId();
-        long before = mx.getThreadAllocatedBytes(id);
-        for (int i = 0; i < 500; i++) {
-            frames.afterStep(sim);
-        }
-        assertEquals(0, mx.getThreadAllocatedBytes(id) - before, "bytes allocated by 500 frames' marks and readouts");
+        assertEquals(0, counter.bytesAllocatedBy(() -> {
+            for (int i = 0; i < 500; i++) {
+                frames.afterStep(sim);
+            }
+        }, 3), "bytes allocated by 500 frames' marks and readouts");
     }
 
     @Test

@@ -177,6 +177,72 @@ class SparseCholeskyTest {
         assertTrue(bSb > 0, "positive definite");
     }
 
+    /**
+     * The single-precision factor solves a random SPD system (seeded) as the double one does, to float
+     * precision: each entry of L rounded to float (relative 6e-8) perturbs the solve by about that times the
+     * matrix's condition, here of order 100; and it stays a symmetric positive definite operator.
+     */
+    @Test
+    void singlePrecisionFactorSolvesAsTheDoubleOneToFloatPrecision() {
+        int n = 400;
+        double[][] a = laplacian(n, 1600, 21, 2.0);
+        int[] rows = new int[n * n];
+        int[] cols = new int[n * n];
+        double[] vals = new double[n * n];
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                if (a[i][j] != 0) {
+                    rows[count] = i;
+                    cols[count] = j;
+                    vals[count++] = a[i][j];
+                }
+            }
+        }
+        SparseCholesky.Pattern p = SparseCholesky.analyse(n, rows, cols, vals, count);
+        SparseCholesky exact = SparseCholesky.factor(p, rows, cols, vals, count, "the test matrix");
+        SparseCholesky single = SparseCholesky.factor(p, rows, cols, vals, count, "the test matrix",
+                FactorPrecision.SINGLE);
+        assertEquals(FactorPrecision.DOUBLE, exact.precision());
+        assertEquals(FactorPrecision.SINGLE, single.precision());
+        assertTrue(single.pairedColumns() > 0, "the paired loop is exercised");
+        Random r = new Random(5);
+        double[] b = new double[3 * n];
+        for (int k = 0; k < b.length; k++) {
+            b[k] = r.nextGaussian();
+        }
+        double[] u = b.clone();
+        double[] v = b.clone();
+        double[] work = new double[3 * n];
+        exact.solve3(u, work);
+        single.solve3(v, work);
+        double scale = 0;
+        double diff = 0;
+        for (int k = 0; k < u.length; k++) {
+            scale = Math.max(scale, Math.abs(u[k]));
+            diff = Math.max(diff, Math.abs(u[k] - v[k]));
+        }
+        assertTrue(diff <= 1e-5 * scale, "largest difference " + diff + " against the solution's " + scale);
+        assertTrue(diff > 0, "the single-precision entries are used");
+        // Symmetric and positive definite to round-off, as conjugate gradient needs of a preconditioner.
+        double[] w = new double[3 * n];
+        for (int k = 0; k < w.length; k++) {
+            w[k] = r.nextGaussian();
+        }
+        double[] sw = w.clone();
+        single.solve3(sw, work);
+        double bSw = 0;
+        double wSb = 0;
+        double bSb = 0;
+        for (int k = 0; k < b.length; k++) {
+            bSw += b[k] * sw[k];
+            wSb += w[k] * v[k];
+            bSb += b[k] * v[k];
+        }
+        assertEquals(bSw, wSb, 1e-12 * Math.abs(bSb), "symmetric");
+        assertTrue(bSb > 0, "positive definite");
+    }
+
     @Test
     void aMatrixThatIsNotPositiveDefiniteIsNamedInAClearError() {
         double[][] a = laplacian(10, 30, 5, 0);
