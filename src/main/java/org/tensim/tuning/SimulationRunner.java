@@ -153,10 +153,6 @@ public final class SimulationRunner implements Tuning.Target {
         paced = p;
     }
 
-    public boolean isPaced() {
-        return paced;
-    }
-
     @Override
     public void applyParameter(String key, double value) {
         if (Tuning.TIME_STEP.equals(key)) {

@@ -280,11 +280,6 @@ public final class BreathingMetrics implements StepListener {
         return largestDescent;
     }
 
-    /** Extents {x, y, z} at end-expiration, m. */
-    public double[] extentsAtExpiration() {
-        return extentsExp.clone();
-    }
-
     /**
      * The measured cycle's figures as summary fields, in millimetres, unrounded, under the names
      * of the diaphragm's summary.json (docs/diaphragm.md); empty when end-inspiration was not reached.

@@ -91,21 +91,12 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
                 MuscleLoad.PAPER_NODES, false);
     }
 
-    public BoundaryConditions withAttachment(Attachment a) {
-        return new BoundaryConditions(a, bandStiffnessPaPerM, bandTaperM, muscleLoad, costalOriginsOnly);
-    }
-
     public BoundaryConditions withMuscleLoad(MuscleLoad m) {
         return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, m, costalOriginsOnly);
     }
 
     public BoundaryConditions withBandStiffness(double paPerM) {
         return new BoundaryConditions(attachment, paPerM, bandTaperM, muscleLoad, costalOriginsOnly);
-    }
-
-    /** The same with the band attached to the anatomical origins only (true) or to any cage segment. */
-    public BoundaryConditions withCostalOriginsOnly(boolean only) {
-        return new BoundaryConditions(attachment, bandStiffnessPaPerM, bandTaperM, muscleLoad, only);
     }
 
     /** A model's name as on the command line, e.g. "paper-nodes": the inverse of {@link #parse}. */

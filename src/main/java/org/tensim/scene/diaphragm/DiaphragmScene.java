@@ -547,11 +547,6 @@ public final class DiaphragmScene {
         return modes.omegaMax();
     }
 
-    /** The network's highest frequency (Gershgorin) and its Rayleigh damping, for the time-step policy. */
-    public ModalBounds modalBounds() {
-        return modes;
-    }
-
     /** The recommended time step of the paper's RK2 on this scene, s ({@link TimeStepPolicy}). */
     public double recommendedTimeStep() {
         return timeStep;

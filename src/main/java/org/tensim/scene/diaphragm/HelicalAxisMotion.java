@@ -55,14 +55,6 @@ public final class HelicalAxisMotion implements RigidMotion {
         this.controls = controls;
     }
 
-    public Vec3 axisDirection() {
-        return new Vec3(nx, ny, nz);
-    }
-
-    public Vec3 axisPoint() {
-        return new Vec3(px, py, pz);
-    }
-
     /** Rotation at end-inspiration for amplitude 1, rad. */
     public double maxAngleRad() {
         return maxAngleRad;
