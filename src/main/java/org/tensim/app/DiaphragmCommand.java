@@ -272,8 +272,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
             ie.setTolerance(cgTolerance);
         }
-        if (thorax != null && contact && chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
+        if (thorax != null && contact && integrator.equals(org.tensim.solver.prefactored.PrefactoredBdf2.NAME)
+                && chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
             // Contact with bone surfaces needs the converged step (docs/thorax.md); the options below may change it.
+            // A named setup (bdf2-newton2, bdf2-contact, ...) keeps its own iterations.
             b.setNewtonIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
             b.setKrylovIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
         }
@@ -467,7 +469,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
      */
     private org.tensim.solver.Integrator configured(org.tensim.solver.Integrator i) {
         if (i instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
-            if (thorax != null && contact) {
+            if (thorax != null && contact && integrator.equals(org.tensim.solver.prefactored.PrefactoredBdf2.NAME)) {
                 b.setNewtonIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
                 b.setKrylovIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
             }
