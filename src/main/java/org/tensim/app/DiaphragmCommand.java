@@ -265,35 +265,19 @@ public final class DiaphragmCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         // Options are checked before the mesh is read, which takes seconds.
         org.tensim.solver.Integrator chosen = org.tensim.solver.integrators.Integrators.create(integrator);
-        if (cgTolerance != null) {
-            if (!(chosen instanceof org.tensim.solver.integrators.ImplicitEuler ie)) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                        "--cg-tolerance applies to --integrator implicit-euler only, not " + integrator);
-            }
-            ie.setTolerance(cgTolerance);
+        if (cgTolerance != null && !(chosen instanceof org.tensim.solver.integrators.ImplicitEuler)) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--cg-tolerance applies to --integrator implicit-euler only, not " + integrator);
         }
-        if (thorax != null && contact && integrator.equals(org.tensim.solver.prefactored.PrefactoredBdf2.NAME)
-                && chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
-            // Contact with bone surfaces needs the converged step (docs/thorax.md); the options below may change it.
-            // A named setup (bdf2-newton2, bdf2-contact, ...) keeps its own iterations.
-            b.setNewtonIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
-            b.setKrylovIterations(org.tensim.solver.prefactored.PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
+        if ((newton != null || cgIterations != null)
+                && !(chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2)) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--newton and --cg-iterations apply to --integrator bdf2 only, not " + integrator);
         }
-        if (newton != null || cgIterations != null) {
-            if (!(chosen instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b)) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                        "--newton and --cg-iterations apply to --integrator bdf2 only, not " + integrator);
-            }
-            try {
-                if (newton != null) {
-                    b.setNewtonIterations(newton);
-                }
-                if (cgIterations != null) {
-                    b.setKrylovIterations(cgIterations);
-                }
-            } catch (IllegalArgumentException e) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-            }
+        try {
+            configured(chosen);
+        } catch (IllegalArgumentException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         CommandChecks.threads(spec, "--threads", threads, true);
         CommandChecks.outFolder(spec, out);
@@ -464,8 +448,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     }
 
     /**
-     * The integrator as the options configure it for every model of a study: a thorax's converged {@code bdf2}
-     * step, then {@code --newton}, {@code --cg-iterations} and {@code --cg-tolerance} (checked before).
+     * The integrator as the options configure it (the run's, and every model's of a study): a thorax's converged
+     * {@code bdf2} step for plain {@code bdf2} (a named setup keeps its own iterations; docs/thorax.md), then
+     * {@code --newton}, {@code --cg-iterations} and {@code --cg-tolerance}.
      */
     private org.tensim.solver.Integrator configured(org.tensim.solver.Integrator i) {
         if (i instanceof org.tensim.solver.prefactored.PrefactoredBdf2 b) {
