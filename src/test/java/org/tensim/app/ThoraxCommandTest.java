@@ -13,7 +13,6 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.Json;
-import org.tensim.io.ProjectFolder;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 import org.tensim.testsupport.CoarseMeshes;
 import picocli.CommandLine;
@@ -24,9 +23,8 @@ import picocli.CommandLine;
  * is absent.
  */
 class ThoraxCommandTest {
-    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
-    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
-            "diaphragm-FJ3131-dec28k-mm.obj");
+    static final Path THORAX = org.tensim.testsupport.SharedData.THORAX;
+    static final Path MESH = org.tensim.testsupport.SharedData.BODYPARTS3D_DIAPHRAGM;
 
     @TempDir
     Path dir;

@@ -35,7 +35,7 @@ public final class BreathingMetrics implements StepListener {
     private double largestDescent = Double.NaN;
     /**
      * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's
-     * ({@link DiaphragmScene#domeTopCandidates}).
+     * ({@link org.tensim.scene.diaphragm.MeasuringSites#domeTopCandidates}).
      */
     private final int[] half;
     /** Where each half's top is measured (right, left), for the summary. */
@@ -78,20 +78,20 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
-        this.half = scene.domeTopCandidates(DOME_RADIUS_M);
-        this.site = scene.domeTopSites(DOME_RADIUS_M);
-        this.cartilageMarkers = scene.cartilageMarkerNodes();
+        this.half = org.tensim.scene.diaphragm.MeasuringSites.domeTopCandidates(scene, DOME_RADIUS_M);
+        this.site = org.tensim.scene.diaphragm.MeasuringSites.domeTopSites(scene, DOME_RADIUS_M);
+        this.cartilageMarkers = org.tensim.scene.diaphragm.MeasuringSites.cartilageMarkerNodes(scene);
         this.distances = new double[scene.topology().contacts().size()];
         this.contactNodes = new boolean[nodes];
         this.nodeArea = scene.nodeAreasM2();
     }
 
     /** Horizontal radius about each dome's rest top within which its top is sought at every moment, m. */
-    public static final double DOME_RADIUS_M = DiaphragmScene.DOME_TOP_RADIUS_M;
+    public static final double DOME_RADIUS_M = org.tensim.scene.diaphragm.MeasuringSites.DOME_TOP_RADIUS_M;
 
     /**
      * The height of each dome's top (right, left), m: the highest of its candidate nodes
-     * ({@link DiaphragmScene#domeTopCandidates}): within {@link #DOME_RADIUS_M} of its top at rest, the local
+     * ({@link org.tensim.scene.diaphragm.MeasuringSites#domeTopCandidates}): within {@link #DOME_RADIUS_M} of its top at rest, the local
      * highest point (the mesh's highest node may lie on the other dome, or on the chest wall the ribs lift), or,
      * for a half without a dome top of its own, on its midclavicular line.
      */
@@ -218,7 +218,7 @@ public final class BreathingMetrics implements StepListener {
         return e;
     }
 
-    /** Where each hemidiaphragm's descent is measured: {right, left} ({@link DiaphragmScene#domeTopSites}). */
+    /** Where each hemidiaphragm's descent is measured: {right, left} ({@link org.tensim.scene.diaphragm.MeasuringSites#domeTopSites}). */
     public String[] domeSites() {
         return site.clone();
     }

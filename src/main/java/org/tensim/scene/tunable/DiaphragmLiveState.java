@@ -3,6 +3,7 @@ package org.tensim.scene.tunable;
 import java.util.ArrayList;
 import java.util.List;
 import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.MeasuringSites;
 import org.tensim.solver.ContactForces;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
@@ -11,7 +12,7 @@ import org.tensim.solver.SystemState;
  * The diaphragm's running state for the window ({@link LiveState}): the nodes touching a bone at this step (an
  * active contact pair: closer to the bone than the pair's gap) marked in their own colour, and the readouts: the
  * descent of each dome's top from rest (the highest free upper-surface node within
- * {@link DiaphragmScene#DOME_TOP_RADIUS_M} of the top at rest, as the run's summary measures it), the 3rd-5th costal
+ * {@link MeasuringSites#DOME_TOP_RADIUS_M} of the top at rest, as the run's summary measures it), the 3rd-5th costal
  * cartilages' cranial and ventral motion, the area in contact (the nodes in contact by their lumped area, each once),
  * the deepest penetration below a bone's surface now and so far, the attached area and the tendon's share. Figures a
  * scene does not have (contact without bone surfaces, markers without cartilage) are left out.
@@ -53,13 +54,13 @@ public final class DiaphragmLiveState implements LiveState {
      */
     public DiaphragmLiveState(DiaphragmScene scene, double[] rest) {
         this.nodes = scene.diaphragmNodes();
-        int[] half = scene.domeTopCandidates(DiaphragmScene.DOME_TOP_RADIUS_M);
+        int[] half = MeasuringSites.domeTopCandidates(scene, MeasuringSites.DOME_TOP_RADIUS_M);
         for (int d = 0; d < 2; d++) {
             int dome = d + 1;
             candidates[d] = java.util.stream.IntStream.range(0, nodes).filter(v -> half[v] == dome).toArray();
             restTop[d] = top(rest, candidates[d]);
         }
-        this.markers = scene.cartilageMarkerNodes();
+        this.markers = MeasuringSites.cartilageMarkerNodes(scene);
         mean(rest, restMarker);
         this.nodeArea = scene.nodeAreasM2();
         this.attachedMm2 = 1e6 * scene.attachedAreaM2();

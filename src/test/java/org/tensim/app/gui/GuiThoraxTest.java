@@ -14,7 +14,6 @@ import java.util.Map;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tensim.io.ProjectFolder;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.testsupport.CoarseMeshes;
 
@@ -26,9 +25,8 @@ import org.tensim.testsupport.CoarseMeshes;
  * drifts there. Skipped where {@code ../shared} or a display is absent.
  */
 class GuiThoraxTest {
-    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
-    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
-            "diaphragm-FJ3131-dec28k-mm.obj");
+    static final Path THORAX = org.tensim.testsupport.SharedData.THORAX;
+    static final Path MESH = org.tensim.testsupport.SharedData.BODYPARTS3D_DIAPHRAGM;
 
     @TempDir
     Path dir;

@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.tensim.io.ProjectFolder;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
@@ -21,9 +20,8 @@ import org.tensim.model.Node;
  * file, where {@code ../shared} is absent.
  */
 class ThoraxSceneTest {
-    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
-    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
-            "diaphragm-FJ3131-dec28k-mm.obj");
+    static final Path THORAX = org.tensim.testsupport.SharedData.THORAX;
+    static final Path MESH = org.tensim.testsupport.SharedData.BODYPARTS3D_DIAPHRAGM;
     static Bones bones;
     static TwoSurfaces full;
 

@@ -72,7 +72,7 @@ class DiaphragmLiveStateTest {
         assertEquals(0, out[left], 1e-9);
         assertEquals(100 * s.tendonAreaFraction(), out[live.readout("Tendon share of upper surface")], 1e-9);
         // Lower every right-dome candidate by 4 mm and the left by 1 mm: the tops fall by as much.
-        int[] half = s.domeTopCandidates(DiaphragmScene.DOME_TOP_RADIUS_M);
+        int[] half = org.tensim.scene.diaphragm.MeasuringSites.domeTopCandidates(s, org.tensim.scene.diaphragm.MeasuringSites.DOME_TOP_RADIUS_M);
         for (int i = 0; i < half.length; i++) {
             sim.state().x[3 * i + 2] -= half[i] == 1 ? 0.004 : half[i] == 2 ? 0.001 : 0;
         }

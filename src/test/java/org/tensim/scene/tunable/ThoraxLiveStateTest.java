@@ -15,7 +15,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.experiment.diaphragm.BreathingMetrics;
-import org.tensim.io.ProjectFolder;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.VertexLabel;
 import org.tensim.io.mesh.VertexLabelsFile;
@@ -33,9 +32,8 @@ import org.tensim.solver.Simulation;
  * origins. Skipped, naming the file, where {@code ../shared} is absent.
  */
 class ThoraxLiveStateTest {
-    static final Path THORAX = ProjectFolder.resolve("..", "shared", "meshes", "thorax");
-    static final Path MESH = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
-            "diaphragm-FJ3131-dec28k-mm.obj");
+    static final Path THORAX = org.tensim.testsupport.SharedData.THORAX;
+    static final Path MESH = org.tensim.testsupport.SharedData.BODYPARTS3D_DIAPHRAGM;
 
     @TempDir
     static Path dir;
