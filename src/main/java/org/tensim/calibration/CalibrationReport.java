@@ -48,8 +48,7 @@ public final class CalibrationReport {
             values.put(Tuning.TIME_STEP, spec.setup().dtS());
         }
         // The muscle load goes with the values: it sets what muscleActionPa means.
-        String load = !spec.setup().scene().equals("diaphragm") ? null
-                : spec.setup().muscleLoad() != null ? spec.setup().muscleLoad() : BoundaryConditions.DEFAULT_MUSCLE_LOAD;
+        String load = spec.setup().muscleLoad();
         PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
                 spec.setup().integrator(), true, values, load));
 

@@ -7,6 +7,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.tuning.DiaphragmOptions;
+import org.tensim.tuning.TunableScenes;
 
 /**
  * What every point of a sweep shares, sent as is to the workers (hence serializable,
@@ -15,14 +18,9 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
  * (calibration targets).
  *
  * @param scene       scene name, as in {@link org.tensim.tuning.TunableScenes} ({@code diaphragm} or {@code cube})
- * @param meshFile    diaphragm mesh file (.obj, .stl, .off), or null for the generated double dome
- * @param units       units of the mesh file, {@code mm} or {@code m}
- * @param thicknessMm thickness given to a single-surface mesh, mm
- * @param rings       rings per face of the generated double dome (when there is no mesh file)
- * @param boxesFile   rib and sternum boxes (millimetres, BodyParts3D frame), or null for the project's parametric
- *                    rib cage (the GUI's default)
- * @param muscleLoad  diaphragm muscle load model as on the command line ({@code fibres}, the default,
- *                    {@code pressure}, {@code paper-nodes}); null for the default, fibres
+ * @param diaphragm   the diaphragm's options as a command line gives them ({@link DiaphragmOptions}, e.g.
+ *                    {@code ["--thorax", "/data/thorax", "--muscle-load", "pressure"]}); empty for the defaults
+ *                    (the generated double dome at the GUI's resolution in the parametric cage) and for the cube
  * @param integrator  name of a setup in the integrator catalogue ({@link org.tensim.solver.integrators.Integrators}:
  *                    e.g. {@code rk2}, {@code implicit-euler-cg1e-3}, {@code bdf2-newton2})
  * @param dtS         time step, s; 0 for the scene's own (see {@link SceneRun})
@@ -30,20 +28,29 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
  * @param fixed       values of parameters held fixed, by key (the others not swept keep their defaults)
  * @param measures    extra measures taken during each run; they add fields to the summary
  */
-public record RunSetup(String scene, String meshFile, String units, double thicknessMm, int rings, String boxesFile,
-        String muscleLoad, String integrator, double dtS, double seconds, Map<String, Double> fixed, List<Measure> measures)
-        implements Serializable {
-    private static final long serialVersionUID = 1L;
+public record RunSetup(String scene, List<String> diaphragm, String integrator, double dtS, double seconds,
+        Map<String, Double> fixed, List<Measure> measures) implements Serializable {
+    private static final long serialVersionUID = 2L;
 
     public RunSetup {
+        diaphragm = List.copyOf(diaphragm);
         fixed = Collections.unmodifiableMap(new LinkedHashMap<>(fixed));
         measures = Collections.unmodifiableList(new ArrayList<>(measures));
     }
 
     /** The same setup with other measures (calibration adds its targets'). */
     public RunSetup withMeasures(List<Measure> m) {
-        return new RunSetup(scene, meshFile, units, thicknessMm, rings, boxesFile, muscleLoad, integrator, dtS, seconds,
-                fixed, m);
+        return new RunSetup(scene, diaphragm, integrator, dtS, seconds, fixed, m);
+    }
+
+    /** The diaphragm's scene definition (meaningful for the diaphragm scene only). */
+    public DiaphragmSpec diaphragmSpec() {
+        return DiaphragmOptions.parse(diaphragm).spec(null, TunableScenes.defaultRings());
+    }
+
+    /** The diaphragm's muscle load as on the command line, or null for a scene without a muscle. */
+    public String muscleLoad() {
+        return scene.equals("diaphragm") ? BoundaryConditions.name(diaphragmSpec().boundary().muscleLoad()) : null;
     }
 
     /** One line describing the geometry, for logs and reports. */
@@ -51,8 +58,7 @@ public record RunSetup(String scene, String meshFile, String units, double thick
         if (!scene.equals("diaphragm")) {
             return scene;
         }
-        String g = meshFile != null ? "diaphragm mesh " + meshFile : "generated double dome, " + rings + " rings";
-        return g + ", muscle load " + (muscleLoad == null
-                ? BoundaryConditions.DEFAULT_MUSCLE_LOAD + " (default)" : muscleLoad);
+        DiaphragmSpec s = diaphragmSpec();
+        return "diaphragm " + s.mesh().describe() + ", " + s.cage().describe() + ", muscle load " + muscleLoad();
     }
 }

@@ -148,11 +148,9 @@ public final class SceneRun {
     }
 
     private static SceneFactory factory(RunSetup s) {
-        String key = s.scene() + "|" + s.meshFile() + "|" + s.units() + "|" + s.thicknessMm() + "|" + s.rings() + "|"
-                + s.boxesFile() + "|" + s.muscleLoad();
-        return FACTORIES.computeIfAbsent(key, k -> TunableScenes.factory(s.scene(), new TunableScenes.Source(
-                s.meshFile() == null ? null : Path.of(s.meshFile()), s.units(), s.thicknessMm(), s.rings(),
-                s.boxesFile() == null ? null : Path.of(s.boxesFile()), s.muscleLoad())));
+        String key = s.scene() + "|" + String.join("\u0000", s.diaphragm());
+        return FACTORIES.computeIfAbsent(key, k -> TunableScenes.factory(s.scene(),
+                org.tensim.tuning.DiaphragmOptions.parse(s.diaphragm())));
     }
 
     private static String message(Throwable e) {

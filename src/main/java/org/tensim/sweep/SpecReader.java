@@ -14,9 +14,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tensim.io.Json;
-import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.solver.integrators.Integrators;
+import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.TunableScenes;
 
 /**
@@ -72,7 +72,7 @@ public final class SpecReader {
 
     /** A sweep spec from its JSON object. */
     public SweepSpec sweep(JsonNode root) throws SpecException {
-        allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "parameters", "sampling", "fixed", "solver",
+        allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "diaphragm", "parameters", "sampling", "fixed", "solver",
                 "outputs"));
         RunSetup setup = setup(root);
         SweepSpec.Sampling sampling = sampling(root.get("sampling"));
@@ -99,51 +99,74 @@ public final class SpecReader {
         if (!TunableScenes.names().contains(scene)) {
             throw fail("scene", root.get("scene"), "one of " + TunableScenes.names());
         }
+        // The diaphragm's options: the "diaphragm" object, by the command line's names, and the older keys
+        // "mesh", "boxes" and "muscleLoad", which say the same as --mesh/--rings, --boxes and --muscle-load.
+        List<String> args = new ArrayList<>();
         JsonNode mesh = root.get("mesh");
-        String file = null;
-        String units = "mm";
-        double thicknessMm = 2.5;
-        int rings = TunableScenes.Source.defaults().rings(); // the GUI's default resolution
         if (mesh != null) {
-            if (!scene.equals("diaphragm")) {
-                throw fail("mesh", mesh, "no mesh: scene '" + scene + "' is built in");
-            }
+            onlyDiaphragm(scene, "mesh", mesh);
             if (!mesh.isObject()) {
                 throw fail("mesh", mesh, "an object {\"rings\": N} or {\"file\": \"x.obj\", \"units\": \"mm\"}");
             }
             allowOnly(mesh, "mesh.", Set.of("rings", "file", "units", "thicknessMm"));
+            if (mesh.has("file") && mesh.has("rings")) {
+                throw fail("mesh.rings", mesh.get("rings"), "either rings (generated dome) or file, not both");
+            }
             if (mesh.has("file")) {
-                file = existing("mesh.file", text(mesh, "file", null)).toString();
-                units = text(mesh, "units", "mm");
-                if (!units.equals("mm") && !units.equals("m")) {
-                    throw fail("mesh.units", mesh.get("units"), "\"mm\" or \"m\"");
-                }
-                thicknessMm = number(mesh, "mesh.thicknessMm", 2.5);
-                positive("mesh.thicknessMm", thicknessMm);
+                args.addAll(List.of("--mesh", existing("mesh.file", text(mesh, "file", null)).toString()));
+            }
+            if (mesh.has("units")) {
+                args.addAll(List.of("--units", text(mesh, "units", null)));
+            }
+            if (mesh.has("thicknessMm")) {
+                args.addAll(List.of("--thickness", Double.toString(number(mesh, "mesh.thicknessMm", 0))));
             }
             if (mesh.has("rings")) {
-                if (file != null) {
-                    throw fail("mesh.rings", mesh.get("rings"), "either rings (generated dome) or file, not both");
-                }
                 JsonNode r = mesh.get("rings");
-                if (!r.canConvertToInt() || !r.isIntegralNumber() || r.asInt() < 2 || r.asInt() > 200) {
-                    throw fail("mesh.rings", r, "a whole number of rings per face from 2 to 200");
+                if (!r.isIntegralNumber()) {
+                    throw fail("mesh.rings", r, "a whole number of rings per face, 4 or more");
                 }
-                rings = r.asInt();
+                args.addAll(List.of("--rings", r.asText()));
             }
         }
-        // No boxes: the project's parametric rib cage (as in the GUI).
-        Path boxes = root.has("boxes") ? existing("boxes", text(root, "boxes", null)) : null;
-        String muscleLoad = null;
+        if (root.has("boxes")) {
+            onlyDiaphragm(scene, "boxes", root.get("boxes"));
+            args.addAll(List.of("--boxes", existing("boxes", text(root, "boxes", null)).toString()));
+        }
         if (root.has("muscleLoad")) {
-            if (!scene.equals("diaphragm")) {
-                throw fail("muscleLoad", root.get("muscleLoad"), "no muscleLoad: scene '" + scene + "' has no muscle");
-            }
-            muscleLoad = text(root, "muscleLoad", null);
+            onlyDiaphragm(scene, "muscleLoad", root.get("muscleLoad"));
+            String load = text(root, "muscleLoad", null);
             try {
-                BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad);
+                org.tensim.scene.diaphragm.BoundaryConditions.parse(
+                        org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.class, load);
             } catch (IllegalArgumentException e) {
                 throw fail("muscleLoad", root.get("muscleLoad"), e.getMessage());
+            }
+            args.addAll(List.of("--muscle-load", load));
+        }
+        if (root.has("diaphragm")) {
+            onlyDiaphragm(scene, "diaphragm", root.get("diaphragm"));
+            try {
+                args.addAll(DiaphragmOptions.fromJson(root.get("diaphragm"), "diaphragm", base));
+            } catch (IllegalArgumentException e) {
+                throw new SpecException(where + ": " + e.getMessage());
+            }
+        }
+        if (scene.equals("diaphragm")) {
+            try {
+                DiaphragmOptions o = DiaphragmOptions.parse(args);
+                org.tensim.scene.diaphragm.DiaphragmSpec d = o.spec(null, TunableScenes.defaultRings());
+                for (Path f : new Path[] {d.mesh().file(), d.cage().boxes(), d.mesh().labels()}) {
+                    if (f != null && !Files.isRegularFile(f)) {
+                        throw new IllegalArgumentException("no such file " + f);
+                    }
+                }
+                if (d.cage().thorax() != null && !Files.isDirectory(d.cage().thorax())) {
+                    throw new IllegalArgumentException("--thorax " + d.cage().thorax() + ": no such folder");
+                }
+            } catch (IllegalArgumentException e) {
+                throw new SpecException(where + ": the diaphragm's options (fields mesh, boxes, muscleLoad and"
+                        + " diaphragm): " + e.getMessage());
             }
         }
         JsonNode solver = root.get("solver");
@@ -182,10 +205,7 @@ public final class SpecReader {
                 fixed.put(e.getKey(), v);
             }
         }
-        return new RunSetup(scene, file, units, thicknessMm, rings, boxes == null ? null : boxes.toString(), muscleLoad,
-                integrator,
-                dt, seconds, fixed,
-                List.of());
+        return new RunSetup(scene, args, integrator, dt, seconds, fixed, List.of());
     }
 
     private SweepSpec.Sampling sampling(JsonNode s) throws SpecException {
@@ -368,6 +388,12 @@ public final class SpecReader {
     public SpecException fail(String field, JsonNode found, String expected) {
         return new SpecException(where + ": field '" + field + "' must be " + expected + (found == null
                 ? " (missing)" : ", got " + found));
+    }
+
+    private void onlyDiaphragm(String scene, String field, JsonNode value) throws SpecException {
+        if (!scene.equals("diaphragm")) {
+            throw fail(field, value, "absent: scene '" + scene + "' is built in and has no diaphragm");
+        }
     }
 
     private static List<String> keys(String scene) {

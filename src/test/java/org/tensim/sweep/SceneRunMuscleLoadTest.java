@@ -15,7 +15,8 @@ import org.junit.jupiter.api.Test;
  */
 class SceneRunMuscleLoadTest {
     private static RunSetup setup(String muscleLoad) {
-        return new RunSetup("diaphragm", null, "mm", 2.5, 6, null, muscleLoad, "implicit-euler-cg1e-3", 0.01, 1.34,
+        return new RunSetup("diaphragm", muscleLoad == null ? List.of("--rings", "6")
+                : List.of("--rings", "6", "--muscle-load", muscleLoad), "implicit-euler-cg1e-3", 0.01, 1.34,
                 Map.of(), List.of());
     }
 

@@ -43,7 +43,7 @@ class SceneRunRepeatabilityTest {
     @Test
     void theSameValuesGiveTheSameBitsWhateverRanBeforeOrBeside() throws Exception {
         // 5 rings: a geometry no other test builds, so the first point is its factory's first scene.
-        RunSetup setup = new RunSetup("diaphragm", null, "mm", 2.5, 5, null, null, "implicit-euler-cg1e-3", 0.01, 0.3,
+        RunSetup setup = new RunSetup("diaphragm", List.of("--rings", "5"), "implicit-euler-cg1e-3", 0.01, 0.3,
                 Map.of(), List.of(new FinalPositions()));
         List<String> names = List.of("muscleActionPa", "ribAmplitudeFactor");
         Point a = new Point(0, new double[] {2600, 1.2});

@@ -71,7 +71,7 @@ class SpecReaderTest {
                 + " {\"muscleActionPa\": {\"values\": [15000]}}, \"outputs\": [\"dome_excursion_mm\"]";
         assertEquals("fibres", SpecReader.readSweep(spec("{" + body + ", \"muscleLoad\": \"fibres\"}")).setup()
                 .muscleLoad());
-        assertEquals(null, SpecReader.readSweep(spec("{" + body + "}")).setup().muscleLoad(), "the default, fibres");
+        assertEquals("fibres", SpecReader.readSweep(spec("{" + body + "}")).setup().muscleLoad(), "the default");
         Path f = spec("{" + body + ", \"muscleLoad\": \"fibers\"}");
         String m = assertThrows(SpecReader.SpecException.class, () -> SpecReader.readSweep(f)).getMessage();
         assertTrue(m.contains("'muscleLoad'") && m.contains("fibres") && m.contains("pressure"), m);

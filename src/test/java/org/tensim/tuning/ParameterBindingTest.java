@@ -75,8 +75,7 @@ public class ParameterBindingTest {
 
     /** The diaphragm at a coarse resolution (6 rings per face), quick to build and step. */
     public static SceneFactory coarseDiaphragm() {
-        return TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 6,
-                TunableScenes.Source.defaults().boxes()));
+        return TunableScenes.factory("diaphragm", DiaphragmOptions.parse(java.util.List.of("--rings", "6")));
     }
 
     static SceneFactory factory(String name) {

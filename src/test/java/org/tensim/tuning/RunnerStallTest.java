@@ -68,7 +68,7 @@ class RunnerStallTest {
     @ParameterizedTest
     @ValueSource(strings = {"rk2", Integrators.REAL_TIME})
     void stiffnessChangeWhileRunningDoesNotStallTheSteps(String integrator) throws Exception {
-        SceneFactory factory = TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 14, null));
+        SceneFactory factory = TunableScenes.factory("diaphragm", org.tensim.tuning.DiaphragmOptions.parse(List.of("--rings", "14")));
         ViewScene first = factory.create(true);
         Tuning tuning = new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), true,
                 Integrators.choices());

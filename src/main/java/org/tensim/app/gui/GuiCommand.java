@@ -10,6 +10,7 @@ import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.tuning.ConfigDir;
+import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.PresetFile;
 import org.tensim.tuning.Settings;
 import org.tensim.tuning.TunableScenes;
@@ -30,55 +31,8 @@ public final class GuiCommand implements Callable<Integer> {
             completionCandidates = SceneNames.class)
     String scene = TunableScenes.names().get(0);
 
-    @Option(names = "--mesh", paramLabel = "FILE",
-            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
-                    + " (default: the generated double dome)")
-    Path mesh;
-
-    @Option(names = "--units", paramLabel = "mm|m", description = "units of the --mesh file (default: ${DEFAULT-VALUE})")
-    String units = TunableScenes.Source.defaults().units();
-
-    @Option(names = "--thickness", paramLabel = "MM",
-            description = "thickness given to a single-surface --mesh, mm (default: ${DEFAULT-VALUE})")
-    double thicknessMm = TunableScenes.Source.defaults().thicknessMm();
-
-    @Option(names = "--resolution", paramLabel = "RINGS",
-            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
-                    + " 2,500 (default: ${DEFAULT-VALUE}, the resolution study's pick in meshes/resolution-pick.json,"
-                    + " the paper's 43 when there is none); the diaphragm opens with the large-step bdf2 solver")
-    int rings = TunableScenes.Source.defaults().rings();
-
-    @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
-                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
-                    + " rib cage, placed on the generated dome)")
-    Path boxes;
-
-    @Option(names = "--thorax", paramLabel = "DIR",
-            description = "a thorax of bone surfaces (a folder with a parts.json), as `tensim diaphragm --thorax`:"
-                    + " the diaphragm attached at its origins (green), the nodes touching a bone at each frame (blue)")
-    Path thorax;
-
-    @Option(names = "--labels", paramLabel = "FILE", description = "per-vertex labels of --mesh, as `tensim diaphragm"
-            + " --labels`")
-    Path labels;
-
-    @Option(names = "--tendon-rule", paramLabel = "RULE",
-            description = "plane or geodesic, as `tensim diaphragm --tendon-rule` (default: plane)")
-    String tendonRule;
-
-    @Option(names = "--model", paramLabel = "NAME",
-            description = "default or paper (the paper's tissue springs, threshold attachment and action lines),"
-                    + " as `tensim diaphragm --model` (default: default)")
-    String model;
-
-    @Option(names = "--muscle-load", paramLabel = "MODEL",
-            description = "diaphragm muscle load: fibres (active tension along the muscle fibres, 18 kPa of fibre"
-                    + " stress), pressure (vertical traction per unit area, 2.6 kPa) or paper-nodes (the paper's"
-                    + " per-node forces, 2.6 kPa); as `tensim diaphragm --muscle-load` (default: fibres, or the load"
-                    + " of the restored last-used parameters; given, last-used parameters of another load are not"
-                    + " restored)")
-    String muscleLoad;
+    @picocli.CommandLine.Mixin
+    DiaphragmOptions options = new DiaphragmOptions();
 
     @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
     Path preset;
@@ -147,9 +101,7 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
         }
         // Bad names and files fail here, before any window.
-        SceneFactory factory = TunableScenes.factory(scene,
-                new TunableScenes.Source(mesh, units, thicknessMm, rings, boxes, muscleLoad, thorax, labels, tendonRule,
-                        model));
+        SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);
@@ -157,7 +109,8 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
-                TunableScenes.opensInRealTime(scene) && !"paper".equals(model), muscleLoad != null, thorax != null);
+                TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
+                options.thorax != null);
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();

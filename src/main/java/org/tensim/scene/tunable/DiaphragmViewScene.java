@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.mesh.MeshFormatException;
-import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BreathingCycle;
@@ -201,35 +200,6 @@ public final class DiaphragmViewScene implements ViewScene {
             System.arraycopy(rgb, 0, c, 3 * i, 3);
         }
         return c;
-    }
-
-    /**
-     * Where the diaphragm comes from: a mesh file, or the generated double dome
-     * at a resolution; and the rib and sternum boxes. The surfaces and boxes are
-     * read once and kept, so that a reset or a restart only rebuilds the scene.
-     *
-     * @param mesh       mesh file, or null for the generated double dome
-     * @param units      units of the mesh file
-     * @param thicknessM thickness given to a single-surface mesh, m
-     * @param rings      rings per face of the generated dome (>= 2)
-     * @param boxes      rib and sternum boxes file (millimetres, BodyParts3D frame), or null for the project's
-     *                   parametric rib cage
-     */
-    public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes) {
-        return factory(mesh, units, thicknessM, rings, boxes, BoundaryConditions.defaults());
-    }
-
-    /**
-     * As {@link #factory(Path, MeshUnits, double, int, Path)} with the attachment and muscle-load models (the
-     * load can be changed per scene: {@link SceneFactory#create(boolean, String, Map)}); the muscle action's
-     * default is the model's ({@link DiaphragmSetup#defaultMusclePa}: 18 kPa of active fibre
-     * stress, 2.6 kPa of pressure).
-     */
-    public static SceneFactory factory(Path mesh, MeshUnits units, double thicknessM, int rings, Path boxes,
-            BoundaryConditions bc) {
-        DiaphragmSpec.Mesh m = DiaphragmSpec.Mesh.defaults().withRings(rings).withOffsetThickness(thicknessM);
-        return factory(DiaphragmSpec.defaults().withMesh(mesh == null ? m : m.withFile(mesh, units))
-                .withCage(DiaphragmSpec.Cage.defaults().withBoxes(boxes)).withBoundary(bc));
     }
 
     /**

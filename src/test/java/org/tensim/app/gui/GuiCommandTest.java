@@ -56,7 +56,8 @@ class GuiCommandTest {
     void theDiaphragmOpensAtThePickedResolutionWithTheLargeStepSolver() {
         GuiCommand c = new GuiCommand();
         new CommandLine(c).parseArgs();
-        assertEquals(org.tensim.experiment.diaphragm.ResolutionPick.read().rings(), c.rings,
+        assertEquals(org.tensim.experiment.diaphragm.ResolutionPick.read().rings(),
+                c.options.spec(null, TunableScenes.defaultRings()).mesh().rings(),
                 "the resolution study's pick (the paper's 43 rings when none is committed)");
         assertEquals("diaphragm", c.scene);
         assertTrue(TunableScenes.opensInRealTime("diaphragm") && !TunableScenes.opensInRealTime("cube"));

@@ -92,8 +92,8 @@ class MuscleLoadPresetTest {
         assertEquals(List.of("muscleLoad=pressure", "muscleActionPa=3000.0"), applied,
                 "the load first (it rebuilds the scene), then the values");
         // What the user had: the pressure scene at 3 kPa, as built when the pressure was the default.
-        SceneFactory pressureFactory = TunableScenes.factory("diaphragm", new TunableScenes.Source(null, "mm", 2.5, 6,
-                TunableScenes.Source.defaults().boxes(), "pressure"));
+        SceneFactory pressureFactory = TunableScenes.factory("diaphragm", org.tensim.tuning.DiaphragmOptions.parse(
+                List.of("--rings", "6", "--muscle-load", "pressure")));
         ViewScene before = pressureFactory.create(true, Map.of(DiaphragmViewScene.MUSCLE_ACTION, 3000.0));
         ViewScene loaded = f.create(t.tensegrityTendon(), t.muscleLoad(), t.snapshot().values());
         double dt = before.defaultTimeStep();

@@ -1,4 +1,4 @@
-package org.tensim.app;
+package org.tensim.tuning;
 
 import org.tensim.scene.diaphragm.ActionLines;
 

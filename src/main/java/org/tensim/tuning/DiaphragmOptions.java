@@ -1,0 +1,347 @@
+package org.tensim.tuning;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.tensim.io.mesh.MeshCleaner;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.model.Vec3;
+import org.tensim.scene.diaphragm.ActionLines;
+import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.diaphragm.TendonRule;
+import org.tensim.scene.diaphragm.TissueModel;
+import picocli.CommandLine.Option;
+
+/**
+ * The diaphragm scene's options, one set for every way in: a picocli mixin of {@code tensim diaphragm} and
+ * {@code tensim gui}, and the keys of a sweep or calibration spec's {@code "diaphragm"} object (the same names
+ * without the dashes, read by {@link #fromJson}). {@link #spec} turns them into the one
+ * {@link DiaphragmSpec}, with one validation; an option left out keeps the spec's default.
+ */
+public final class DiaphragmOptions {
+    @Option(names = "--mesh", paramLabel = "FILE",
+            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
+                    + " (default: the generated double dome)")
+    public Path mesh;
+
+    @Option(names = "--units", paramLabel = "mm|m", description = "units of the mesh file (default: mm)")
+    String units;
+
+    @Option(names = "--thickness", paramLabel = "MM",
+            description = "thickness given to a single-surface mesh, mm (default: 2.5)")
+    Double thicknessMm;
+
+    @Option(names = {"--rings", "--resolution"}, paramLabel = "N",
+            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
+                    + " 2,500 (default: 43 in `diaphragm`; in the GUI and specs the resolution study's pick in"
+                    + " meshes/resolution-pick.json)")
+    Integer rings;
+
+    @Option(names = "--boxes", paramLabel = "FILE",
+            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
+                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
+                    + " rib cage, placed on the generated dome)")
+    public Path boxes;
+
+    @Option(names = "--thorax", paramLabel = "DIR",
+            description = "a thorax of bone surfaces: a folder with a parts.json and its OBJ parts in the mesh's frame,"
+                    + " e.g. ../shared/meshes/thorax (ribs, cartilage, sternum and vertebrae; the diaphragm attached at"
+                    + " its origins and sliding on the bones elsewhere) (default: the parametric rib cage)")
+    public Path thorax;
+
+    @Option(names = "--labels", paramLabel = "FILE",
+            description = "per-vertex labels of the mesh (tendon, muscle, origin-sternal, origin-costal,"
+                    + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
+    public Path labels;
+
+    @Option(names = "--tendon-rule", paramLabel = "RULE",
+            description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
+                    + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
+                    + " tops and their midpoint along the surface, the same share) (default: plane)")
+    String tendonRule;
+
+    @Option(names = "--contact", negatable = true,
+            description = "with --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
+                    + " not attached (default: on; off in the paper's model; --no-contact turns it off)")
+    public Boolean contact;
+
+    @Option(names = "--contact-stiffness", paramLabel = "PA_PER_M",
+            description = "contact penalty stiffness per unit area of diaphragm, Pa/m (default: "
+                    + DiaphragmSpec.Cage.DEFAULT_CONTACT_PA_PER_M + ")")
+    Double contactPaPerM;
+
+    @Option(names = "--model", paramLabel = "NAME",
+            description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
+                    + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
+                    + " vertical action lines with per-node forces, no contact); the paper's model sets"
+                    + " --tissue-model, --attachment and --muscle-load, which must then be left out (default: default)")
+    public String model;
+
+    @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
+            description = "rib rotation, times the quiet-breathing value, 0..3 (default: 1)")
+    Double ribAmplitude;
+
+    @Option(names = "--muscle-force", paramLabel = "PA",
+            description = "peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
+                    + " default 18000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600)")
+    Double musclePa;
+
+    @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: 4)")
+    Double periodS;
+
+    @Option(names = "--ie-ratio", paramLabel = "R",
+            description = "expiration time over inspiration time, I:E = 1:R (default: 2)")
+    Double ieRatio;
+
+    @Option(names = "--attach-threshold", paramLabel = "MM",
+            description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm (default: 20)")
+    Double attachMm;
+
+    @Option(names = "--attachment", paramLabel = "MODEL",
+            description = "band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
+                    + " within the threshold driven with the ribs) (default: band)")
+    String attachment;
+
+    @Option(names = "--band-stiffness", paramLabel = "PA_PER_M",
+            description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: "
+                    + BoundaryConditions.DEFAULT_BAND_PA_PER_M + ")")
+    Double bandPaPerM;
+
+    @Option(names = "--band-all-segments",
+            description = "attachment band: attach to every cage segment within the threshold, not only to the"
+                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
+    boolean allSegments;
+
+    @Option(names = "--muscle-load", paramLabel = "MODEL",
+            description = "fibres (active tension along the fibres to the central tendon, 18 kPa of fibre stress),"
+                    + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
+                    + " paper's per-node forces, 2.6 kPa) (default: fibres)")
+    public String muscleLoad;
+
+    @Option(names = "--weld-tolerance", paramLabel = "MM",
+            description = "mesh cleaning: vertices closer than this are merged, mm (default: 0.001)")
+    Double weldMm;
+
+    @Option(names = "--min-piece-fraction", paramLabel = "F",
+            description = "mesh cleaning: disconnected pieces with fewer than this fraction of the triangles are"
+                    + " dropped; 0 keeps every piece (default: 0.01)")
+    Double minPieceFraction;
+
+    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",",
+            description = "normal of the muscle/tendon plane, pointing to the tendon (default: 0,0,1, superior)")
+    double[] tendonNormal;
+
+    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",",
+            description = "a point of the muscle/tendon plane, mm, mesh frame (default: placed so that the tendon"
+                    + " has --tendon-fraction of the upper surface)")
+    double[] tendonPointMm;
+
+    @Option(names = "--tendon-fraction", paramLabel = "F",
+            description = "share of the upper surface's area given to the tendon when no --tendon-point is given"
+                    + " (default: 0.12)")
+    Double tendonFraction;
+
+    @Option(names = "--tissue-model", paramLabel = "NAME",
+            description = "how the shell comes from the tissue: material (identified from E, nu and t: membrane"
+                    + " triangles, Kirchhoff bending, rigid columns), springs (the same with edge springs only) or"
+                    + " paper (the model the paper's figures were reproduced with) (default: material;"
+                    + " docs/diaphragm.md)")
+    String tissueModel;
+
+    @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
+            description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
+                    + " several (default: one through the top of each dome, R = 0.3 x the mesh width); for"
+                    + " --muscle-load pressure and paper-nodes (the fibres' tension has no action lines)")
+    List<ActionLines.Line> actionLines;
+
+    /**
+     * The scene these options describe: the default (or the paper's) spec with every given option applied.
+     *
+     * @param defaultMesh  the mesh file read when {@code --mesh} is left out (null: the generated double dome)
+     * @param defaultRings the generated double dome's rings when {@code --rings} is left out
+     * @throws IllegalArgumentException naming the option and the value when one is out of range or the options
+     *                                  contradict each other
+     */
+    public DiaphragmSpec spec(Path defaultMesh, int defaultRings) {
+        boolean paper = paperModel();
+        DiaphragmSpec base = paper ? DiaphragmSpec.paper() : DiaphragmSpec.defaults();
+        if (paper) {
+            for (Object[] o : new Object[][] {{"--tissue-model", tissueModel}, {"--attachment", attachment},
+                    {"--muscle-load", muscleLoad}}) {
+                if (o[1] != null) {
+                    throw new IllegalArgumentException("--model paper sets " + o[0] + " itself (the paper's); leave"
+                            + " it out or use --model default");
+                }
+            }
+        }
+        DiaphragmParameters p = base.tissue();
+        if (attachMm != null) {
+            p = p.withAttachThreshold(attachMm * 1e-3);
+        }
+        if (tendonFraction != null) {
+            p = p.withTendonAreaFraction(tendonFraction);
+        }
+        if (tissueModel != null) {
+            p = p.withTissueModel(TissueModel.parse(tissueModel));
+        }
+        if (tendonNormal != null || tendonPointMm != null) {
+            Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
+            Vec3 point = tendonPointMm == null ? null : vector("--tendon-point", tendonPointMm, 1e-3);
+            p = p.withTendonPlane(normal, point);
+        }
+        BoundaryConditions b = base.boundary();
+        try {
+            b = new BoundaryConditions(attachment == null ? b.attachment()
+                    : BoundaryConditions.parse(BoundaryConditions.Attachment.class, attachment),
+                    bandPaPerM == null ? b.bandStiffnessPaPerM() : bandPaPerM, b.bandTaperM(),
+                    muscleLoad == null ? b.muscleLoad()
+                            : BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad),
+                    !allSegments && b.costalOriginsOnly());
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--attachment, --band-stiffness, --muscle-load: " + e.getMessage(), e);
+        }
+        if (actionLines != null && !actionLines.isEmpty() && b.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
+            throw new IllegalArgumentException("--action-line: the muscle load '" + BoundaryConditions.name(
+                    b.muscleLoad()) + "' (the active fibre tension) has no action lines; they place the traction of"
+                    + " --muscle-load pressure or paper-nodes");
+        }
+        if (rings != null && rings < 4) {
+            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4 or more, got "
+                    + rings);
+        }
+        if (thicknessMm != null && !(thicknessMm > 0 && Double.isFinite(thicknessMm))) {
+            throw new IllegalArgumentException("--thickness must be a finite number of mm > 0, got " + thicknessMm);
+        }
+        DiaphragmSpec.Mesh m = base.mesh();
+        MeshCleaner.Options c = m.cleaning();
+        m = m.withRings(rings != null ? rings : defaultRings)
+                .withCleaning(new MeshCleaner.Options(weldMm == null ? c.weldToleranceM() : weldMm * 1e-3,
+                        minPieceFraction == null ? c.minComponentFraction() : minPieceFraction))
+                .withOffsetThickness(thicknessMm == null ? m.offsetThicknessM() : thicknessMm * 1e-3)
+                .withLabels(labels);
+        Path file = mesh != null ? mesh : defaultMesh;
+        if (file != null) {
+            m = m.withFile(file, MeshUnits.parse(units == null ? "mm" : units));
+        } else if (units != null) {
+            MeshUnits.parse(units); // validated even when unused
+        }
+        DiaphragmSpec.Breathing br = base.breathing();
+        br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
+                ieRatio == null ? br.expirationRatio() : ieRatio,
+                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa);
+        DiaphragmSpec.Cage cage = new DiaphragmSpec.Cage(boxes, thorax,
+                contact == null ? base.cage().contact() : contact,
+                contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM);
+        return new DiaphragmSpec(m, p, b, br, cage, actionLines,
+                tendonRule == null ? TendonRule.PLANE : BoundaryConditions.parse(TendonRule.class, tendonRule));
+    }
+
+    /** Holds the options for a parse outside a command (spec files). */
+    @picocli.CommandLine.Command(name = "diaphragm-options")
+    private static final class Holder {
+        @picocli.CommandLine.Mixin
+        DiaphragmOptions options = new DiaphragmOptions();
+    }
+
+    /**
+     * Options as a command line would give them, e.g. {@code ["--thorax", "dir", "--muscle-load", "pressure"]}.
+     *
+     * @throws IllegalArgumentException naming the option, the value and what was expected
+     */
+    public static DiaphragmOptions parse(List<String> args) {
+        Holder h = new Holder();
+        try {
+            new picocli.CommandLine(h).parseArgs(args.toArray(String[]::new));
+        } catch (picocli.CommandLine.ParameterException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+        return h.options;
+    }
+
+    /**
+     * The command-line form of a spec file's {@code "diaphragm"} object, whose keys are the options' names
+     * without the dashes: {@code {"thorax": "../thorax", "muscle-load": "pressure", "rings": 20,
+     * "contact": false, "action-line": ["0,10,40", "0,-10,40"], "tendon-normal": [0, 0, 1]}}. A string, number
+     * or {@code true} is one option; {@code false} is the option's negation ({@code --no-contact}); an array of
+     * numbers is one comma-separated value and an array of strings repeats the option. Paths are resolved against
+     * {@code base} (the spec file's folder).
+     *
+     * @param field the object's name in messages, e.g. {@code diaphragm}
+     * @throws IllegalArgumentException naming {@code field.key} and what was expected
+     */
+    public static List<String> fromJson(com.fasterxml.jackson.databind.JsonNode obj, String field, Path base) {
+        if (!obj.isObject()) {
+            throw new IllegalArgumentException("field '" + field + "' must be an object of option: value (the"
+                    + " options of `tensim diaphragm` without the dashes), got " + obj);
+        }
+        picocli.CommandLine.Model.CommandSpec spec = new picocli.CommandLine(new Holder()).getCommandSpec();
+        List<String> args = new java.util.ArrayList<>();
+        for (var it = obj.fields(); it.hasNext();) {
+            var e = it.next();
+            String name = "--" + e.getKey();
+            picocli.CommandLine.Model.OptionSpec o = spec.findOption(name);
+            if (o == null || e.getKey().startsWith("-")) {
+                throw new IllegalArgumentException("field '" + field + "." + e.getKey() + "' is not an option of the"
+                        + " diaphragm; expected one of " + names());
+            }
+            com.fasterxml.jackson.databind.JsonNode v = e.getValue();
+            boolean isPath = o.type() == Path.class;
+            if (v.isBoolean()) {
+                if (v.asBoolean()) {
+                    args.add(name);
+                } else if (o.negatable()) {
+                    args.add("--no-" + e.getKey());
+                } else if (o.arity().max() != 0) {
+                    throw new IllegalArgumentException("field '" + field + "." + e.getKey() + "' must be "
+                            + o.paramLabel() + ", got false");
+                }
+            } else if (v.isArray() && v.size() > 0 && v.get(0).isNumber()) {
+                List<String> parts = new java.util.ArrayList<>();
+                v.forEach(x -> parts.add(x.asText()));
+                args.add(name);
+                args.add(String.join(",", parts));
+            } else if (v.isArray()) {
+                for (com.fasterxml.jackson.databind.JsonNode x : v) {
+                    args.add(name);
+                    args.add(text(x, field + "." + e.getKey(), isPath, base));
+                }
+            } else {
+                args.add(name);
+                args.add(text(v, field + "." + e.getKey(), isPath, base));
+            }
+        }
+        return args;
+    }
+
+    /** The option names without dashes, as a spec file's {@code "diaphragm"} object takes them. */
+    public static List<String> names() {
+        return new picocli.CommandLine(new Holder()).getCommandSpec().options().stream()
+                .map(o -> o.names()[0].substring(2)).sorted().toList();
+    }
+
+    private static String text(com.fasterxml.jackson.databind.JsonNode v, String field, boolean isPath, Path base) {
+        if (!v.isTextual() && !v.isNumber()) {
+            throw new IllegalArgumentException("field '" + field + "' must be a string or a number, got " + v);
+        }
+        return isPath ? base.resolve(v.asText()).normalize().toString() : v.asText();
+    }
+
+    /** Whether {@code --model paper} was given; refuses a model that is neither default nor paper. */
+    public boolean paperModel() {
+        if (model != null && !model.equals("paper") && !model.equals("default")) {
+            throw new IllegalArgumentException("--model must be default or paper, got '" + model + "'");
+        }
+        return "paper".equals(model);
+    }
+
+    private static Vec3 vector(String option, double[] v, double scale) {
+        if (v.length != 3) {
+            throw new IllegalArgumentException(option + " needs three numbers X,Y,Z, got " + v.length);
+        }
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0 && option.equals("--tendon-normal")) {
+            throw new IllegalArgumentException(option + " must not be the zero vector");
+        }
+        return new Vec3(scale * v[0], scale * v[1], scale * v[2]);
+    }
+}
