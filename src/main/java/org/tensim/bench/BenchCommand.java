@@ -72,7 +72,7 @@ public final class BenchCommand implements Callable<Integer> {
     Path out;
 
     @Option(names = "--compare", split = ",", paramLabel = "A,B",
-            description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-single), each on "
+            description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
                 + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (default 20) on "
                 + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
                 + "time and load), then the median ratios and how far apart the two ended"})

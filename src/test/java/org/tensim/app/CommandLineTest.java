@@ -46,7 +46,7 @@ class CommandLineTest {
         String[] one = run("bench", "--scene", "diaphragm", "--compare", "bdf2");
         assertEquals("2", one[0]);
         assertTrue(one[2].contains("--compare takes two"), one[2]);
-        String[] lattice = run("bench", "--compare", "bdf2,bdf2-single");
+        String[] lattice = run("bench", "--compare", "bdf2,bdf2-newton2");
         assertEquals("2", lattice[0]);
         assertTrue(lattice[2].contains("with --scene diaphragm"), lattice[2]);
         String[] unknown = run("bench", "--scene", "diaphragm", "--compare", "bdf2,bdf3");

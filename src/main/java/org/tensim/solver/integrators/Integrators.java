@@ -7,7 +7,6 @@ import java.util.Map;
 import java.util.function.Supplier;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
-import org.tensim.solver.prefactored.FactorPrecision;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
@@ -23,7 +22,7 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * integrator's own {@link Integrator#name()}. Studies and tests enumerate these, so a new method is tested
  * at once;</li>
  * <li><b>variants</b>: a method with other settings, under a name of its own:
- * {@value #REAL_TIME_IMPLICIT}, {@value #LARGE_STEP_ACCURATE} and {@value #LARGE_STEP_SINGLE}.</li>
+ * {@value #REAL_TIME_IMPLICIT}, {@value #LARGE_STEP_ACCURATE} and {@value #CONTACT}.</li>
  * </ul>
  * {@link #create(String)} and {@link #choice(String)} accept both kinds ({@link #choiceNames()}). Adding a
  * method is one line here and one class; adding a variant is one line here.
@@ -70,13 +69,6 @@ public final class Integrators {
     /** The step the thorax was measured stable and converged at with {@link #CONTACT}, s. */
     public static final double CONTACT_STEP_S = 0.005;
 
-    /**
-     * {@link #REAL_TIME} with its preconditioner's factor read in single precision
-     * ({@link FactorPrecision#SINGLE}): the same converged step, a third fewer bytes per entry in the solves; not
-     * the default (what it saves and what it changes: docs/performance.md).
-     */
-    public static final String LARGE_STEP_SINGLE = "bdf2-single";
-
     private static final Map<String, Supplier<Integrator>> METHODS = new LinkedHashMap<>();
     private static final Map<String, IntegratorChoice> BY_NAME = new LinkedHashMap<>();
 
@@ -103,8 +95,6 @@ public final class Integrators {
         add(new IntegratorChoice(CONTACT, "bdf2, 3 Newton x 20 CG (contact with bone surfaces)",
                 () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
                         .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));
-        add(new IntegratorChoice(LARGE_STEP_SINGLE, "bdf2, the preconditioner's factor in single precision",
-                () -> new PrefactoredBdf2().setFactorPrecision(FactorPrecision.SINGLE)));
     }
 
     private Integrators() {

@@ -64,7 +64,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     private int newtonIterations = DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
     private double krylovTolerance = KRYLOV_TOLERANCE;
-    private FactorPrecision factorPrecision = FactorPrecision.DOUBLE;
     private Executor executor;
 
     private SystemState s;
@@ -138,24 +137,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public PrefactoredBdf2 setKrylovTolerance(double r) {
         krylovTolerance = Check.positive("BDF2 CG tolerance", "(relative residual)", r);
         return this;
-    }
-
-    /**
-     * The precision of the preconditioner factor's entries in its solves ({@link FactorPrecision}; default
-     * double). Set before the first step, it is the first factor's; later, the next factor (made in the
-     * background) takes it.
-     */
-    public PrefactoredBdf2 setFactorPrecision(FactorPrecision p) {
-        factorPrecision = java.util.Objects.requireNonNull(p, "factor precision");
-        if (matrix != null) {
-            matrix.setPrecision(p);
-        }
-        return this;
-    }
-
-    /** The precision of the preconditioner factor's entries in its solves. */
-    public FactorPrecision factorPrecision() {
-        return factorPrecision;
     }
 
     /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
@@ -332,7 +313,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         s = st;
         matrix = new PrefactoredMatrix(st);
-        matrix.setPrecision(factorPrecision);
         if (executor != null) {
             matrix.setExecutor(executor);
         }

@@ -63,9 +63,9 @@ final class PrefactoredMatrix {
             this.beta = beta;
         }
 
-        /** Whether this factor was made for these parameters, weight and precision. */
-        boolean isFor(long version, double b, FactorPrecision p) {
-            return parameterVersion == version && beta == b && cholesky.precision() == p;
+        /** Whether this factor was made for these parameters and weight. */
+        boolean isFor(long version, double b) {
+            return parameterVersion == version && beta == b;
         }
     }
 
@@ -79,7 +79,6 @@ final class PrefactoredMatrix {
     private final AtomicBoolean inFlight = new AtomicBoolean();
     private volatile RuntimeException backgroundFailure;
     private Executor executor = BACKGROUND;
-    private volatile FactorPrecision precision = FactorPrecision.DOUBLE;
     private Factor current;
     private long synchronousFactorisations;
     private long backgroundFactorisations;
@@ -104,14 +103,6 @@ final class PrefactoredMatrix {
     /** Where background refactorisations run (default: one shared daemon thread). */
     void setExecutor(Executor e) {
         executor = java.util.Objects.requireNonNull(e, "refactorisation executor");
-    }
-
-    /**
-     * The precision of the factor's entries in the solves. A change takes effect like a change of
-     * parameters: the next factor, made in the background, is of the new precision.
-     */
-    void setPrecision(FactorPrecision p) {
-        precision = java.util.Objects.requireNonNull(p, "factor precision");
     }
 
     /** Free nodes (the order of the factored system). */
@@ -157,18 +148,17 @@ final class PrefactoredMatrix {
             backgroundFactorisations++;
         }
         long version = s.parameterVersion();
-        FactorPrecision prec = precision;
         if (current == null) {
-            current = build(version, beta, prec, s.springK.clone(), s.springC.clone(), s.viscousDamping());
+            current = build(version, beta, s.springK.clone(), s.springC.clone(), s.viscousDamping());
             synchronousFactorisations++;
-        } else if (!current.isFor(version, beta, prec) && inFlight.compareAndSet(false, true)) {
+        } else if (!current.isFor(version, beta) && inFlight.compareAndSet(false, true)) {
             // The parameters are copied here, on the stepping thread, so the factor sees one consistent set.
             double[] k = s.springK.clone();
             double[] c = s.springC.clone();
             double cv = s.viscousDamping();
             executor.execute(() -> {
                 try {
-                    ready.set(build(version, beta, prec, k, c, cv));
+                    ready.set(build(version, beta, k, c, cv));
                 } catch (RuntimeException e) {
                     backgroundFailure = e;
                 } finally {
@@ -179,10 +169,10 @@ final class PrefactoredMatrix {
         return current;
     }
 
-    private Factor build(long version, double beta, FactorPrecision prec, double[] k, double[] c, double cv) {
+    private Factor build(long version, double beta, double[] k, double[] c, double cv) {
         Triplets t = assemble(beta, k, c, cv);
         SparseCholesky ch = SparseCholesky.factor(pattern, t.rows, t.cols, t.vals, t.count,
-                "M + beta C + beta^2 K (beta = " + beta + " s) on the free nodes", prec);
+                "M + beta C + beta^2 K (beta = " + beta + " s) on the free nodes");
         return new Factor(ch, version, beta);
     }
 

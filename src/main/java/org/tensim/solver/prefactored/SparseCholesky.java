@@ -30,20 +30,15 @@ import edu.emory.mathcs.csparsej.tdouble.Dcs_util;
  * as the column loop of cs_lsolve (the same bits); the backward solve sums a column's products in
  * another order than cs_ltsolve (round-off).
  *
- * <p>With {@link FactorPrecision#SINGLE} the factor keeps L's entries as floats only (factored in double,
- * then rounded) and the solves widen each to double where it is used: a third fewer bytes per entry
- * streamed, the same loops. On the default diaphragm that made the solves about a tenth cheaper and the
- * bdf2 step no measurably cheaper (docs/performance.md), so double is the default.
+ * <p>L's entries stay in double: keeping them as floats made the solves about a tenth cheaper and the bdf2
+ * step no measurably cheaper, and was removed (docs/performance.md, "Tried and removed").
  */
 public final class SparseCholesky {
     private final int n;
     private final int[] pinv; // original index k sits at pinv[k] in the permuted system
     private final int[] lp;
     private final int[] li;
-    /** L's entries in double, or null when the solves read {@link #lxSingle}. */
     private final double[] lx;
-    /** L's entries rounded to single precision, or null when the solves read {@link #lx}. */
-    private final float[] lxSingle;
     private final int[] blockStart; // first column of each block of one or two columns; blockStart[blocks] = n
     private final int blocks;
 
@@ -71,21 +66,12 @@ public final class SparseCholesky {
         }
     }
 
-    private SparseCholesky(int n, int[] pinv, Dcs l, FactorPrecision precision) {
+    private SparseCholesky(int n, int[] pinv, Dcs l) {
         this.n = n;
         this.pinv = pinv;
         this.lp = l.p;
         this.li = l.i;
-        if (precision == FactorPrecision.SINGLE) {
-            lx = null;
-            lxSingle = new float[lp[n]];
-            for (int q = 0; q < lxSingle.length; q++) {
-                lxSingle[q] = (float) l.x[q];
-            }
-        } else {
-            lx = l.x;
-            lxSingle = null;
-        }
+        this.lx = l.x;
         int[] starts = new int[n + 1];
         int b = 0;
         for (int j = 0; j < n; j++) {
@@ -157,16 +143,6 @@ public final class SparseCholesky {
      */
     public static SparseCholesky factor(Pattern pattern, int[] rows, int[] cols, double[] vals, int count,
             String what) {
-        return factor(pattern, rows, cols, vals, count, what, FactorPrecision.DOUBLE);
-    }
-
-    /**
-     * As {@link #factor(Pattern, int[], int[], double[], int, String)}, the solves reading L's entries in the
-     * given precision (the factorisation itself is always in double).
-     */
-    public static SparseCholesky factor(Pattern pattern, int[] rows, int[] cols, double[] vals, int count,
-            String what, FactorPrecision precision) {
-        java.util.Objects.requireNonNull(precision, "factor precision");
         Dcs a = compress(pattern.n, rows, cols, vals, count);
         Dcsn num = Dcs_chol.cs_chol(a, pattern.symbolic);
         if (num == null) {
@@ -174,7 +150,7 @@ public final class SparseCholesky {
                     + " x " + pattern.n + ", " + a.p[pattern.n] + " nonzeros) failed: the matrix is not positive"
                     + " definite (a free node without mass, a negative stiffness or damping, or a non-finite value)");
         }
-        return new SparseCholesky(pattern.n, pattern.symbolic.pinv, num.L, precision);
+        return new SparseCholesky(pattern.n, pattern.symbolic.pinv, num.L);
     }
 
     /** Matrix order. */
@@ -185,11 +161,6 @@ public final class SparseCholesky {
     /** Nonzeros of the factor L. */
     public int factorNonZeros() {
         return lp[n];
-    }
-
-    /** The precision of L's entries as the solves read them. */
-    public FactorPrecision precision() {
-        return lxSingle == null ? FactorPrecision.DOUBLE : FactorPrecision.SINGLE;
     }
 
     /**
@@ -205,13 +176,8 @@ public final class SparseCholesky {
             work[o + 1] = b[3 * k + 1];
             work[o + 2] = b[3 * k + 2];
         }
-        if (lxSingle == null) {
-            lowerSolve(work);
-            upperSolve(work);
-        } else {
-            lowerSolveSingle(work);
-            upperSolveSingle(work);
-        }
+        lowerSolve(work);
+        upperSolve(work);
         for (int k = 0; k < n; k++) {
             final int o = 3 * pi[k];
             b[3 * k] = work[o];
@@ -324,116 +290,6 @@ public final class SparseCholesky {
             x[3 * j + 5] = y2;
             final double l = v[d + 1];
             final double inv = 1 / v[d];
-            x[3 * j] = (x[3 * j] - l * y0 - s0) * inv;
-            x[3 * j + 1] = (x[3 * j + 1] - l * y1 - s1) * inv;
-            x[3 * j + 2] = (x[3 * j + 2] - l * y2 - s2) * inv;
-        }
-    }
-
-    /** {@link #lowerSolve} on the single-precision entries (widened to double: the sums are in double). */
-    private void lowerSolveSingle(double[] x) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final float[] v = lxSingle;
-        final int[] bs = blockStart;
-        for (int b = 0; b < blocks; b++) {
-            final int j = bs[b];
-            final int d = p[j];
-            final double inv = 1.0 / v[d];
-            final double x0 = x[3 * j] * inv;
-            final double x1 = x[3 * j + 1] * inv;
-            final double x2 = x[3 * j + 2] * inv;
-            x[3 * j] = x0;
-            x[3 * j + 1] = x1;
-            x[3 * j + 2] = x2;
-            if (bs[b + 1] == j + 1) {
-                for (int q = d + 1, end = p[j + 1]; q < end; q++) {
-                    final int r = 3 * ix[q];
-                    final double l = v[q];
-                    x[r] -= l * x0;
-                    x[r + 1] -= l * x1;
-                    x[r + 2] -= l * x2;
-                }
-                continue;
-            }
-            // Columns j and j + 1: row j + 1 first, then the rows they share.
-            final int e = p[j + 1];
-            final double l = v[d + 1];
-            final double inv1 = 1.0 / v[e];
-            final double y0 = (x[3 * j + 3] - l * x0) * inv1;
-            final double y1 = (x[3 * j + 4] - l * x1) * inv1;
-            final double y2 = (x[3 * j + 5] - l * x2) * inv1;
-            x[3 * j + 3] = y0;
-            x[3 * j + 4] = y1;
-            x[3 * j + 5] = y2;
-            for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
-                final int r = 3 * ix[q];
-                final double la = v[qa];
-                final double lb = v[q];
-                x[r] = x[r] - la * x0 - lb * y0;
-                x[r + 1] = x[r + 1] - la * x1 - lb * y1;
-                x[r + 2] = x[r + 2] - la * x2 - lb * y2;
-            }
-        }
-    }
-
-    /** {@link #upperSolve} on the single-precision entries (widened to double: the sums are in double). */
-    private void upperSolveSingle(double[] x) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final float[] v = lxSingle;
-        final int[] bs = blockStart;
-        for (int b = blocks - 1; b >= 0; b--) {
-            final int j = bs[b];
-            final int d = p[j];
-            if (bs[b + 1] == j + 1) {
-                double x0 = x[3 * j];
-                double x1 = x[3 * j + 1];
-                double x2 = x[3 * j + 2];
-                for (int q = d + 1, end = p[j + 1]; q < end; q++) {
-                    final int r = 3 * ix[q];
-                    final double l = v[q];
-                    x0 -= l * x[r];
-                    x1 -= l * x[r + 1];
-                    x2 -= l * x[r + 2];
-                }
-                final double inv = 1.0 / v[d];
-                x[3 * j] = x0 * inv;
-                x[3 * j + 1] = x1 * inv;
-                x[3 * j + 2] = x2 * inv;
-                continue;
-            }
-            // Columns j + 1 (complete over the shared rows) and j (the shared rows, then row j + 1).
-            final int e = p[j + 1];
-            double y0 = x[3 * j + 3];
-            double y1 = x[3 * j + 4];
-            double y2 = x[3 * j + 5];
-            double s0 = 0;
-            double s1 = 0;
-            double s2 = 0;
-            for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
-                final int r = 3 * ix[q];
-                final double la = v[qa];
-                final double lb = v[q];
-                final double r0 = x[r];
-                final double r1 = x[r + 1];
-                final double r2 = x[r + 2];
-                y0 -= lb * r0;
-                y1 -= lb * r1;
-                y2 -= lb * r2;
-                s0 += la * r0;
-                s1 += la * r1;
-                s2 += la * r2;
-            }
-            final double inv1 = 1.0 / v[e];
-            y0 *= inv1;
-            y1 *= inv1;
-            y2 *= inv1;
-            x[3 * j + 3] = y0;
-            x[3 * j + 4] = y1;
-            x[3 * j + 5] = y2;
-            final double l = v[d + 1];
-            final double inv = 1.0 / v[d];
             x[3 * j] = (x[3 * j] - l * y0 - s0) * inv;
             x[3 * j + 1] = (x[3 * j + 1] - l * y1 - s1) * inv;
             x[3 * j + 2] = (x[3 * j + 2] - l * y2 - s2) * inv;

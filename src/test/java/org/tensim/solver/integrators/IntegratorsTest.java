@@ -50,8 +50,7 @@ class IntegratorsTest {
     void catalogueHoldsTheMethodsAndTheirNamedVariants() {
         List<String> all = Integrators.choiceNames();
         assertEquals(Integrators.names(), all.subList(0, Integrators.names().size()));
-        assertEquals(List.of(Integrators.REAL_TIME_IMPLICIT, Integrators.LARGE_STEP_ACCURATE, Integrators.CONTACT,
-                Integrators.LARGE_STEP_SINGLE),
+        assertEquals(List.of(Integrators.REAL_TIME_IMPLICIT, Integrators.LARGE_STEP_ACCURATE, Integrators.CONTACT),
                 all.subList(Integrators.names().size(), all.size()));
         List<IntegratorChoice> menu = Integrators.choices();
         assertEquals(Integrators.DEFAULT, menu.get(0).name(), "the paper's first");
@@ -74,11 +73,6 @@ class IntegratorsTest {
                 assertEquals("bdf2", b.name());
                 assertEquals(3, b.newtonIterations());
                 assertEquals(20, b.krylovIterations());
-            } else if (c.name().equals(Integrators.LARGE_STEP_SINGLE)) {
-                org.tensim.solver.prefactored.PrefactoredBdf2 b =
-                        (org.tensim.solver.prefactored.PrefactoredBdf2) Integrators.create(c.name());
-                assertEquals("bdf2", b.name());
-                assertEquals(org.tensim.solver.prefactored.FactorPrecision.SINGLE, b.factorPrecision());
             } else {
                 assertEquals(c.name(), c.create().name());
             }

@@ -36,16 +36,6 @@ class PrefactoredAllocationTest {
         assertNoAllocation(sim, threads, 0.02, 500);
     }
 
-    /** The same with the preconditioner's factor in single precision. */
-    @ParameterizedTest(name = "{0} thread(s)")
-    @ValueSource(ints = {1, 2})
-    void bdf2StepWithASinglePrecisionFactorAllocatesNothing(int threads) throws Exception {
-        Simulation sim = DiaphragmSetup.generated(8, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
-                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
-        sim.setIntegrator(new PrefactoredBdf2().setFactorPrecision(FactorPrecision.SINGLE));
-        assertNoAllocation(sim, threads, 0.02, 500);
-    }
-
     private static void assertNoAllocation(Simulation sim, int threads, double dt, int warmUp) {
         try (Parallelism p = threads > 1 ? Parallelism.install(sim, threads) : null) {
             AllocationCounter counter = AllocationCounter.currentThreadAnd(
