@@ -21,8 +21,10 @@ public interface Integrator {
     /** Global order of accuracy on smooth problems. */
     int order();
 
-    /** Force evaluations per step (the cost measure). */
-    int forceEvaluationsPerStep();
+    /** Force evaluations per step (the cost measure): one unless the method says otherwise. */
+    default int forceEvaluationsPerStep() {
+        return 1;
+    }
 
     /**
      * Advances {@code model.state()} from time t to t + dt (s). On return

@@ -113,12 +113,6 @@ public final class ImplicitEuler implements Integrator {
         return 1;
     }
 
-    /** One force pass per step; the CG matrix-vector products come on top ({@link #matrixVectorProducts()}). */
-    @Override
-    public int forceEvaluationsPerStep() {
-        return 1;
-    }
-
     @Override
     public boolean explicit() {
         return false;

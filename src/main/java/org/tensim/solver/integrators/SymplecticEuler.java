@@ -49,11 +49,6 @@ public final class SymplecticEuler implements Integrator {
     }
 
     @Override
-    public int forceEvaluationsPerStep() {
-        return 1;
-    }
-
-    @Override
     public void step(ForceModel model, double t, double dt) {
         SystemState st = model.state();
         if (f == null || f.length != 3 * st.nodeCount) {

@@ -72,12 +72,6 @@ public final class VelocityVerlet implements Integrator {
         return 2;
     }
 
-    /** 1 when the end-of-step force is reused (undamped, untouched state); 2 otherwise. */
-    @Override
-    public int forceEvaluationsPerStep() {
-        return 1;
-    }
-
     @Override
     public void step(ForceModel model, double t, double dt) {
         SystemState s = model.state();
