@@ -148,7 +148,7 @@ public final class DiaphragmViewScene implements ViewScene {
     /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
     private volatile DiaphragmScene prepared;
 
-    private DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load) {
+    DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load) {
         this.load = load;
         this.parameters = parameters(load, scene.spec().tendonRule(), scene.spec().mesh().labels() != null);
         this.scene = scene;
@@ -215,69 +215,8 @@ public final class DiaphragmViewScene implements ViewScene {
      * As {@link #factory(DiaphragmSpec)} from inputs already read ({@link DiaphragmSetup#read} of {@code base}, or of
      * a spec that differs only in its label file, whose labels the inputs then carry); null to read them on first use.
      */
-    public static SceneFactory factory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
-        BoundaryConditions bc = base.boundary();
-        return new SceneFactory() {
-            // Read or generated once; every scene, the first included, is then built from these inputs by
-            // the same call, outside the lock: the same values give the same scene whatever was built before,
-            // and parallel sweep workers do not queue for each other's scene building.
-            private DiaphragmSetup.Inputs inputs = read;
-
-            @Override
-            public String name() {
-                return "diaphragm";
-            }
-
-            @Override
-            public boolean hasTendonChoice() {
-                return true;
-            }
-
-            private synchronized DiaphragmSetup.Inputs inputs() throws IOException, MeshFormatException {
-                if (inputs == null) {
-                    inputs = DiaphragmSetup.read(base);
-                }
-                return inputs;
-            }
-
-            @Override
-            public String muscleLoad() {
-                return BoundaryConditions.name(bc.muscleLoad());
-            }
-
-            @Override
-            public ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
-                return create(tensegrityTendon, null, values);
-            }
-
-            @Override
-            public List<TunableParameter> parameters(String muscleLoad) {
-                return DiaphragmViewScene.parameters(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
-                        muscleLoad), base.tendonRule(), base.mesh().labels() != null);
-            }
-
-            @Override
-            public ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
-                BoundaryConditions b = muscleLoad == null ? bc
-                        : bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));
-                double period = values.getOrDefault(BREATHING_PERIOD, 4.0);
-                DiaphragmSpec spec = base.withBoundary(b).withActionLines(b.muscleLoad()
-                        == BoundaryConditions.MuscleLoad.FIBRES ? null : base.actionLines())
-                        .withBreathing(new DiaphragmSpec.Breathing(period, EXPIRATION_RATIO,
-                                values.getOrDefault(RIB_AMPLITUDE, 1.0), values.getOrDefault(MUSCLE_ACTION,
-                                        DiaphragmSetup.defaultMusclePa(b.muscleLoad()))));
-                try {
-                    DiaphragmSetup.Inputs in = inputs();
-                    spec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
-                    DiaphragmScene s = DiaphragmSetup.build(in, spec, spec.newControls()).scene();
-                    return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
-                } catch (IOException e) {
-                    throw new UncheckedIOException(e.getMessage(), e);
-                } catch (MeshFormatException e) {
-                    throw new IllegalArgumentException(e.getMessage(), e);
-                }
-            }
-        };
+    public static DiaphragmViewFactory factory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
+        return new DiaphragmViewFactory(base, read);
     }
 
     /**
