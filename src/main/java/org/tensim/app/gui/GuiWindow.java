@@ -28,6 +28,10 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.DiaphragmViewScene;
+import org.tensim.io.mesh.VertexLabel;
+import org.tensim.io.mesh.VertexLabelsFile;
+import org.tensim.scene.tunable.DiaphragmViewFactory;
+import org.tensim.scene.tunable.LabelBrush;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.SimulationDivergedException;
@@ -56,6 +60,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private final StatusBar status = new StatusBar();
     private final LivePanel live = new LivePanel();
     private JMenuItem saveLabels;
+    private final BrushPanel brush;
     private final SimulationRunner runner;
     private final Timer uiTimer;
     private final Timer saveTimer;
@@ -107,7 +112,11 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         side.getVerticalScrollBar().setUnitIncrement(16);
         frame.setJMenuBar(menus());
         JPanel east = new JPanel(new BorderLayout());
-        east.add(live, BorderLayout.NORTH);
+        brush = new BrushPanel(view.canvas(), this::stroke);
+        JPanel top = new JPanel(new BorderLayout());
+        top.add(live, BorderLayout.NORTH);
+        top.add(brush, BorderLayout.SOUTH);
+        east.add(top, BorderLayout.NORTH);
         east.add(side, BorderLayout.CENTER);
         frame.getContentPane().add(centre, BorderLayout.CENTER);
         frame.getContentPane().add(east, BorderLayout.EAST);
@@ -179,6 +188,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             chart.attach(probes, s.bodies());
             live.show(frames.live(), frames.readouts());
             saveLabels.setEnabled(s instanceof DiaphragmViewScene);
+            brush.setVisible(s instanceof DiaphragmViewScene && factory instanceof DiaphragmViewFactory);
             frame.setTitle("tensim: " + s.title());
         });
     }
@@ -334,6 +344,47 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         } catch (IOException | RuntimeException e) {
             status.message("Cannot save labels to " + file + ": " + e.getMessage(), true);
             return false;
+        }
+    }
+
+    /**
+     * One stroke of the label brush: the vertex the ray (world frame, m) meets first takes {@code label}, with every
+     * vertex within {@code radiusM} of it; the labels are written to {@code painted.labels} (in the configuration
+     * folder, or a temporary file when there is none), the factory builds from them, and the run restarts at rest.
+     *
+     * @return the vertices painted, or -1 when nothing was hit or painted
+     */
+    int stroke(double[] origin, double[] direction, VertexLabel label, double radiusM) {
+        if (!(scene instanceof DiaphragmViewScene d) || !(factory instanceof DiaphragmViewFactory f)) {
+            status.message("Label brush: only the diaphragm has vertex labels", true);
+            return -1;
+        }
+        org.tensim.model.Vec3 off = d.bodies().get(0).offset();
+        double[] o = {origin[0] - off.x(), origin[1] - off.y(), origin[2] - off.z()};
+        int v = LabelBrush.pick(d.scene().surfaces(), o, direction, Math.max(0.5 * radiusM, 0.002));
+        if (v < 0) {
+            status.message("Label brush: no vertex of the diaphragm under the pointer", true);
+            return -1;
+        }
+        VertexLabel[] before = d.scene().currentVertexLabels();
+        VertexLabel[] after = LabelBrush.paint(d.scene().surfaces(), before, v, radiusM, label);
+        int changed = 0;
+        for (int i = 0; i < after.length; i++) {
+            changed += after[i] != before[i] ? 1 : 0;
+        }
+        try {
+            Path file = configDir != null ? configDir.resolve("painted.labels")
+                    : java.nio.file.Files.createTempFile("tensim-painted", ".labels");
+            java.nio.file.Files.createDirectories(file.toAbsolutePath().getParent());
+            VertexLabelsFile.write(file, after);
+            f.paintLabels(after, file);
+            runner.reset();
+            status.message("Painted " + changed + " vertices " + label.fileName() + " around vertex " + v
+                    + "; the run restarts with the labels of " + file, false);
+            return changed;
+        } catch (IOException | RuntimeException e) {
+            status.message("Label brush: cannot keep the labels: " + e.getMessage(), true);
+            return -1;
         }
     }
 

@@ -106,6 +106,34 @@ class GuiDiaphragmTest {
         }
     }
 
+    /** A click at the middle of the view, as the brush's mouse listener turns it into a ray, paints the mesh there. */
+    @Test
+    void theLabelBrushPaintsWhereTheViewPointsAndTheRunRestartsWithThePaintedLabels() throws Exception {
+        GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, false);
+        try {
+            waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
+            DiaphragmViewScene before = (DiaphragmViewScene) w.scene();
+            int[] painted = new int[1];
+            onEdt(() -> {
+                org.jogamp.java3d.Canvas3D c = w.view().canvas();
+                double[][] ray = BrushPanel.ray(c, c.getWidth() / 2, c.getHeight() / 2);
+                painted[0] = w.stroke(ray[0], ray[1], org.tensim.io.mesh.VertexLabel.TENDON, 0.04);
+            });
+            assertTrue(painted[0] > 0, "the ray through the view's middle meets the diaphragm: " + painted[0]);
+            waitFor("the run restarted with the painted labels", () -> w.scene() != before && w.scene() != null);
+            org.tensim.scene.diaphragm.DiaphragmScene after = ((DiaphragmViewScene) w.scene()).scene();
+            assertTrue(after.tendonAreaFraction() > before.scene().tendonAreaFraction(), after.tendonAreaFraction()
+                    + " against " + before.scene().tendonAreaFraction());
+            org.tensim.io.mesh.VertexLabel[] kept = org.tensim.io.mesh.VertexLabelsFile.read(
+                    dir.resolve("painted.labels"), after.diaphragmNodes());
+            for (int v = 0; v < kept.length; v++) {
+                assertEquals(kept[v] == org.tensim.io.mesh.VertexLabel.TENDON, after.isTendon(v), "vertex " + v);
+            }
+        } finally {
+            onEdt(w::close);
+        }
+    }
+
     @Test
     void diaphragmIsDrawnMovesAndRespondsToTheMuscleControl() throws Exception {
         GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, true);
