@@ -16,7 +16,6 @@ import java.util.Set;
 import org.tensim.io.Json;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.solver.integrators.Integrators;
-import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.TunableScenes;
 
 /**
@@ -34,8 +33,8 @@ public final class SpecReader {
         }
     }
 
-    private final String where;
-    private final Path base;
+    final String where;
+    final Path base;
 
     /** @param file the spec's path, named in messages; relative paths inside are resolved against its folder */
     public SpecReader(Path file) {
@@ -99,76 +98,7 @@ public final class SpecReader {
         if (!TunableScenes.names().contains(scene)) {
             throw fail("scene", root.get("scene"), "one of " + TunableScenes.names());
         }
-        // The diaphragm's options: the "diaphragm" object, by the command line's names, and the older keys
-        // "mesh", "boxes" and "muscleLoad", which say the same as --mesh/--rings, --boxes and --muscle-load.
-        List<String> args = new ArrayList<>();
-        JsonNode mesh = root.get("mesh");
-        if (mesh != null) {
-            onlyDiaphragm(scene, "mesh", mesh);
-            if (!mesh.isObject()) {
-                throw fail("mesh", mesh, "an object {\"rings\": N} or {\"file\": \"x.obj\", \"units\": \"mm\"}");
-            }
-            allowOnly(mesh, "mesh.", Set.of("rings", "file", "units", "thicknessMm"));
-            if (mesh.has("file") && mesh.has("rings")) {
-                throw fail("mesh.rings", mesh.get("rings"), "either rings (generated dome) or file, not both");
-            }
-            if (mesh.has("file")) {
-                args.addAll(List.of("--mesh", existing("mesh.file", text(mesh, "file", null)).toString()));
-            }
-            if (mesh.has("units")) {
-                args.addAll(List.of("--units", text(mesh, "units", null)));
-            }
-            if (mesh.has("thicknessMm")) {
-                args.addAll(List.of("--thickness", Double.toString(number(mesh, "mesh.thicknessMm", 0))));
-            }
-            if (mesh.has("rings")) {
-                JsonNode r = mesh.get("rings");
-                if (!r.isIntegralNumber()) {
-                    throw fail("mesh.rings", r, "a whole number of rings per face, 4 or more");
-                }
-                args.addAll(List.of("--rings", r.asText()));
-            }
-        }
-        if (root.has("boxes")) {
-            onlyDiaphragm(scene, "boxes", root.get("boxes"));
-            args.addAll(List.of("--boxes", existing("boxes", text(root, "boxes", null)).toString()));
-        }
-        if (root.has("muscleLoad")) {
-            onlyDiaphragm(scene, "muscleLoad", root.get("muscleLoad"));
-            String load = text(root, "muscleLoad", null);
-            try {
-                org.tensim.scene.diaphragm.BoundaryConditions.parse(
-                        org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.class, load);
-            } catch (IllegalArgumentException e) {
-                throw fail("muscleLoad", root.get("muscleLoad"), e.getMessage());
-            }
-            args.addAll(List.of("--muscle-load", load));
-        }
-        if (root.has("diaphragm")) {
-            onlyDiaphragm(scene, "diaphragm", root.get("diaphragm"));
-            try {
-                args.addAll(DiaphragmOptions.fromJson(root.get("diaphragm"), "diaphragm", base));
-            } catch (IllegalArgumentException e) {
-                throw new SpecException(where + ": " + e.getMessage());
-            }
-        }
-        if (scene.equals("diaphragm")) {
-            try {
-                DiaphragmOptions o = DiaphragmOptions.parse(args);
-                org.tensim.scene.diaphragm.DiaphragmSpec d = o.spec(null, TunableScenes.defaultRings());
-                for (Path f : new Path[] {d.mesh().file(), d.cage().boxes(), d.mesh().labels()}) {
-                    if (f != null && !Files.isRegularFile(f)) {
-                        throw new IllegalArgumentException("no such file " + f);
-                    }
-                }
-                if (d.cage().thorax() != null && !Files.isDirectory(d.cage().thorax())) {
-                    throw new IllegalArgumentException("--thorax " + d.cage().thorax() + ": no such folder");
-                }
-            } catch (IllegalArgumentException e) {
-                throw new SpecException(where + ": the diaphragm's options (fields mesh, boxes, muscleLoad and"
-                        + " diaphragm): " + e.getMessage());
-            }
-        }
+        List<String> args = SpecDiaphragm.args(this, root, scene);
         JsonNode solver = root.get("solver");
         String integrator = "rk2";
         double dt = 0;
@@ -368,7 +298,7 @@ public final class SpecReader {
     }
 
     public void positive(String field, double v) throws SpecException {
-        if (!(v > 0)) {
+        if (!(v > 0)) { // also NaN
             throw new SpecException(where + ": field '" + field + "' must be > 0, got " + v);
         }
     }
@@ -388,12 +318,6 @@ public final class SpecReader {
     public SpecException fail(String field, JsonNode found, String expected) {
         return new SpecException(where + ": field '" + field + "' must be " + expected + (found == null
                 ? " (missing)" : ", got " + found));
-    }
-
-    private void onlyDiaphragm(String scene, String field, JsonNode value) throws SpecException {
-        if (!scene.equals("diaphragm")) {
-            throw fail(field, value, "absent: scene '" + scene + "' is built in and has no diaphragm");
-        }
     }
 
     private static List<String> keys(String scene) {

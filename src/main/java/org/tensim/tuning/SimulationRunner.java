@@ -230,8 +230,7 @@ public final class SimulationRunner implements Tuning.Target {
                     .filter(c -> c.name().equals(now.integrator())).findFirst()
                     .orElse(Integrators.choices().get(0));
             for (Map.Entry<String, Double> e : now.values().entrySet()) {
-                // A value of a parameter this scene has not (the tendon's boundary once labels set the tendon)
-                // stays in the settings for a scene that has it.
+                // A parameter the scene lacks (the tendon's boundary under labels) keeps its value for one that has it.
                 boolean has = s.parameters().stream().anyMatch(p -> p.key().equals(e.getKey()));
                 if (has && !e.getKey().equals(Tuning.TIME_STEP) && !restarts(s, e.getKey())) {
                     s.apply(e.getKey(), e.getValue());

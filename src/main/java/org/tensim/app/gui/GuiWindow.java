@@ -2,16 +2,11 @@ package org.tensim.app.gui;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.Point;
-import java.awt.Rectangle;
-import java.awt.Robot;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
-import javax.imageio.ImageIO;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JMenu;
@@ -28,10 +23,7 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.DiaphragmViewScene;
-import org.tensim.io.mesh.VertexLabel;
-import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.scene.tunable.DiaphragmViewFactory;
-import org.tensim.scene.tunable.LabelBrush;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.SimulationDivergedException;
@@ -61,6 +53,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private final LivePanel live = new LivePanel();
     private JMenuItem saveLabels;
     private final BrushPanel brush;
+    private final LabelTools labels;
     private final SimulationRunner runner;
     private final Timer uiTimer;
     private final Timer saveTimer;
@@ -101,6 +94,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         chart = new ProbeChart(first.defaultProbeAxis());
         controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
         runner = new SimulationRunner(factory, tuning::snapshot, this, threads);
+        labels = new LabelTools(frame, status, runner, factory, configDir, () -> scene);
         tuning.bind(runner);
 
         JPanel centre = new JPanel(new BorderLayout());
@@ -112,7 +106,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         side.getVerticalScrollBar().setUnitIncrement(16);
         frame.setJMenuBar(menus());
         JPanel east = new JPanel(new BorderLayout());
-        brush = new BrushPanel(view.canvas(), this::stroke);
+        brush = new BrushPanel(view.canvas(), (o, d, l, r) -> labels.stroke(o, d, l, r));
         JPanel top = new JPanel(new BorderLayout());
         top.add(live, BorderLayout.NORTH);
         top.add(brush, BorderLayout.SOUTH);
@@ -152,8 +146,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         JMenu file = new JMenu("File");
         file.add(item("Load preset...", this::loadPreset));
         file.add(item("Save preset...", this::savePreset));
-        file.add(item("Save screenshot...", this::saveScreenshotDialog));
-        saveLabels = item("Save labels...", this::saveLabelsDialog);
+        file.add(item("Save screenshot...", () -> WindowPicture.saveDialog(frame, status)));
+        saveLabels = item("Save labels...", () -> labels.saveDialog());
         saveLabels.setToolTipText("Writes the diaphragm's label per mesh vertex (tendon as tuned, muscle, origins) for"
                 + " --labels");
         saveLabels.setEnabled(false);
@@ -306,115 +300,15 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         }
     }
 
-    private void saveLabelsDialog() {
-        JFileChooser c = new JFileChooser();
-        c.setFileFilter(new FileNameExtensionFilter("tensim vertex labels (*.labels, *.txt)", "labels", "txt"));
-        if (c.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
-            return;
-        }
-        Path p = c.getSelectedFile().toPath();
-        boolean replace = false;
-        if (java.nio.file.Files.exists(p)) {
-            replace = JOptionPane.showConfirmDialog(frame, p + " exists. Replace it?", "Save labels",
-                    JOptionPane.YES_NO_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.YES_OPTION;
-            if (!replace) {
-                status.message("Labels not saved: " + p + " exists", true);
-                return;
-            }
-        }
-        saveLabels(p, replace);
-    }
-
-    /**
-     * Writes the labels of the diaphragm on screen ({@link DiaphragmViewScene#saveLabels}); an existing file is
-     * replaced only when {@code replace} (the dialog asks first). Reports in the status bar.
-     */
-    boolean saveLabels(Path file, boolean replace) {
-        if (!(scene instanceof DiaphragmViewScene d)) {
-            status.message("Labels: only the diaphragm has vertex labels", true);
-            return false;
-        }
-        try {
-            int n = d.saveLabels(file, replace);
-            status.message("Saved the labels of " + n + " vertices to " + file, false);
-            return true;
-        } catch (java.nio.file.FileAlreadyExistsException e) {
-            status.message("Labels not saved: " + file + " exists (not replaced)", true);
-            return false;
-        } catch (IOException | RuntimeException e) {
-            status.message("Cannot save labels to " + file + ": " + e.getMessage(), true);
-            return false;
-        }
-    }
-
-    /**
-     * One stroke of the label brush: the vertex the ray (world frame, m) meets first takes {@code label}, with every
-     * vertex within {@code radiusM} of it; the labels are written to {@code painted.labels} (in the configuration
-     * folder, or a temporary file when there is none), the factory builds from them, and the run restarts at rest.
-     *
-     * @return the vertices painted, or -1 when nothing was hit or painted
-     */
-    int stroke(double[] origin, double[] direction, VertexLabel label, double radiusM) {
-        if (!(scene instanceof DiaphragmViewScene d) || !(factory instanceof DiaphragmViewFactory f)) {
-            status.message("Label brush: only the diaphragm has vertex labels", true);
-            return -1;
-        }
-        org.tensim.model.Vec3 off = d.bodies().get(0).offset();
-        double[] o = {origin[0] - off.x(), origin[1] - off.y(), origin[2] - off.z()};
-        int v = LabelBrush.pick(d.scene().surfaces(), o, direction, Math.max(0.5 * radiusM, 0.002));
-        if (v < 0) {
-            status.message("Label brush: no vertex of the diaphragm under the pointer", true);
-            return -1;
-        }
-        VertexLabel[] before = d.scene().currentVertexLabels();
-        VertexLabel[] after = LabelBrush.paint(d.scene().surfaces(), before, v, radiusM, label);
-        int changed = 0;
-        for (int i = 0; i < after.length; i++) {
-            changed += after[i] != before[i] ? 1 : 0;
-        }
-        try {
-            Path file = configDir != null ? configDir.resolve("painted.labels")
-                    : java.nio.file.Files.createTempFile("tensim-painted", ".labels");
-            java.nio.file.Files.createDirectories(file.toAbsolutePath().getParent());
-            VertexLabelsFile.write(file, after);
-            f.paintLabels(after, file);
-            runner.reset();
-            status.message("Painted " + changed + " vertices " + label.fileName() + " around vertex " + v
-                    + "; the run restarts with the labels of " + file, false);
-            return changed;
-        } catch (IOException | RuntimeException e) {
-            status.message("Label brush: cannot keep the labels: " + e.getMessage(), true);
-            return -1;
-        }
-    }
-
     private static JFileChooser chooser() {
         JFileChooser c = new JFileChooser();
         c.setFileFilter(new FileNameExtensionFilter("tensim presets (*.json)", "json"));
         return c;
     }
 
-    private void saveScreenshotDialog() {
-        JFileChooser c = new JFileChooser();
-        c.setFileFilter(new FileNameExtensionFilter("PNG images", "png"));
-        if (c.showSaveDialog(frame) == JFileChooser.APPROVE_OPTION) {
-            try {
-                saveScreenshot(c.getSelectedFile().toPath());
-            } catch (Exception e) {
-                status.message("Cannot save screenshot: " + e.getMessage(), true);
-            }
-        }
-    }
-
     /** Captures the whole window as it is on screen into a PNG file (written, then renamed). */
     void saveScreenshot(Path file) throws Exception {
-        Point p = frame.getLocationOnScreen();
-        BufferedImage img = new Robot().createScreenCapture(new Rectangle(p, frame.getSize()));
-        org.tensim.io.OutputFiles.writeAtomically(file, out -> {
-            if (!ImageIO.write(img, "png", out)) {
-                throw new IOException("no PNG writer available");
-            }
-        });
+        WindowPicture.save(frame, file);
     }
 
     private void saveLastUsed() {
@@ -489,6 +383,10 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     /** The scene on screen, or null before the first is shown. */
     ViewScene scene() {
         return scene;
+    }
+
+    LabelTools labels() {
+        return labels;
     }
 
     SceneFactory factory() {

@@ -1,15 +1,12 @@
 package org.tensim.scene.tunable;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.BoundaryConditions;
-import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.model.Topology;

@@ -80,10 +80,10 @@ class GuiDiaphragmTest {
             waitFor("the diaphragm on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
             java.nio.file.Path file = dir.resolve("gui.labels");
             boolean[] saved = new boolean[2];
-            onEdt(() -> saved[0] = w.saveLabels(file, false));
+            onEdt(() -> saved[0] = w.labels().saveLabels(file, false));
             assertTrue(saved[0], "saved");
             byte[] first = java.nio.file.Files.readAllBytes(file);
-            onEdt(() -> saved[1] = w.saveLabels(file, false));
+            onEdt(() -> saved[1] = w.labels().saveLabels(file, false));
             assertFalse(saved[1], "an existing file is not replaced unasked");
             org.junit.jupiter.api.Assertions.assertArrayEquals(first, java.nio.file.Files.readAllBytes(file));
             org.tensim.scene.diaphragm.DiaphragmScene s = ((DiaphragmViewScene) w.scene()).scene();
@@ -117,7 +117,7 @@ class GuiDiaphragmTest {
             onEdt(() -> {
                 org.jogamp.java3d.Canvas3D c = w.view().canvas();
                 double[][] ray = BrushPanel.ray(c, c.getWidth() / 2, c.getHeight() / 2);
-                painted[0] = w.stroke(ray[0], ray[1], org.tensim.io.mesh.VertexLabel.TENDON, 0.04);
+                painted[0] = w.labels().stroke(ray[0], ray[1], org.tensim.io.mesh.VertexLabel.TENDON, 0.04);
             });
             assertTrue(painted[0] > 0, "the ray through the view's middle meets the diaphragm: " + painted[0]);
             waitFor("the run restarted with the painted labels", () -> w.scene() != before && w.scene() != null);
