@@ -74,13 +74,35 @@ public final class SceneView {
         // clip relative to the eye, at distances set from the scene's size in show().
         view.setFrontClipPolicy(View.VIRTUAL_EYE);
         view.setBackClipPolicy(View.VIRTUAL_EYE);
-        view.setMinimumFrameCycleTime(15); // at most ~66 fps: leave CPU to the simulation
+        setFrameCap(DEFAULT_FRAME_CAP_FPS);
         orbit = new OrbitBehavior(canvas, OrbitBehavior.REVERSE_ALL | OrbitBehavior.PROPORTIONAL_ZOOM);
         orbit.setSchedulingBounds(EVERYWHERE);
         universe.getViewingPlatform().setViewPlatformBehavior(orbit);
         for (BodyShapes.Layer l : BodyShapes.Layer.values()) {
             visible.put(l, l != BodyShapes.Layer.VECTORS);
         }
+    }
+
+    /**
+     * Frames per second drawn at most by default: 30, smooth to the eye, and the renderer leaves the rest of its
+     * core to the simulation (which needs both cores on a two-core machine to keep real time).
+     */
+    public static final int DEFAULT_FRAME_CAP_FPS = 30;
+
+    private int frameCapFps;
+
+    /** Draws at most {@code fps} frames per second; 0 for no cap (as fast as the display allows). */
+    public void setFrameCap(int fps) {
+        if (fps < 0 || fps > 1000) {
+            throw new IllegalArgumentException("frame cap must be 0 (none) to 1000 frames per second, got " + fps);
+        }
+        frameCapFps = fps;
+        universe.getViewer().getView().setMinimumFrameCycleTime(fps == 0 ? 0 : Math.round(1000.0 / fps));
+    }
+
+    /** The frame cap, frames per second (0: none). */
+    public int frameCap() {
+        return frameCapFps;
     }
 
     public Canvas3D canvas() {

@@ -64,6 +64,11 @@ public final class GuiCommand implements Callable<Integer> {
             + " instead of at most real time")
     boolean unpaced;
 
+    @Option(names = "--fps-cap", paramLabel = "N",
+            description = "draw at most N frames per second, 0 for no cap; the View menu changes it (default:"
+                    + " ${DEFAULT-VALUE}, which leaves the renderer's spare time to the simulation)")
+    int fpsCap = org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS;
+
     @Option(names = "--threads", paramLabel = "N",
             description = "threads that share each step; 0 = automatic, as diaphragm --threads 0: all cores from "
                     + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1"
@@ -100,6 +105,9 @@ public final class GuiCommand implements Callable<Integer> {
         if (threads < 0) {
             throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
         }
+        if (fpsCap < 0 || fpsCap > 1000) {
+            throw new IllegalArgumentException("--fps-cap must be 0 (no cap) to 1000 frames per second, got " + fpsCap);
+        }
         // Bad names and files fail here, before any window.
         SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
@@ -111,6 +119,7 @@ public final class GuiCommand implements Callable<Integer> {
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
+        SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
             w.awaitClosed();

@@ -54,6 +54,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private JMenuItem saveLabels;
     private final BrushPanel brush;
     private final LabelTools labels;
+    private final java.util.Map<Integer, javax.swing.JRadioButtonMenuItem> capItems = new java.util.HashMap<>();
     private final SimulationRunner runner;
     private final Timer uiTimer;
     private final Timer saveTimer;
@@ -155,7 +156,29 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         file.addSeparator();
         file.add(item("Quit", this::close));
         bar.add(file);
+        JMenu drawing = new JMenu("View");
+        javax.swing.ButtonGroup caps = new javax.swing.ButtonGroup();
+        for (int fps : new int[] {15, 30, 60, 0}) {
+            javax.swing.JRadioButtonMenuItem i = new javax.swing.JRadioButtonMenuItem(fps == 0 ? "No frame cap"
+                    : "At most " + fps + " frames/s", fps == view.frameCap());
+            i.setName("fps." + fps);
+            i.addActionListener(e -> setFrameCap(fps));
+            capItems.put(fps, i);
+            caps.add(i);
+            drawing.add(i);
+        }
+        bar.add(drawing);
         return bar;
+    }
+
+    /** Draws at most fps frames per second (0: no cap), leaving the rest of the renderer's core to the simulation. */
+    void setFrameCap(int fps) {
+        view.setFrameCap(fps);
+        if (capItems.containsKey(fps)) {
+            capItems.get(fps).setSelected(true);
+        }
+        status.message(fps == 0 ? "Frames drawn as fast as the display allows" : "Frames drawn at most " + fps
+                + " per second", false);
     }
 
     private static JMenuItem item(String text, Runnable r) {

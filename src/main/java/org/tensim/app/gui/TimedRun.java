@@ -119,6 +119,7 @@ final class TimedRun {
         m.put("paced", paced);
         m.put("realtime_factor", round(sim / wall, 4));
         m.put("fps", round(frames / wall, 1));
+        m.put("fps_cap", w.view().frameCap());
         m.put("new_pictures_per_s", round(pictures / wall, 1));
         m.put("steps_per_s", round(steps / wall, 1));
         m.put("error_estimate", finiteOrNull(r.errorEstimate()));

@@ -74,6 +74,36 @@ class GuiWindowTest {
         return null;
     }
 
+    /** The frame cap bounds the frames drawn: never more than the cap allows over a stretch of wall time. */
+    @Test
+    void theFrameCapBoundsTheFramesDrawn() throws Exception {
+        GuiWindow w = GuiCommand.open(factory(), null, dir, null, true);
+        try {
+            waitFor("the first frames", () -> w.scene() != null && w.view().framesRendered() > 3);
+            assertEquals(org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS, w.view().frameCap(), "30 by default");
+            onEdt(() -> w.setFrameCap(10));
+            Thread.sleep(300);
+            long f0 = w.view().framesRendered();
+            long t0 = System.nanoTime();
+            Thread.sleep(2000);
+            long frames = w.view().framesRendered() - f0;
+            double wall = (System.nanoTime() - t0) / 1e9;
+            assertTrue(frames <= 10 * wall + 3, frames + " frames in " + wall + " s at a cap of 10 per second");
+            assertTrue(frames > 0, "still drawing");
+            javax.swing.JMenuItem ten = null;
+            for (java.awt.Component c : w.frame().getJMenuBar().getMenu(1).getMenuComponents()) {
+                if ("fps.15".equals(c.getName())) {
+                    ten = (javax.swing.JMenuItem) c;
+                }
+            }
+            javax.swing.JMenuItem fifteen = ten;
+            onEdt(() -> fifteen.doClick(0));
+            assertEquals(15, w.view().frameCap(), "the View menu sets it");
+        } finally {
+            onEdt(w::close);
+        }
+    }
+
     @Test
     void drawsMovesAndControlsReachTheSimulation() throws Exception {
         GuiWindow w = GuiCommand.open(factory(), null, dir, null, true);
