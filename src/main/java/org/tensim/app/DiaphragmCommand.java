@@ -176,7 +176,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         + " thorax (docs/thorax.md): use --integrator bdf2 --dt 0.0025 --newton 3 --cg-iterations 20"
                         + " with --thorax");
             }
-            setting = RealTimeSetting.forMuscleLoad(BoundaryConditions.name(sceneSpec.boundary().muscleLoad()));
+            setting = RealTimeSetting.forMuscleLoad(sceneSpec.boundary().muscleLoad());
             chosen = setting.newIntegrator();
             dt = setting.dtS();
         }

@@ -48,7 +48,7 @@ public final class CalibrationReport {
             values.put(Tuning.TIME_STEP, spec.setup().dtS());
         }
         // The muscle load goes with the values: it sets what muscleActionPa means.
-        String load = spec.setup().muscleLoad();
+        BoundaryConditions.MuscleLoad load = spec.setup().muscleLoad();
         PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
                 spec.setup().integrator(), true, values, load));
 

@@ -48,9 +48,9 @@ public record RunSetup(String scene, List<String> diaphragm, String integrator, 
         return DiaphragmOptions.parse(diaphragm).spec(null, TunableScenes.defaultRings());
     }
 
-    /** The diaphragm's muscle load as on the command line, or null for a scene without a muscle. */
-    public String muscleLoad() {
-        return scene.equals("diaphragm") ? BoundaryConditions.name(diaphragmSpec().boundary().muscleLoad()) : null;
+    /** The diaphragm's muscle load, or null for a scene without a muscle. */
+    public BoundaryConditions.MuscleLoad muscleLoad() {
+        return scene.equals("diaphragm") ? diaphragmSpec().boundary().muscleLoad() : null;
     }
 
     /** One line describing the geometry, for logs and reports. */
@@ -59,6 +59,6 @@ public record RunSetup(String scene, List<String> diaphragm, String integrator, 
             return scene;
         }
         DiaphragmSpec s = diaphragmSpec();
-        return "diaphragm " + s.mesh().describe() + ", " + s.cage().describe() + ", muscle load " + muscleLoad();
+        return "diaphragm " + s.mesh().describe() + ", " + s.cage().describe() + ", muscle load " + BoundaryConditions.name(muscleLoad());
     }
 }

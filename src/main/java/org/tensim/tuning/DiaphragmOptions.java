@@ -55,11 +55,11 @@ public final class DiaphragmOptions {
                     + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
     public Path labels;
 
-    @Option(names = "--tendon-rule", paramLabel = "RULE",
+    @Option(names = "--tendon-rule", paramLabel = "RULE", converter = ModelNames.TendonRules.class,
             description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
                     + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
                     + " tops and their midpoint along the surface, the same share) (default: plane)")
-    String tendonRule;
+    TendonRule tendonRule;
 
     @Option(names = "--contact", negatable = true,
             description = "with --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
@@ -98,10 +98,10 @@ public final class DiaphragmOptions {
             description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm (default: 20)")
     Double attachMm;
 
-    @Option(names = "--attachment", paramLabel = "MODEL",
+    @Option(names = "--attachment", paramLabel = "MODEL", converter = ModelNames.Attachments.class,
             description = "band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
                     + " within the threshold driven with the ribs) (default: band)")
-    String attachment;
+    BoundaryConditions.Attachment attachment;
 
     @Option(names = "--band-stiffness", paramLabel = "PA_PER_M",
             description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: "
@@ -113,11 +113,11 @@ public final class DiaphragmOptions {
                     + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
     boolean allSegments;
 
-    @Option(names = "--muscle-load", paramLabel = "MODEL",
+    @Option(names = "--muscle-load", paramLabel = "MODEL", converter = ModelNames.MuscleLoads.class,
             description = "fibres (active tension along the fibres to the central tendon, 18 kPa of fibre stress),"
                     + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
                     + " paper's per-node forces, 2.6 kPa) (default: fibres)")
-    public String muscleLoad;
+    public BoundaryConditions.MuscleLoad muscleLoad;
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
             description = "mesh cleaning: vertices closer than this are merged, mm (default: 0.001)")
@@ -142,12 +142,12 @@ public final class DiaphragmOptions {
                     + " (default: 0.12)")
     Double tendonFraction;
 
-    @Option(names = "--tissue-model", paramLabel = "NAME",
+    @Option(names = "--tissue-model", paramLabel = "NAME", converter = ModelNames.TissueModels.class,
             description = "how the shell comes from the tissue: material (identified from E, nu and t: membrane"
                     + " triangles, Kirchhoff bending, rigid columns), springs (the same with edge springs only) or"
                     + " paper (the model the paper's figures were reproduced with) (default: material;"
                     + " docs/diaphragm.md)")
-    String tissueModel;
+    TissueModel tissueModel;
 
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
             description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
@@ -183,7 +183,7 @@ public final class DiaphragmOptions {
             p = p.withTendonAreaFraction(tendonFraction);
         }
         if (tissueModel != null) {
-            p = p.withTissueModel(TissueModel.parse(tissueModel));
+            p = p.withTissueModel(tissueModel);
         }
         if (tendonNormal != null || tendonPointMm != null) {
             Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);
@@ -193,10 +193,10 @@ public final class DiaphragmOptions {
         BoundaryConditions b = base.boundary();
         try {
             b = new BoundaryConditions(attachment == null ? b.attachment()
-                    : BoundaryConditions.parse(BoundaryConditions.Attachment.class, attachment),
+                    : attachment,
                     bandPaPerM == null ? b.bandStiffnessPaPerM() : bandPaPerM, b.bandTaperM(),
                     muscleLoad == null ? b.muscleLoad()
-                            : BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad),
+                            : muscleLoad,
                     !allSegments && b.costalOriginsOnly());
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--attachment, --band-stiffness, --muscle-load: " + e.getMessage(), e);
@@ -234,7 +234,7 @@ public final class DiaphragmOptions {
                 contact == null ? base.cage().contact() : contact,
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM);
         return new DiaphragmSpec(m, p, b, br, cage, actionLines,
-                tendonRule == null ? TendonRule.PLANE : BoundaryConditions.parse(TendonRule.class, tendonRule));
+                tendonRule == null ? TendonRule.PLANE : tendonRule);
     }
 
     /** Holds the options for a parse outside a command (spec files). */

@@ -11,6 +11,8 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 
@@ -45,7 +47,7 @@ public final class PresetFile {
     public static final String FORMAT = "tensim-gui-preset";
     public static final int VERSION = 2;
     /** The muscle load every preset of version 1 was made with (the default load until version 2). */
-    static final String VERSION_1_MUSCLE_LOAD = "pressure";
+    static final MuscleLoad VERSION_1_MUSCLE_LOAD = MuscleLoad.PRESSURE;
 
     /** A preset that cannot be used; the message names the file, the field and what was expected. */
     public static final class PresetException extends Exception {
@@ -66,7 +68,7 @@ public final class PresetFile {
         root.put("integrator", s.integrator());
         root.put("tendon", s.tensegrityTendon() ? "tensegrity" : "mass-spring");
         if (s.muscleLoad() != null) {
-            root.put("muscleLoad", s.muscleLoad());
+            root.put("muscleLoad", BoundaryConditions.name(s.muscleLoad()));
         }
         root.put("parameters", new LinkedHashMap<>(s.values()));
         Json.write(file, root);
@@ -118,7 +120,7 @@ public final class PresetFile {
         }
         int presetVersion = version == null ? VERSION : version.asInt();
         String scene = text(root, "scene", where, now.scene());
-        String muscleLoad = now.muscleLoad();
+        MuscleLoad muscleLoad = now.muscleLoad();
         if (presetVersion == 1) {
             if (root.has("muscleLoad")) {
                 throw new IllegalArgumentException(where + ": field 'muscleLoad' needs \"version\": 2 or more, got"
@@ -130,7 +132,12 @@ public final class PresetFile {
                 throw new IllegalArgumentException(where + ": field 'muscleLoad': scene '" + current.scene()
                         + "' has no muscle");
             }
-            muscleLoad = text(root, "muscleLoad", where, muscleLoad);
+            String load = text(root, "muscleLoad", where, null);
+            try {
+                muscleLoad = BoundaryConditions.parse(MuscleLoad.class, load);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(where + ": field 'muscleLoad': " + e.getMessage(), e);
+            }
         }
         String integrator = text(root, "integrator", where, now.integrator());
         String tendonText = text(root, "tendon", where, now.tensegrityTendon() ? "tensegrity" : "mass-spring");
@@ -168,7 +175,7 @@ public final class PresetFile {
             }
         }
         // A version-1 preset without the muscle action meant the pressure's default amplitude, not the window's.
-        if (presetVersion == 1 && muscleLoad != null && !muscleLoad.equals(now.muscleLoad())
+        if (presetVersion == 1 && muscleLoad != null && muscleLoad != now.muscleLoad()
                 && values.containsKey(DiaphragmViewScene.MUSCLE_ACTION)
                 && (params == null || !params.has(DiaphragmViewScene.MUSCLE_ACTION))) {
             values.put(DiaphragmViewScene.MUSCLE_ACTION, DiaphragmSetup.DEFAULT_MUSCLE_PA);

@@ -3,6 +3,7 @@ package org.tensim.tuning;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 
 /**
  * A complete, validated set of tunable values: what a preset file holds and what
@@ -12,11 +13,10 @@ import java.util.Map;
  * @param integrator       integrator name, e.g. {@code rk2}
  * @param tensegrityTendon true when the tendon has rigid links (ignored by scenes without the choice)
  * @param values           parameter key to value (in the unit its key names), time step included
- * @param muscleLoad       the diaphragm's muscle-load model as on the command line ({@code fibres},
- *                         {@code pressure}, {@code paper-nodes}); null for a scene without a muscle
+ * @param muscleLoad       the diaphragm's muscle-load model; null for a scene without a muscle
  */
 public record Settings(String scene, String integrator, boolean tensegrityTendon, Map<String, Double> values,
-        String muscleLoad) {
+        MuscleLoad muscleLoad) {
     public Settings {
         values = Collections.unmodifiableMap(new LinkedHashMap<>(values));
     }

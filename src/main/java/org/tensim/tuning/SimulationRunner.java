@@ -210,7 +210,7 @@ public final class SimulationRunner implements Tuning.Target {
     }
 
     @Override
-    public void applyMuscleLoad(String load) {
+    public void applyMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad load) {
         rebuild(); // the settings carry the new load
     }
 

@@ -3,6 +3,7 @@ package org.tensim.tuning;
 import java.nio.file.Files;
 import java.util.List;
 import org.tensim.experiment.diaphragm.ResolutionPick;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
 import org.tensim.scene.tunable.SceneFactory;
@@ -39,7 +40,7 @@ public final class TunableScenes {
         switch (name) {
             case "cube":
                 if (options.muscleLoad != null) {
-                    throw new IllegalArgumentException("--muscle-load " + options.muscleLoad + ": the cube has no"
+                    throw new IllegalArgumentException("--muscle-load " + BoundaryConditions.name(options.muscleLoad) + ": the cube has no"
                             + " muscle; --muscle-load applies to the diaphragm");
                 }
                 if (options.mesh != null) {

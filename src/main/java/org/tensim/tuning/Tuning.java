@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
+import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.solver.integrators.IntegratorChoice;
@@ -31,14 +32,14 @@ public final class Tuning {
         /** A change that needs a new topology: the scene is rebuilt. */
         void applyTendonModel(boolean tensegrity);
 
-        /** A new muscle-load model (as on the command line): the scene is rebuilt with it. */
-        void applyMuscleLoad(String muscleLoad);
+        /** A new muscle-load model: the scene is rebuilt with it. */
+        void applyMuscleLoad(MuscleLoad muscleLoad);
     }
 
     private final String scene;
     // Replaced (same keys and ranges) when the muscle load changes; read on any thread.
     private volatile List<TunableParameter> parameters;
-    private java.util.function.Function<String, List<TunableParameter>> parametersForLoad;
+    private java.util.function.Function<MuscleLoad, List<TunableParameter>> parametersForLoad;
     private final List<IntegratorChoice> integrators;
     private final boolean tendonChoice;
     private final Map<String, Double> values = new LinkedHashMap<>();
@@ -46,7 +47,7 @@ public final class Tuning {
     // Read by the simulation thread through snapshot(): volatile, and the map is guarded by itself.
     private volatile IntegratorChoice integrator;
     private volatile boolean tensegrityTendon = true;
-    private volatile String muscleLoad;
+    private volatile MuscleLoad muscleLoad;
     private volatile Target target;
 
     /**
@@ -75,23 +76,23 @@ public final class Tuning {
     /**
      * As the constructor above for a scene with a muscle-load choice (the diaphragm).
      *
-     * @param muscleLoad the scene's muscle-load model as on the command line, or null for a scene without a muscle
+     * @param muscleLoad the scene's muscle-load model, or null for a scene without a muscle
      */
     public Tuning(String scene, List<TunableParameter> sceneParameters, double defaultDtS, boolean tendonChoice,
-            List<IntegratorChoice> integrators, String muscleLoad) {
+            List<IntegratorChoice> integrators, MuscleLoad muscleLoad) {
         this(scene, sceneParameters, defaultDtS, tendonChoice, integrators);
         this.muscleLoad = muscleLoad;
     }
 
     /**
      * As the constructor above, with the scene's parameters for each muscle-load model
-     * ({@link org.tensim.scene.tunable.SceneFactory#parameters(String)}): a change of the load then also changes
+     * ({@link org.tensim.scene.tunable.SceneFactory#parameters(MuscleLoad)}): a change of the load then also changes
      * the parameters' labels, defaults and descriptions (the muscle action is an active stress with the fibres,
      * a pressure otherwise), as the rebuilt scene has them.
      */
     public Tuning(String scene, List<TunableParameter> sceneParameters, double defaultDtS, boolean tendonChoice,
-            List<IntegratorChoice> integrators, String muscleLoad,
-            java.util.function.Function<String, List<TunableParameter>> parametersForLoad) {
+            List<IntegratorChoice> integrators, MuscleLoad muscleLoad,
+            java.util.function.Function<MuscleLoad, List<TunableParameter>> parametersForLoad) {
         this(scene, sceneParameters, defaultDtS, tendonChoice, integrators, muscleLoad);
         this.parametersForLoad = parametersForLoad;
     }
@@ -204,8 +205,8 @@ public final class Tuning {
         fire();
     }
 
-    /** The muscle-load model as on the command line, or null for a scene without a muscle. */
-    public String muscleLoad() {
+    /** The muscle-load model, or null for a scene without a muscle. */
+    public MuscleLoad muscleLoad() {
         return muscleLoad;
     }
 
@@ -213,11 +214,11 @@ public final class Tuning {
      * Switches the muscle-load model; the scene is rebuilt (the load's topology changes), so the simulation
      * restarts. The muscle action keeps its value: set it too when it was tuned for the other load.
      *
-     * @throws IllegalArgumentException for an unknown model or a scene without a muscle; nothing changes then
+     * @throws IllegalArgumentException for a scene without a muscle; nothing changes then
      */
-    public void setMuscleLoad(String load) {
+    public void setMuscleLoad(MuscleLoad load) {
         checkMuscleLoad(load, null);
-        if (load.equals(muscleLoad)) {
+        if (load == muscleLoad) {
             return;
         }
         muscleLoad = load;
@@ -247,16 +248,14 @@ public final class Tuning {
         parameters = List.copyOf(all);
     }
 
-    private void checkMuscleLoad(String load, String source) {
+    private void checkMuscleLoad(MuscleLoad load, String source) {
         String where = source == null ? "" : source + ": field 'muscleLoad': ";
-        if (muscleLoad == null) {
-            throw new IllegalArgumentException(where + "muscle load '" + load + "': scene '" + scene
-                    + "' has no muscle");
+        if (load == null) {
+            throw new IllegalArgumentException(where + "a muscle load is needed, got none");
         }
-        try {
-            BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, load);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException(where + e.getMessage(), e);
+        if (muscleLoad == null) {
+            throw new IllegalArgumentException(where + "muscle load '" + BoundaryConditions.name(load) + "': scene '"
+                    + scene + "' has no muscle");
         }
     }
 

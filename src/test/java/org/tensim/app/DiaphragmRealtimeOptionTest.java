@@ -77,7 +77,7 @@ class DiaphragmRealtimeOptionTest {
                 "0", "--out", out.toString());
         assertEquals("0", r[0], r[2]);
         RealTimeSetting s = RealTimeSetting.FIBRES;
-        assertEquals(s, RealTimeSetting.forMuscleLoad(null));
+        assertEquals(s, RealTimeSetting.forMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.defaults().muscleLoad()));
         Map<String, Object> summary = Json.readMap(out.resolve("summary.json"));
         assertEquals(s.integrator(), summary.get("integrator"));
         @SuppressWarnings("unchecked")
@@ -97,10 +97,10 @@ class DiaphragmRealtimeOptionTest {
      */
     @Test
     void realtimeWithThePressureRunsRk2AtTheStableStep() throws Exception {
-        RealTimeSetting s = RealTimeSetting.forMuscleLoad("fibres");
+        RealTimeSetting s = RealTimeSetting.forMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES);
         assertEquals(Integrators.REAL_TIME, s.integrator());
         assertEquals(Integrators.REAL_TIME_STEP_S, s.dtS());
-        assertEquals(RealTimeSetting.PRESSURE, RealTimeSetting.forMuscleLoad("pressure"));
+        assertEquals(RealTimeSetting.PRESSURE, RealTimeSetting.forMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.PRESSURE));
         assertEquals("rk2", RealTimeSetting.PRESSURE.integrator());
         Path mesh = dir.resolve("coarse.obj");
         String[] m = run("diaphragm-mesh", "--rings", "8", "--out", mesh.toString());

@@ -69,9 +69,11 @@ class SpecReaderTest {
     void readsTheDiaphragmsMuscleLoadAndRefusesAnUnknownOne() throws Exception {
         String body = "\"scene\": \"diaphragm\", \"mesh\": {\"rings\": 6}, \"parameters\":"
                 + " {\"muscleActionPa\": {\"values\": [15000]}}, \"outputs\": [\"dome_excursion_mm\"]";
-        assertEquals("fibres", SpecReader.readSweep(spec("{" + body + ", \"muscleLoad\": \"fibres\"}")).setup()
+        assertEquals(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES, SpecReader.readSweep(spec("{" + body
+                + ", \"muscleLoad\": \"fibres\"}")).setup()
                 .muscleLoad());
-        assertEquals("fibres", SpecReader.readSweep(spec("{" + body + "}")).setup().muscleLoad(), "the default");
+        assertEquals(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES,
+                SpecReader.readSweep(spec("{" + body + "}")).setup().muscleLoad(), "the default");
         Path f = spec("{" + body + ", \"muscleLoad\": \"fibers\"}");
         String m = assertThrows(SpecReader.SpecException.class, () -> SpecReader.readSweep(f)).getMessage();
         assertTrue(m.contains("'muscleLoad'") && m.contains("fibres") && m.contains("pressure"), m);

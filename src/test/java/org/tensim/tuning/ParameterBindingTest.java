@@ -59,7 +59,7 @@ public class ParameterBindingTest {
         }
 
         @Override
-        public void applyMuscleLoad(String muscleLoad) {
+        public void applyMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad muscleLoad) {
             throw new UnsupportedOperationException("not needed here");
         }
     }

@@ -27,7 +27,7 @@ public final class RecordingTarget implements Tuning.Target {
     }
 
     @Override
-    public void applyMuscleLoad(String load) {
-        applied.add("muscleLoad=" + load);
+    public void applyMuscleLoad(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad load) {
+        applied.add("muscleLoad=" + org.tensim.scene.diaphragm.BoundaryConditions.name(load));
     }
 }

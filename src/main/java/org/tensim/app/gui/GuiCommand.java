@@ -6,6 +6,7 @@ import java.nio.file.StandardCopyOption;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.integrators.Integrators;
@@ -244,8 +245,9 @@ public final class GuiCommand implements Callable<Integer> {
         try {
             Settings s = readLastUsed(file, tuning);
             if (keepLoad && s.muscleLoad() != null && !s.muscleLoad().equals(tuning.muscleLoad())) {
-                return "Last-used parameters not restored: they were tuned with muscle load " + s.muscleLoad()
-                        + ", and --muscle-load " + tuning.muscleLoad() + " was given (" + file + ")";
+                return "Last-used parameters not restored: they were tuned with muscle load "
+                        + BoundaryConditions.name(s.muscleLoad()) + ", and --muscle-load "
+                        + BoundaryConditions.name(tuning.muscleLoad()) + " was given (" + file + ")";
             }
             tuning.apply(s, file.toString());
             return null;

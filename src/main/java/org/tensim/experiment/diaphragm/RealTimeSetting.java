@@ -44,13 +44,9 @@ public record RealTimeSetting(String integrator, double dtS) {
         }
     }
 
-    /**
-     * The setting for a muscle-load model as on the command line: {@link #FIBRES} for {@code fibres} or null
-     * (the default load, {@link BoundaryConditions#defaults()}), {@link #PRESSURE} for the others.
-     */
-    public static RealTimeSetting forMuscleLoad(String model) {
-        String m = model == null ? BoundaryConditions.DEFAULT_MUSCLE_LOAD : model;
-        return m.equals(BoundaryConditions.name(BoundaryConditions.MuscleLoad.FIBRES)) ? FIBRES : PRESSURE;
+    /** The setting for a muscle-load model: {@link #FIBRES} for the fibres, {@link #PRESSURE} for the others. */
+    public static RealTimeSetting forMuscleLoad(BoundaryConditions.MuscleLoad model) {
+        return model == BoundaryConditions.MuscleLoad.FIBRES ? FIBRES : PRESSURE;
     }
 
     /** A new integrator of this setting. */

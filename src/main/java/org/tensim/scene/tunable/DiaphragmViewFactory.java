@@ -67,8 +67,8 @@ public final class DiaphragmViewFactory implements SceneFactory {
     }
 
     @Override
-    public String muscleLoad() {
-        return BoundaryConditions.name(bc.muscleLoad());
+    public BoundaryConditions.MuscleLoad muscleLoad() {
+        return bc.muscleLoad();
     }
 
     @Override
@@ -77,15 +77,14 @@ public final class DiaphragmViewFactory implements SceneFactory {
     }
 
     @Override
-    public List<TunableParameter> parameters(String muscleLoad) {
-        return DiaphragmViewScene.parameters(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class,
-                muscleLoad), base.tendonRule(), spec().mesh().labels() != null);
+    public List<TunableParameter> parameters(BoundaryConditions.MuscleLoad muscleLoad) {
+        return DiaphragmViewScene.parameters(muscleLoad, base.tendonRule(), spec().mesh().labels() != null);
     }
 
     @Override
-    public ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
-        BoundaryConditions b = muscleLoad == null ? bc
-                : bc.withMuscleLoad(BoundaryConditions.parse(BoundaryConditions.MuscleLoad.class, muscleLoad));
+    public ViewScene create(boolean tensegrityTendon, BoundaryConditions.MuscleLoad muscleLoad,
+            Map<String, Double> values) {
+        BoundaryConditions b = muscleLoad == null ? bc : bc.withMuscleLoad(muscleLoad);
         double period = values.getOrDefault(DiaphragmViewScene.BREATHING_PERIOD, 4.0);
         Painted painting = painted;
         DiaphragmSpec spec = (painting == null ? base : base.withMesh(base.mesh().withLabels(painting.file())))

@@ -27,11 +27,8 @@ public interface SceneFactory {
      */
     ViewScene create(boolean tensegrityTendon, Map<String, Double> values);
 
-    /**
-     * The muscle-load model this factory builds by default, as on the command line ({@code fibres},
-     * {@code pressure}, {@code paper-nodes}); null for a scene without a muscle.
-     */
-    default String muscleLoad() {
+    /** The muscle-load model this factory builds by default; null for a scene without a muscle. */
+    default org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad muscleLoad() {
         return null;
     }
 
@@ -39,11 +36,12 @@ public interface SceneFactory {
      * A new scene at rest with a muscle-load model, as {@link #create(boolean, Map)}: a change of the model
      * changes the loads' topology (the fibres' directions, the pressure's weights), so the scene is rebuilt.
      *
-     * @param muscleLoad the model as on the command line, or null for the factory's own ({@link #muscleLoad()})
-     * @throws IllegalArgumentException for an unknown model, or any model for a scene without a muscle
+     * @param muscleLoad the model, or null for the factory's own ({@link #muscleLoad()})
+     * @throws IllegalArgumentException for any model of a scene without a muscle
      */
-    default ViewScene create(boolean tensegrityTendon, String muscleLoad, Map<String, Double> values) {
-        if (muscleLoad != null && !muscleLoad.equals(muscleLoad())) {
+    default ViewScene create(boolean tensegrityTendon, org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad
+            muscleLoad, Map<String, Double> values) {
+        if (muscleLoad != null && muscleLoad != muscleLoad()) {
             throw new IllegalArgumentException("muscle load '" + muscleLoad + "': scene '" + name()
                     + "' has no muscle load to choose");
         }
@@ -54,10 +52,11 @@ public interface SceneFactory {
      * The scene's parameters with a muscle-load model (their labels, defaults and descriptions depend on it: the
      * muscle action is an active stress with the fibres, a pressure otherwise), without building a scene.
      *
-     * @param muscleLoad the model as on the command line
-     * @throws IllegalArgumentException for an unknown model, or any model for a scene without a muscle
+     * @param muscleLoad the model
+     * @throws IllegalArgumentException for any model of a scene without a muscle
      */
-    default java.util.List<TunableParameter> parameters(String muscleLoad) {
+    default java.util.List<TunableParameter> parameters(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad
+            muscleLoad) {
         throw new IllegalArgumentException("muscle load '" + muscleLoad + "': scene '" + name()
                 + "' has no muscle load to choose");
     }

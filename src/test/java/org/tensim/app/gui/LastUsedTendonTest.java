@@ -26,7 +26,7 @@ class LastUsedTendonTest {
 
     private static Tuning tuning(TendonRule rule, boolean labelled) {
         return new Tuning("diaphragm", DiaphragmViewScene.parameters(BoundaryConditions.MuscleLoad.FIBRES, rule,
-                labelled), 0.025, true, Integrators.choices(), "fibres");
+                labelled), 0.025, true, Integrators.choices(), org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES);
     }
 
     @Test

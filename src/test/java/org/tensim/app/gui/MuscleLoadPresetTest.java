@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.tunable.CubeViewScene;
@@ -53,7 +54,7 @@ class MuscleLoadPresetTest {
     @Test
     void theDefaultLoadIsTheFibresAtTheirActiveStress() {
         SceneFactory f = ParameterBindingTest.coarseDiaphragm();
-        assertEquals("fibres", f.muscleLoad());
+        assertEquals(MuscleLoad.FIBRES, f.muscleLoad());
         DiaphragmViewScene s = (DiaphragmViewScene) f.create(true);
         TunableParameter m = muscleAction(s);
         assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, m.defaultValue());
@@ -63,14 +64,13 @@ class MuscleLoadPresetTest {
         assertTrue(s.title().contains("muscle load fibres"), s.title());
         assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, muscleAction(DiaphragmViewScene.PARAMETERS));
         // the pressure by name, with its own amplitude and wording
-        DiaphragmViewScene p = (DiaphragmViewScene) f.create(true, "pressure", Map.of());
+        DiaphragmViewScene p = (DiaphragmViewScene) f.create(true, MuscleLoad.PRESSURE, Map.of());
         assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, muscleAction(p).defaultValue());
         assertTrue(muscleAction(p).description().contains("per unit area"), muscleAction(p).description());
         assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, p.scene().controls().muscleAmplitudePa());
-        assertThrows(IllegalArgumentException.class, () -> f.create(true, "fibers", Map.of()));
         SceneFactory cube = CubeViewScene.factory();
         assertNull(cube.muscleLoad());
-        assertThrows(IllegalArgumentException.class, () -> cube.create(true, "fibres", Map.of()));
+        assertThrows(IllegalArgumentException.class, () -> cube.create(true, MuscleLoad.FIBRES, Map.of()));
     }
 
     private static double muscleAction(List<TunableParameter> ps) {
@@ -86,9 +86,9 @@ class MuscleLoadPresetTest {
         Files.writeString(v1, "{\"format\": \"tensim-gui-preset\", \"version\": 1, \"scene\": \"diaphragm\","
                 + " \"integrator\": \"rk2\", \"tendon\": \"tensegrity\", \"parameters\": {\"muscleActionPa\": 3000.0}}");
         Settings read = PresetFile.read(v1, t);
-        assertEquals("pressure", read.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, read.muscleLoad());
         t.apply(read, v1.toString());
-        assertEquals("pressure", t.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, t.muscleLoad());
         assertEquals(List.of("muscleLoad=pressure", "muscleActionPa=3000.0"), applied,
                 "the load first (it rebuilds the scene), then the values");
         // What the user had: the pressure scene at 3 kPa, as built when the pressure was the default.
@@ -102,12 +102,12 @@ class MuscleLoadPresetTest {
         // ... and not what the fibres would do at the same value
         ViewScene fibres = f.create(true, Map.of(DiaphragmViewScene.MUSCLE_ACTION, 3000.0));
         double[] a = ParameterBindingTest.run(fibres, dt, 150);
-        double[] b = ParameterBindingTest.run(f.create(true, "pressure", t.snapshot().values()), dt, 150);
+        double[] b = ParameterBindingTest.run(f.create(true, MuscleLoad.PRESSURE, t.snapshot().values()), dt, 150);
         assertTrue(!java.util.Arrays.equals(a, b), "the fibres at 3 kPa move otherwise");
         // a version-1 preset without the muscle action meant the pressure's default amplitude
         Files.writeString(v1, "{\"version\": 1, \"scene\": \"diaphragm\", \"parameters\": {\"timeStepS\": 0.01}}");
         Settings partial = PresetFile.read(v1, tuning(f.create(true), f));
-        assertEquals("pressure", partial.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, partial.muscleLoad());
         assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, partial.values().get(DiaphragmViewScene.MUSCLE_ACTION));
         // a version-1 file cannot name a load
         Files.writeString(v1, "{\"version\": 1, \"scene\": \"diaphragm\", \"muscleLoad\": \"fibres\"}");
@@ -119,7 +119,7 @@ class MuscleLoadPresetTest {
     void aVersion2PresetRecordsTheLoadAndRoundTrips() throws Exception {
         SceneFactory f = ParameterBindingTest.coarseDiaphragm();
         Tuning t = tuning(f.create(true), f);
-        t.setMuscleLoad("pressure");
+        t.setMuscleLoad(MuscleLoad.PRESSURE);
         t.set(DiaphragmViewScene.MUSCLE_ACTION, 3100);
         Settings saved = t.snapshot();
         Path p = dir.resolve("v2.json");
@@ -127,16 +127,16 @@ class MuscleLoadPresetTest {
         String text = Files.readString(p);
         assertTrue(text.contains("\"version\" : 2") && text.contains("\"muscleLoad\" : \"pressure\""), text);
         Tuning other = tuning(f.create(true), f);
-        assertEquals("fibres", other.muscleLoad());
+        assertEquals(MuscleLoad.FIBRES, other.muscleLoad());
         Settings read = PresetFile.read(p, other);
         assertEquals(saved, read);
         other.apply(read, p.toString());
         assertEquals(saved, other.snapshot());
-        assertEquals("pressure", other.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, other.muscleLoad());
         // a preset of the fibres written now reads back as the fibres
-        other.setMuscleLoad("fibres");
+        other.setMuscleLoad(MuscleLoad.FIBRES);
         PresetFile.write(p, other.snapshot());
-        assertEquals("fibres", PresetFile.read(p, t).muscleLoad());
+        assertEquals(MuscleLoad.FIBRES, PresetFile.read(p, t).muscleLoad());
         // an unknown load, or a load for the cube, is refused naming the field
         Files.writeString(p, "{\"version\": 2, \"scene\": \"diaphragm\", \"muscleLoad\": \"fibers\"}");
         String m = assertThrows(PresetFile.PresetException.class, () -> PresetFile.read(p, t)).getMessage();
@@ -158,12 +158,12 @@ class MuscleLoadPresetTest {
         String note = GuiCommand.restore(explicit, last, true);
         assertTrue(note != null && note.contains("muscle load pressure") && note.contains("--muscle-load fibres"),
                 note);
-        assertEquals("fibres", explicit.muscleLoad());
+        assertEquals(MuscleLoad.FIBRES, explicit.muscleLoad());
         assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, explicit.get(DiaphragmViewScene.MUSCLE_ACTION));
         assertTrue(Files.exists(last), "a valid file is kept where it is");
         Tuning restored = tuning(f.create(true), f);
         assertNull(GuiCommand.restore(restored, last, false));
-        assertEquals("pressure", restored.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, restored.muscleLoad());
         assertEquals(2600, restored.get(DiaphragmViewScene.MUSCLE_ACTION));
     }
 
@@ -181,14 +181,14 @@ class MuscleLoadPresetTest {
         Files.writeString(v2, "{\"format\": \"tensim-gui-preset\", \"version\": 2, \"scene\": \"diaphragm\","
                 + " \"muscleLoad\": \"pressure\", \"parameters\": {\"muscleActionPa\": 2000.0}}");
         t.apply(PresetFile.read(v2, t), v2.toString());
-        assertEquals("pressure", t.muscleLoad());
+        assertEquals(MuscleLoad.PRESSURE, t.muscleLoad());
         assertTrue(slider.labelText().startsWith("Muscle action pressure"), slider.labelText());
         TunableParameter m = t.parameter(DiaphragmViewScene.MUSCLE_ACTION);
         assertEquals(DiaphragmSetup.DEFAULT_MUSCLE_PA, m.defaultValue(), "the pressure's default");
         assertTrue(m.description().contains("per unit area"), m.description());
         assertEquals(2000.0, t.get(DiaphragmViewScene.MUSCLE_ACTION), "the preset's value");
         // and back: the fibres' wording and default again, the value kept as the load's setter says
-        t.setMuscleLoad("fibres");
+        t.setMuscleLoad(MuscleLoad.FIBRES);
         assertTrue(slider.labelText().startsWith("Muscle fibre active stress"), slider.labelText());
         assertEquals(DiaphragmSetup.DEFAULT_FIBRE_STRESS_PA, t.parameter(DiaphragmViewScene.MUSCLE_ACTION)
                 .defaultValue());

@@ -55,7 +55,7 @@ class TendonBoundaryControlTest {
         TunableParameter share = parameter(f.create(true).parameters(), DiaphragmViewScene.TENDON_SHARE);
         assertTrue(share != null && share.restarts() && share.defaultValue() == 0.12, String.valueOf(share));
         assertEquals(null, parameter(f.create(true).parameters(), DiaphragmViewScene.TENDON_PLANE));
-        assertEquals(f.parameters("fibres").stream().map(TunableParameter::key).toList(),
+        assertEquals(f.parameters(org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES).stream().map(TunableParameter::key).toList(),
                 f.create(true).parameters().stream().map(TunableParameter::key).toList(),
                 "the factory's parameters for a muscle load name the same controls as its scenes'");
         double previous = 0;
