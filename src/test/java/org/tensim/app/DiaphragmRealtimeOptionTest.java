@@ -39,8 +39,8 @@ class DiaphragmRealtimeOptionTest {
         rejected("--realtime chooses the integrator and the step itself", "diaphragm", "--realtime", "--integrator",
                 "rk4");
         rejected("--study-rings must be ascending ring counts of 4 or more, got [43, 10]", "diaphragm",
-                "--realtime-study", "--study-rings", "43,10");
-        rejected("--study-configs is not a regular expression", "diaphragm", "--realtime-study", "--study-configs",
+                "realtime-study", "--study-rings", "43,10");
+        rejected("--study-configs is not a regular expression", "diaphragm", "realtime-study", "--study-configs",
                 "bdf2[");
     }
 

@@ -106,7 +106,7 @@ class ThoraxCommandTest {
         assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
         Path mesh = coarseMesh();
         Path out = dir.resolve("study");
-        String[] r = run("diaphragm", "--resolution-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
+        String[] r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
                 THORAX.toString(), "--integrator", "bdf2", "--dt", "0.01", "--cells", "12", "--seconds", "0.3",
                 "--out", out.toString());
         assertEquals("0", r[0], r[2]);
@@ -120,12 +120,12 @@ class ThoraxCommandTest {
             // every model in the thorax breathes at the step given, not RK2's stable step
             assertEquals(0.01, ((Number) row.get("dt_s")).doubleValue(), 1e-12, row.toString());
         }
-        r = run("diaphragm", "--resolution-study", "--thorax", THORAX.toString(), "--out",
+        r = run("diaphragm", "resolution-study", "--thorax", THORAX.toString(), "--out",
                 dir.resolve("no-mesh").toString());
-        assertTrue(r[2].contains("--resolution-study with --thorax needs --mesh"), r[2]);
-        r = run("diaphragm", "--resolution-study", "--mesh", mesh.toString(), "--labels", mesh.toString(), "--out",
+        assertTrue(r[2].contains("the resolution study with --thorax needs --mesh"), r[2]);
+        r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--labels", mesh.toString(), "--out",
                 dir.resolve("labels").toString());
-        assertTrue(r[2].contains("--labels cannot go with --resolution-study"), r[2]);
+        assertTrue(r[2].contains("--labels cannot go with the resolution study"), r[2]);
     }
 
     @Test

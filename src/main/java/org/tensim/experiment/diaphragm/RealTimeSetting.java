@@ -11,7 +11,7 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
 /**
  * What {@code ./tensim diaphragm --realtime} runs, by muscle load: a setup of the integrator catalogue
  * ({@link Integrators}) and its time step. The real-time study ({@link RealTimeStudy},
- * {@code diaphragm --realtime-study}) chose each as the fastest configuration it measured within
+ * {@code diaphragm realtime-study}) chose each as the fastest configuration it measured within
  * {@link RealTimeStudy#TOLERANCE} relative RMS displacement error against RK2 at the same mesh (at
  * end-inspiration and at the worst moment) and with the apex's descent within
  * {@link RealTimeStudy#APEX_TOLERANCE_MM} of RK2's, on the default mesh. The figures themselves are that
@@ -63,7 +63,7 @@ public record RealTimeSetting(String integrator, double dtS) {
                                 1e3 * dtS, b.newtonIterations(), b.krylovIterations())
                         : String.format(Locale.ROOT, "%s at %.0f ms", integrator, 1e3 * dtS);
         return String.format(Locale.ROOT, "%s: the fastest configuration the real-time study (diaphragm"
-                + " --realtime-study) measured within %.0f %% of RK2 at the default mesh", what,
+                + " realtime-study) measured within %.0f %% of RK2 at the default mesh", what,
                 100 * RealTimeStudy.TOLERANCE);
     }
 

@@ -12,7 +12,7 @@ import org.tensim.io.ProjectFolder;
  * The resolution the resolution study picked for the interactive uses (the GUI and the
  * real-time mode): the coarsest double dome whose end-inspiration field is within the
  * tolerance of the finest model, and every finer one too. Written by
- * {@code ./tensim diaphragm --resolution-study} to {@link #FILE} (committed, so that a fresh
+ * {@code ./tensim diaphragm resolution-study} to {@link #FILE} (committed, so that a fresh
  * checkout has it) and read by the GUI's default resolution; docs/diaphragm.md describes it.
  *
  * @param rings     rings per face of the generated double dome picked

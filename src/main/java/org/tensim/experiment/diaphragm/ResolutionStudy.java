@@ -162,7 +162,7 @@ public final class ResolutionStudy {
         details.put("nodes", rows.get(i).get("nodes"));
         details.put("wall_s_per_simulated_s", rows.get(i).get("wall_s_per_simulated_s"));
         details.put("measured_utc", Instant.now().toString());
-        details.put("command", "./tensim diaphragm --resolution-study");
+        details.put("command", "./tensim diaphragm resolution-study");
         pick.write(out.resolve("resolution-pick.json"), details);
         if (pickFile != null) {
             pick.write(pickFile, details);

@@ -1,0 +1,85 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.tensim.experiment.diaphragm.RealTimeStudy;
+import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.tuning.DiaphragmOptions;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+
+/** {@code tensim diaphragm realtime-study}: speed against error over resolutions and integrators. */
+@Command(name = "realtime-study", mixinStandardHelpOptions = true,
+        description = {"The generated double dome at 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler and bdf2",
+            "at several steps, one inspiration each: error against the paper's configuration against the real-time",
+            "factor, and the fastest setting within 5 % of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md."})
+public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
+    /** Outputs, written by the study into --out. */
+    static final List<String> OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    @Mixin
+    DiaphragmOptions scene = new DiaphragmOptions();
+
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time of each run, s (default:"
+            + " ${DEFAULT-VALUE})")
+    double seconds = 4;
+
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+            description = "ring counts, ascending (default: 10,14,20,28,43)")
+    int[] studyRings;
+
+    @Option(names = "--study-configs", paramLabel = "REGEX",
+            description = "run the configurations whose label this finds (RK2 on two threads, the reference of each"
+                    + " resolution, always runs)")
+    String studyConfigs;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
+    Path out = Path.of("out", "diaphragm");
+
+    @Override
+    public Integer call() throws Exception {
+        DiaphragmSpec s;
+        try {
+            s = scene.spec(null, DiaphragmSpec.PAPER_RINGS);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage());
+        }
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--seconds", seconds, "s");
+        DiaphragmCommand.checkRings(spec, studyRings);
+        if (s.cage().thorax() != null || s.mesh().labels() != null || scene.mesh != null) {
+            throw usage("the real-time study runs the generated double dome at its --study-rings: leave out --mesh,"
+                    + " --thorax and --labels");
+        }
+        java.util.regex.Pattern only;
+        try {
+            only = studyConfigs == null ? null : java.util.regex.Pattern.compile(studyConfigs);
+        } catch (java.util.regex.PatternSyntaxException e) {
+            throw usage("--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
+                    + "'");
+        }
+        return RunFolder.run(out, "diaphragm realtime-study", OUTPUTS, run -> {
+            for (String n : OUTPUTS) {
+                run.file(n);
+            }
+            Map<String, Object> r = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
+                    s.cage().boxes(), s.tissue(), s.boundary(), s.breathing().cycle(), s.newControls(), seconds, out,
+                    System.out);
+            System.out.println(Json.line(run.finish(RunStatus.OK, r)));
+        });
+    }
+
+    private ParameterException usage(String message) {
+        return new ParameterException(spec.commandLine(), message);
+    }
+}

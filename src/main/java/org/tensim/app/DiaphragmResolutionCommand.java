@@ -1,0 +1,121 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.tensim.experiment.diaphragm.ResolutionPick;
+import org.tensim.experiment.diaphragm.ResolutionStudy;
+import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.tuning.DiaphragmOptions;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+
+/** {@code tensim diaphragm resolution-study}: the same scene at several resolutions against the finest. */
+@Command(name = "resolution-study", mixinStandardHelpOptions = true,
+        description = {"The diaphragm at several resolutions, each against the finest: error, order, and the",
+            "coarsest model within --tolerance (the pick the GUI opens with, meshes/resolution-pick.json).",
+            "Generated double domes by --study-rings, or --mesh decimated (--cells) and refined (--refine);",
+            "with --thorax every model in that thorax. Writes resolution.csv, .png, .json. docs/diaphragm.md."})
+public final class DiaphragmResolutionCommand implements Callable<Integer> {
+    /** Outputs, written by the study into --out. */
+    static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
+            "resolution-pick.json");
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    @Mixin
+    DiaphragmOptions scene = new DiaphragmOptions();
+
+    @Mixin
+    DiaphragmSolverOptions solver = new DiaphragmSolverOptions();
+
+    @Option(names = "--seconds", paramLabel = "S", description = "simulated time of each model, s, at most one"
+            + " inspiration (default: one inspiration)")
+    double seconds = 4;
+
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+            description = "ring counts of the generated double domes, ascending, the finest as reference, no pick"
+                    + " (default: 10,14,20,28,43 with the pick)")
+    int[] studyRings;
+
+    @Option(names = "--tolerance", paramLabel = "E",
+            description = "relative RMS error under which a coarser model is accepted (default: ${DEFAULT-VALUE})")
+    double tolerance = ResolutionStudy.TOLERANCE;
+
+    @Option(names = "--cells", paramLabel = "MM", split = ",",
+            description = "with --mesh: vertex-clustering cell sizes, mm (default: 4, 2.8 and 2 times the mesh's"
+                    + " mean edge length)")
+    double[] cellsMm;
+
+    @Option(names = "--refine", paramLabel = "N",
+            description = "with --mesh: also the mesh refined 1..N times by midpoint subdivision"
+                    + " (default: ${DEFAULT-VALUE})")
+    int refine;
+
+    @Option(names = "--no-pick", description = "do not write the pick to meshes/resolution-pick.json (it still goes"
+            + " to --out)")
+    boolean noPick;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
+    Path out = Path.of("out", "diaphragm");
+
+    @Override
+    public Integer call() throws Exception {
+        DiaphragmSpec s;
+        try {
+            s = scene.spec(null, DiaphragmSpec.PAPER_RINGS);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage());
+        }
+        solver.check(spec, s, seconds);
+        CommandChecks.outFolder(spec, out);
+        CommandChecks.positive(spec, "--seconds", seconds, "s");
+        DiaphragmCommand.checkRings(spec, studyRings);
+        if (s.mesh().labels() != null) {
+            throw usage("--labels cannot go with the resolution study: a label file names the vertices of one mesh,"
+                    + " and the study decimates it");
+        }
+        boolean ownMesh = scene.mesh != null;
+        if (s.cage().thorax() != null && !ownMesh) {
+            throw usage("the resolution study with --thorax needs --mesh: the diaphragm registered to that thorax");
+        }
+        if (refine < 0 || cellsMm != null && java.util.Arrays.stream(cellsMm).anyMatch(c -> !(c > 0))) {
+            throw usage("--refine must be 0 or more and --cells positive sizes in mm, got " + refine + " and "
+                    + java.util.Arrays.toString(cellsMm));
+        }
+        ResolutionStudy.Thorax inThorax = s.cage().thorax() == null ? null : new ResolutionStudy.Thorax(s,
+                DiaphragmSetup.read(s), () -> solver.create(s), solver.dt);
+        ResolutionStudy.Setup rs;
+        try {
+            rs = new ResolutionStudy.Setup(DiaphragmSetup.boxes(s.cage().boxes()), s.tissue(), s.boundary(),
+                    s.breathing().cycle(), s.newControls(), Math.min(seconds, s.breathing().cycle().inspirationS()),
+                    tolerance, System.out, inThorax);
+        } catch (IllegalArgumentException e) {
+            throw usage("--tolerance: " + e.getMessage());
+        }
+        DiaphragmSpec.Mesh m = s.mesh();
+        return RunFolder.run(out, "diaphragm resolution-study", OUTPUTS, run -> {
+            for (String n : OUTPUTS) {
+                run.file(n);
+            }
+            Map<String, Object> r = ownMesh
+                    ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm, refine,
+                            rs, out)
+                    : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, out)
+                    : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
+            System.out.println(Json.line(run.finish(RunStatus.OK, r)));
+        });
+    }
+
+    private ParameterException usage(String message) {
+        return new ParameterException(spec.commandLine(), message);
+    }
+}

@@ -1,0 +1,100 @@
+package org.tensim.app;
+
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.solver.Integrator;
+import org.tensim.solver.integrators.ImplicitEuler;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+
+/**
+ * The diaphragm's integrator and step, shared by {@code tensim diaphragm} and its resolution study (a picocli
+ * mixin): {@code --integrator}, {@code --dt} and the iterative solvers' settings.
+ */
+public final class DiaphragmSolverOptions {
+    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
+            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+    String integrator = Integrators.DEFAULT;
+
+    @Option(names = "--dt", paramLabel = "S",
+            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
+                    + " this scene; summary.json's dt_rule says how it was chosen)")
+    double dt = 0;
+
+    @Option(names = "--cg-tolerance", paramLabel = "R",
+            description = "implicit-euler only: relative residual at which each step's CG solve stops"
+                    + " (default: 1e-12)")
+    Double cgTolerance;
+
+    @Option(names = "--newton", paramLabel = "N",
+            description = "bdf2 only: Newton iterations per step (default: "
+                    + PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS + "; with --thorax: "
+                    + PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS + ", docs/thorax.md)")
+    Integer newton;
+
+    @Option(names = "--cg-iterations", paramLabel = "N",
+            description = "bdf2 only: cap on CG iterations per Newton iteration (default: "
+                    + PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS + "; with --thorax: "
+                    + PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ")")
+    Integer cgIterations;
+
+    /**
+     * Checks the options against the scene (each setting applies to its own integrator; the step is at most one
+     * breathing period and fits {@code seconds}) and returns the integrator they configure.
+     */
+    void check(CommandSpec spec, DiaphragmSpec scene, double seconds) {
+        Integrator chosen = Integrators.create(integrator);
+        if (cgTolerance != null && !(chosen instanceof ImplicitEuler)) {
+            throw new ParameterException(spec.commandLine(), "--cg-tolerance applies to --integrator implicit-euler"
+                    + " only, not " + integrator);
+        }
+        if ((newton != null || cgIterations != null) && !(chosen instanceof PrefactoredBdf2)) {
+            throw new ParameterException(spec.commandLine(), "--newton and --cg-iterations apply to --integrator"
+                    + " bdf2 only, not " + integrator);
+        }
+        try {
+            configured(chosen, scene);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        double period = scene.breathing().periodS();
+        if (dt < 0 || dt > period) {
+            throw new ParameterException(spec.commandLine(), "--dt must be > 0 s (or 0 for the recommended step) and"
+                    + " at most one breathing period (--period " + period + " s), got " + dt + " s");
+        }
+        if (dt != 0) {
+            CommandChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
+        }
+    }
+
+    /** A new integrator as the options configure it, for a scene of this spec. */
+    Integrator create(DiaphragmSpec scene) {
+        return configured(Integrators.create(integrator), scene);
+    }
+
+    /**
+     * The integrator as the options configure it (the run's, and every model's of a study): a thorax's converged
+     * {@code bdf2} step for plain {@code bdf2} (a named setup keeps its own iterations; docs/thorax.md), then
+     * {@code --newton}, {@code --cg-iterations} and {@code --cg-tolerance}.
+     */
+    private Integrator configured(Integrator i, DiaphragmSpec s) {
+        if (i instanceof PrefactoredBdf2 b) {
+            if (s.cage().thorax() != null && s.cage().contact() && integrator.equals(PrefactoredBdf2.NAME)) {
+                b.setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
+                b.setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
+            }
+            if (newton != null) {
+                b.setNewtonIterations(newton);
+            }
+            if (cgIterations != null) {
+                b.setKrylovIterations(cgIterations);
+            }
+        }
+        if (cgTolerance != null && i instanceof ImplicitEuler ie) {
+            ie.setTolerance(cgTolerance);
+        }
+        return i;
+    }
+}
