@@ -117,6 +117,46 @@ class GuiCommandTest {
         assertTrue(m.containsKey("error_estimate") && m.containsKey("edt_longest_delay_ms"), m.toString());
     }
 
+    /** {@code gui --model paper} opens the paper's model (its tissue springs) with the paper's RK2; the default not. */
+    @Test
+    @Tag("gui")
+    void thePaperModelOpensInTheGuiWithThePapersIntegrator() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        java.util.Map<String, Object> paper = runFor("--model", "paper");
+        java.util.Map<String, Object> standard = runFor("--model", "default");
+        assertEquals("diaphragm", paper.get("scene"));
+        assertEquals("rk2", paper.get("integrator"), "the paper's integrator");
+        assertEquals(org.tensim.solver.integrators.Integrators.REAL_TIME, standard.get("integrator"));
+        // The paper's network on the same mesh: its threshold attachment drives the nodes near the bones itself,
+        // where the default's band ties them to anchor nodes of their own; and its tissue is springs.
+        assertTrue(((Number) paper.get("nodes")).intValue() < ((Number) standard.get("nodes")).intValue(),
+                paper.get("nodes") + " against " + standard.get("nodes"));
+        assertTrue(!paper.get("springs").equals(standard.get("springs")), "the paper's tissue springs, not the"
+                + " material shell's: " + paper.get("springs") + " against " + standard.get("springs"));
+        assertEquals(null, paper.get("diverged"));
+        assertTrue(((Number) paper.get("steps")).longValue() > 0, paper.toString());
+    }
+
+    private java.util.Map<String, Object> runFor(String... extra) throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("gui", "--rings", "6",
+                "--config-dir", dir.toString(), "--fresh", "--run-for", "1.5", "--unpaced"));
+        args.addAll(java.util.List.of(extra));
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8));
+        try {
+            code = run(err, args.toArray(String[]::new));
+        } finally {
+            System.setOut(saved);
+        }
+        assertEquals(0, code, err.toString());
+        String[] lines = out.toString(java.nio.charset.StandardCharsets.UTF_8).trim().split("\\R");
+        return org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<java.util.Map<String, Object>>() { });
+    }
+
     @Test
     @Tag("gui")
     void screenshotOptionWritesAPictureOfTheRunningScene() throws Exception {
