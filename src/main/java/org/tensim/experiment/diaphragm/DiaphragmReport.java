@@ -5,11 +5,9 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.knowm.xchart.XYChart;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Progress;
@@ -140,7 +138,7 @@ public final class DiaphragmReport {
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
         writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
         figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
-        breathingChart(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
+        BreathingChart.write(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
             log.println("wrote " + out.dir().resolve(RunFolder.SUMMARY) + ", displacements.csv, probe.csv, PNG slices"
                     + (vtk != null ? ", " + vtk.frameCount() + " VTK frames (" + vtk.collection() + ")" : ""));
@@ -365,35 +363,6 @@ public final class DiaphragmReport {
             n++;
         }
         return s / Math.max(n, 1);
-    }
-
-    private static void breathingChart(Path png, Path probeCsv, double divergedAt) throws IOException {
-        List<String> lines = Files.readAllLines(probeCsv);
-        int n = lines.size() - 1;
-        if (n < 2) {
-            return;
-        }
-        double[] t = new double[n];
-        double[] dz = new double[n];
-        double[] ex = new double[n];
-        double[] ey = new double[n];
-        for (int i = 0; i < n; i++) {
-            String[] f = lines.get(i + 1).split(",");
-            t[i] = Double.parseDouble(f[0]);
-            dz[i] = Double.parseDouble(f[2]);
-            ex[i] = Double.parseDouble(f[3]) - Double.parseDouble(lines.get(1).split(",")[3]);
-            ey[i] = Double.parseDouble(f[4]) - Double.parseDouble(lines.get(1).split(",")[4]);
-        }
-        XYChart c = Charts.lineChart("Breathing: dome apex and diaphragm extents (all nodes)", "t, s", "mm", 900,
-                500);
-        c.getStyler().setXAxisDecimalPattern("0.0");
-        Charts.addLine(c, "apex z displacement", t, dz);
-        Charts.addLine(c, "transverse extent change", t, ex);
-        Charts.addLine(c, "antero-posterior extent change", t, ey);
-        if (!Double.isNaN(divergedAt)) {
-            Charts.markDiverged(c, divergedAt);
-        }
-        Charts.savePng(c, png);
     }
 
     private static double[] extents(double[] x, int n) {
