@@ -6,6 +6,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 import org.tensim.model.Topology;
 import org.tensim.scene.diaphragm.ShellNetwork;
+import org.tensim.scene.diaphragm.StandaloneShell;
 import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.scene.shell.ShellMaterial;
@@ -54,7 +55,7 @@ public final class ShellStatics {
             double lengthM, double widthM, double sigmaPa) {
         TriangleMesh flat = FlatMeshes.rectangle(pattern, cells, lengthM, widthM, 11);
         TwoSurfaces s = TwoSurfaces.offset(flat, m.thicknessM());
-        Topology t = ShellNetwork.standalone(s, m, model, 1);
+        Topology t = StandaloneShell.of(s, m, model, 1);
         int nv = s.mesh().vertexCount();
         double[] x = s.mesh().coordinates();
         double[] f = new double[3 * nv];
@@ -131,7 +132,7 @@ public final class ShellStatics {
         Check.positive("plate pressure", "Pa", pressurePa);
         TriangleMesh flat = FlatMeshes.disc(rings, radiusM);
         TwoSurfaces s = TwoSurfaces.offset(flat, m.thicknessM());
-        Topology t = ShellNetwork.standalone(s, m, model, 1);
+        Topology t = StandaloneShell.of(s, m, model, 1);
         int nv = s.mesh().vertexCount();
         int half = nv / 2;
         double[] f = new double[3 * nv];

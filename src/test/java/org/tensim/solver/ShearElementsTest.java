@@ -243,7 +243,7 @@ class ShearElementsTest {
         for (Integrator in : new Integrator[] {new MidpointRK2(), new PrefactoredBdf2(), new ImplicitEuler()}) {
             var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
             var s = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(3, 0.03), T);
-            Topology t = org.tensim.scene.diaphragm.ShellNetwork.standalone(s, m,
+            Topology t = org.tensim.scene.diaphragm.StandaloneShell.of(s, m,
                     org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
             int half = s.mesh().vertexCount() / 2;
             for (int v = 0; v < half; v++) {
@@ -275,7 +275,7 @@ class ShearElementsTest {
     void theParallelForcePassAddsTheShearElements() {
         var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
         var sh = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(6, 0.05), T);
-        Topology t = org.tensim.scene.diaphragm.ShellNetwork.standalone(sh, m,
+        Topology t = org.tensim.scene.diaphragm.StandaloneShell.of(sh, m,
                 org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
         Simulation serial = new Simulation(SystemState.compile(t));
         Simulation parallel = new Simulation(SystemState.compile(t));

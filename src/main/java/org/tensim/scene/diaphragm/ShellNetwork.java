@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.model.Topology;
 import org.tensim.scene.shell.SandwichShell;
 import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.scene.shell.TriangleMembrane;
@@ -306,62 +305,6 @@ public final class ShellNetwork {
                 springs.add(u, l, young.youngPa(u, l) * area[l] / len);
             }
         }
-    }
-
-    /**
-     * A shell on its own, one material throughout: node v is vertex v, of mass
-     * {@code rho A_v t / 2} (its share of the prisms' volume), with the model's springs and triangles
-     * (at rest in the current positions, undamped) and, in the material models, its rigid columns.
-     * For the accuracy scenes.
-     */
-    public static Topology standalone(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
-        TriangleMesh mesh = s.mesh();
-        double[] area = SurfaceGeometry.vertexAreas(mesh);
-        Topology t = new Topology();
-        for (int v = 0; v < mesh.vertexCount(); v++) {
-            double mass = m.densityKgPerM3() * area[v] * s.thicknessM() / 2;
-            t.addNode(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2), mass);
-        }
-        Set<Long> pairs = new java.util.HashSet<>();
-        Sink sink = new Sink() {
-            @Override
-            public boolean add(int i, int j, double stiffness) {
-                if (i == j || !pairs.add(key(i, j))) {
-                    return false;
-                }
-                t.addSpring(i, j, stiffness, TwoSurfaces.distance(mesh, i, j), 0);
-                return true;
-            }
-
-            @Override
-            public boolean contains(int i, int j) {
-                return pairs.contains(key(i, j));
-            }
-
-            @Override
-            public void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
-                t.addTriangle(p, q, thicknessM, youngPa, poisson, 0);
-            }
-
-            @Override
-            public void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
-                t.addShear(upper, lower, kappaGPa, thicknessM);
-            }
-        };
-        ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);
-        n.membrane(sink);
-        boolean[] linked = new boolean[mesh.vertexCount()];
-        Set<Long> linkPairs = new java.util.HashSet<>();
-        if (model.rigidColumns()) {
-            for (int[] c : columnPairs(s, v -> true)) {
-                linked[c[0]] = true;
-                linked[c[1]] = true;
-                linkPairs.add(key(c[0], c[1]));
-                t.addRigidLink(t.node(c[0]), t.node(c[1]));
-            }
-        }
-        n.thickness(sink, linkPairs, linked);
-        return t;
     }
 
     /**

@@ -20,7 +20,7 @@ class ShellNetworkTest {
     @EnumSource(TissueModel.class)
     void energyIsInvariantUnderRigidMotionsAndForcesBalance(TissueModel model) {
         TwoSurfaces s = TwoSurfaces.split(DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(5)));
-        Topology t = ShellNetwork.standalone(s, new ShellMaterial(40e3, 0.45, s.thicknessM(), 1060), model, 1);
+        Topology t = StandaloneShell.of(s, new ShellMaterial(40e3, 0.45, s.thicknessM(), 1060), model, 1);
         assertTrue(t.springs().size() + t.triangles().size() + t.shears().size() > 3 * s.mesh().vertexCount(),
                 "a connected network: " + t.springs().size() + " springs, " + t.triangles().size() + " triangles, "
                         + t.shears().size() + " shear elements");
@@ -86,7 +86,7 @@ class ShellNetworkTest {
         for (boolean disc : new boolean[] {false, true}) {
             TriangleMesh flat = disc ? FlatMeshes.disc(6, 0.05) : FlatMeshes.rectangle(pattern, 7, 0.1, 0.05, 3);
             TwoSurfaces s = TwoSurfaces.offset(flat, m.thicknessM());
-            Topology t = ShellNetwork.standalone(s, m, TissueModel.MATERIAL, 1);
+            Topology t = StandaloneShell.of(s, m, TissueModel.MATERIAL, 1);
             assertEquals(flat.triangleCount(), t.shears().size(), "one shear element per upper triangle");
             SystemState st = SystemState.compile(t);
             double area = 0;
@@ -123,7 +123,7 @@ class ShellNetworkTest {
         TriangleMesh face = org.tensim.io.mesh.FlatMeshes.square(l, 6);
         TwoSurfaces s = TwoSurfaces.of(stack(face, face, t, 0.3 * t), upperFlags(face, face));
         ShellMaterial m = new ShellMaterial(40e3, 0.45, t, 1060);
-        Topology top = ShellNetwork.standalone(s, m, TissueModel.MATERIAL, 1);
+        Topology top = StandaloneShell.of(s, m, TissueModel.MATERIAL, 1);
         assertEquals(face.triangleCount(), top.shears().size(), "a shear element on every upper triangle");
         SystemState st = SystemState.compile(top);
         double gamma = 1e-3;
@@ -153,7 +153,7 @@ class ShellNetworkTest {
         TriangleMesh up = org.tensim.io.mesh.FlatMeshes.square(0.01, 8);
         TriangleMesh low = org.tensim.io.mesh.FlatMeshes.square(0.01, 4);
         TwoSurfaces s = TwoSurfaces.of(stack(up, low, t, 0), upperFlags(up, low));
-        Topology top = ShellNetwork.standalone(s, new ShellMaterial(40e3, 0.45, t, 1060), TissueModel.MATERIAL, 1);
+        Topology top = StandaloneShell.of(s, new ShellMaterial(40e3, 0.45, t, 1060), TissueModel.MATERIAL, 1);
         java.util.Set<Long> covered = new java.util.HashSet<>();
         for (var e : top.shears()) {
             for (int k = 0; k < 3; k++) {
