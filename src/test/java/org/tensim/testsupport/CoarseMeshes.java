@@ -7,7 +7,6 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.ObjWriter;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.io.mesh.VertexClustering;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 
@@ -19,16 +18,13 @@ public final class CoarseMeshes {
     /**
      * The shell {@code mesh} (mm) decimated face by face by vertex clustering with cells of {@code cellM}, written
      * as {@code out} (mm). The faces are clustered apart: a single group would fold a 3 mm shell's two faces
-     * into one non-manifold sheet that barely moves.
+     * into one non-manifold sheet that barely moves. The file keeps the coarse mesh only: read back, its free rim is
+     * its own, with the holes the clustering opens ({@link TwoSurfaces#decimated} carries the source's).
      */
     public static Path faceByFace(Path mesh, double cellM, Path out) throws IOException, MeshFormatException {
         TriangleMesh given = MeshLoader.load(mesh, MeshUnits.parse("mm")).mesh();
         TwoSurfaces faces = DiaphragmSetup.surfaces(given, 0.003).surfaces();
-        int[] groups = new int[faces.mesh().vertexCount()];
-        for (int v = 0; v < groups.length; v++) {
-            groups[v] = faces.isUpper(v) ? 1 : 0;
-        }
-        TriangleMesh coarse = VertexClustering.simplify(faces.mesh(), groups, cellM).mesh();
+        TriangleMesh coarse = faces.decimated(cellM).mesh();
         ObjWriter.write(out, coarse, MeshUnits.parse("mm"), java.util.List.of(), 4);
         return out;
     }

@@ -20,7 +20,6 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.io.mesh.VertexClustering;
 import org.tensim.model.Check;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BoundaryConditions;
@@ -46,8 +45,9 @@ import org.tensim.solver.Simulation;
  * the default 43 rings) and the BodyParts3D diaphragm simplified by vertex clustering, faces
  * kept apart, with BodyParts3D's rib boxes (reference: its finest simplification; only when that
  * mesh is present). With a
- * mesh ({@link #runMesh}), that mesh decimated by vertex clustering at the given cell sizes,
- * as given, and refined by midpoint subdivision; the finest is the reference.
+ * mesh ({@link #runMesh}), that mesh decimated by vertex clustering at the given cell sizes
+ * ({@link TwoSurfaces#decimated}: faces apart, the muscle's free rim the given mesh's), as given, and
+ * refined by midpoint subdivision; the finest is the reference.
  */
 public final class ResolutionStudy {
     /** Default relative RMS error under which a resolution is accepted. */
@@ -218,22 +218,13 @@ public final class ResolutionStudy {
         return report(List.of(family), s, out);
     }
 
+    /** The models decimated from {@code split} at each cell size ({@link TwoSurfaces#decimated}), coarse first. */
     private static List<Run> decimated(String name, TwoSurfaces split, double[] cellsMm, Setup s) {
-        TriangleMesh full = split.mesh();
-        int[] groups = new int[full.vertexCount()];
-        for (int v = 0; v < groups.length; v++) {
-            groups[v] = split.isUpper(v) ? 1 : 0;
-        }
         double[] sorted = cellsMm.clone();
         Arrays.sort(sorted);
         List<Run> runs = new ArrayList<>();
         for (int i = sorted.length - 1; i >= 0; i--) { // coarse first
-            VertexClustering.Result r = VertexClustering.simplify(full, groups, sorted[i] * 1e-3);
-            boolean[] up = new boolean[r.groups().length];
-            for (int v = 0; v < up.length; v++) {
-                up[v] = r.groups()[v] == 1;
-            }
-            runs.add(simulate(name, "cells " + sorted[i] + " mm", TwoSurfaces.of(r.mesh(), up), s));
+            runs.add(simulate(name, "cells " + sorted[i] + " mm", split.decimated(sorted[i] * 1e-3), s));
         }
         return runs;
     }

@@ -1,6 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.TriangleMesh;
 
 /**
@@ -43,25 +42,12 @@ final class FibreInsertion {
         return s * s;
     }
 
-    /**
-     * Per vertex: on the shell's free rim, i.e. a corner of a triangle that has corners on both
-     * faces (where a closed two-surface shell turns over), or an end of an edge with one triangle
-     * (an open surface's boundary).
-     */
+    /** Per vertex: on the shell's free rim ({@link TwoSurfaces#ownRim}). */
     static boolean[] rim(TriangleMesh m, TwoSurfaces s) {
-        boolean[] rim = MeshCleaner.boundaryVertices(m);
-        for (int t = 0; t < m.triangleCount(); t++) {
-            int upper = 0;
-            for (int k = 0; k < 3; k++) {
-                upper += s.isUpper(m.corner(t, k)) ? 1 : 0;
-            }
-            if (upper == 1 || upper == 2) {
-                for (int k = 0; k < 3; k++) {
-                    rim[m.corner(t, k)] = true;
-                }
-            }
+        if (m != s.mesh()) {
+            throw new IllegalArgumentException("the rim is sought on the surfaces' own mesh");
         }
-        return rim;
+        return s.ownRim();
     }
 
     /** Per vertex, the straight distance (m) to the nearest vertex of {@code set}; infinite when it is empty. */
@@ -80,6 +66,12 @@ final class FibreInsertion {
                 n++;
             }
         }
+        return distanceTo(m, xs);
+    }
+
+    /** Per vertex, the straight distance (m) to the nearest of the points {@code xs} (m, 3 each); infinite if none. */
+    static double[] distanceTo(TriangleMesh m, double[] xs) {
+        int count = xs.length / 3;
         double[] d = new double[m.vertexCount()];
         for (int v = 0; v < d.length; v++) {
             double best = Double.POSITIVE_INFINITY;
@@ -110,7 +102,7 @@ final class FibreInsertion {
             java.util.Arrays.fill(a, 1);
             return a;
         }
-        double[] rimDistance = distanceTo(m, rim(m, s));
+        double[] rimDistance = distanceTo(m, s.rimPoints());
         for (int v = 0; v < a.length; v++) {
             double d = originDistance == null ? rimDistance[v] : Math.min(originDistance[v], rimDistance[v]);
             a[v] = ramp(d, lengthM);

@@ -3,6 +3,7 @@ package org.tensim.scene.diaphragm;
 import java.util.Arrays;
 import org.tensim.io.mesh.SurfaceDistance;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.io.mesh.VertexClustering;
 import org.tensim.model.Check;
 
 /**
@@ -32,11 +33,18 @@ public final class TwoSurfaces {
     private final int[] partner;
     private final double thicknessM;
     private final int[] upperTriangles;
+    /** The free rim of the mesh these surfaces were simplified from (m, 3 per point), or null: this mesh's own. */
+    private final double[] sourceRim;
 
     private TwoSurfaces(TriangleMesh mesh, boolean[] upper) {
+        this(mesh, upper, nearestOnOtherSide(mesh, upper), null);
+    }
+
+    private TwoSurfaces(TriangleMesh mesh, boolean[] upper, int[] partner, double[] sourceRim) {
         this.mesh = mesh;
         this.upper = upper;
-        this.partner = nearestOnOtherSide(mesh, upper);
+        this.partner = partner;
+        this.sourceRim = sourceRim;
         this.thicknessM = gap(mesh, upper, partner);
         int[] ut = new int[mesh.triangleCount()];
         int n = 0;
@@ -132,6 +140,88 @@ public final class TwoSurfaces {
 
     public TriangleMesh mesh() {
         return mesh;
+    }
+
+    /**
+     * A coarser copy: the mesh simplified by vertex clustering in cubes of {@code cellM}
+     * ({@link VertexClustering}), the two faces clustered apart (one cluster across a 3 mm shell would fold its
+     * faces into one sheet), each vertex keeping its face, and carrying this mesh's free rim ({@link #withRimOf}):
+     * the muscle ends where it ends here, not at the holes and folds the clustering opens.
+     */
+    public TwoSurfaces decimated(double cellM) {
+        int[] groups = new int[mesh.vertexCount()];
+        for (int v = 0; v < groups.length; v++) {
+            groups[v] = upper[v] ? 1 : 0;
+        }
+        VertexClustering.Result r = VertexClustering.simplify(mesh, groups, cellM);
+        boolean[] up = new boolean[r.groups().length];
+        for (int v = 0; v < up.length; v++) {
+            up[v] = r.groups()[v] == 1;
+        }
+        return new TwoSurfaces(r.mesh(), up).withRimOf(this);
+    }
+
+    /**
+     * Per vertex of this mesh: on its free rim, where the sheet of muscle ends. A corner of a triangle that has
+     * corners on both faces (where a closed two-surface shell turns over), or an end of an edge with one triangle
+     * (an open surface's boundary, the boundary of a hole).
+     */
+    public boolean[] ownRim() {
+        boolean[] rim = org.tensim.io.mesh.MeshCleaner.boundaryVertices(mesh);
+        for (int t = 0; t < mesh.triangleCount(); t++) {
+            int up = 0;
+            for (int k = 0; k < 3; k++) {
+                up += upper[mesh.corner(t, k)] ? 1 : 0;
+            }
+            if (up == 1 || up == 2) {
+                for (int k = 0; k < 3; k++) {
+                    rim[mesh.corner(t, k)] = true;
+                }
+            }
+        }
+        return rim;
+    }
+
+    /**
+     * The free rim as points (m, 3 per point): the rim of the mesh these surfaces were simplified from when they
+     * carry it ({@link #withRimOf}), else the vertices of this mesh's own rim ({@link #ownRim}).
+     */
+    public double[] rimPoints() {
+        if (sourceRim != null) {
+            return sourceRim.clone();
+        }
+        boolean[] rim = ownRim();
+        int n = 0;
+        for (boolean b : rim) {
+            n += b ? 1 : 0;
+        }
+        double[] xyz = new double[3 * n];
+        int k = 0;
+        for (int v = 0; v < rim.length; v++) {
+            if (rim[v]) {
+                for (int a = 0; a < 3; a++) {
+                    xyz[3 * k + a] = mesh.coord(v, a);
+                }
+                k++;
+            }
+        }
+        return xyz;
+    }
+
+    /** Whether the rim is a source mesh's ({@link #withRimOf}) rather than this mesh's own. */
+    public boolean carriesSourceRim() {
+        return sourceRim != null;
+    }
+
+    /**
+     * These surfaces carrying the free rim of {@code source}, the finer mesh they were simplified from. Why: a
+     * simplification opens holes and folds where the source has none (vertex clustering of the BodyParts3D
+     * diaphragm at 6 mm cells: 110 boundary loops, 223 non-manifold edges, and faces that meet inside the sheet),
+     * and each would count as a free edge where the fibres end ({@code FibreInsertion}); the muscle's ends are
+     * where the source's are.
+     */
+    public TwoSurfaces withRimOf(TwoSurfaces source) {
+        return new TwoSurfaces(mesh, upper, partner, source.rimPoints());
     }
 
     /** Whether vertex v is on the upper (thoracic) surface. */

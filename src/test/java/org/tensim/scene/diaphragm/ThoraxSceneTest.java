@@ -75,4 +75,16 @@ class ThoraxSceneTest {
                 + " vertices), " + Math.round(fine * 1e6) + " mm^2 (" + refined.mesh().vertexCount() + " vertices)");
         assertEquals(fine, given, 0.05 * fine, "attached area at two resolutions");
     }
+
+    @Test
+    void theAttachedAreaDoesNotGrowWhenTheResolutionStudyDecimates() {
+        // the study's coarsest model in the thorax: 6 mm cells, 40 % of the triangles (docs/thorax.md)
+        TwoSurfaces coarse = full.decimated(0.006);
+        double given = attachedArea(scene(full));
+        double decimated = attachedArea(scene(coarse));
+        System.out.println("attached area: " + Math.round(given * 1e6) + " mm^2 (" + full.mesh().triangleCount()
+                + " triangles), " + Math.round(decimated * 1e6) + " mm^2 decimated at 6 mm ("
+                + coarse.mesh().triangleCount() + " triangles)");
+        assertEquals(given, decimated, 0.05 * given, "attached area, full and decimated");
+    }
 }
