@@ -71,6 +71,12 @@ public final class DiaphragmOptions {
                     + DiaphragmSpec.Cage.DEFAULT_CONTACT_PA_PER_M + ")")
     Double contactPaPerM;
 
+    @Option(names = "--liver-support", paramLabel = "PA_PER_M",
+            description = "with --thorax and contact: stiffness per unit area of the liver's one-sided elastic support"
+                    + " under the right hemidiaphragm, Pa/m; 0 turns it off (default: "
+                    + DiaphragmSpec.Cage.DEFAULT_LIVER_PA_PER_M + ")")
+    Double liverPaPerM;
+
     @Option(names = "--model", paramLabel = "NAME",
             description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
@@ -232,7 +238,8 @@ public final class DiaphragmOptions {
                 ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa);
         DiaphragmSpec.Cage cage = new DiaphragmSpec.Cage(boxes, thorax,
                 contact == null ? base.cage().contact() : contact,
-                contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM);
+                contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
+                liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM);
         return new DiaphragmSpec(m, p, b, br, cage, actionLines,
                 tendonRule == null ? TendonRule.PLANE : tendonRule);
     }

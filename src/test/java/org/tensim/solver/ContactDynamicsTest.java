@@ -201,4 +201,52 @@ class ContactDynamicsTest {
         assertEquals(u, s.v[1], 0.02 * u, integrator + ": at the floor's speed");
         assertTrue(deepest <= p + u / w, integrator + ": deepest " + deepest + " m");
     }
+
+    /**
+     * A compliant foundation (the liver's support): a square plate of 3 x 3 nodes resting 5 mm above the plane
+     * y = 0, each node's pair of stiffness K_f A_i with the gap at its rest distance (in contact from rest, one-sided),
+     * pressed by a total load F shared by area. Damped, the plate sinks by F / (K_f A) from rest, not to the plane,
+     * and the plane holds F; a load that lifts it meets no pull.
+     */
+    @ParameterizedTest
+    @MethodSource("allIntegrators")
+    void aPlateOnACompliantFoundationSinksByLoadOverStiffness(String integrator) {
+        double kf = 5e4; // Pa/m
+        double side = 0.1; // m, plate 10 cm square
+        double rest = 0.005; // m above the plane
+        double[] share = {0.25, 0.5, 0.25}; // each node's share of a side (the trapezoid rule)
+        Topology t = new Topology();
+        int b = t.addContactBody(ContactShapes.body("liver", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED));
+        double load = 5; // N over 0.01 m^2: 500 Pa
+        int id = 0;
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                double area = share[i] * share[j] * side * side; // sums to side^2
+                t.addNode(new Vec3(0.05 * i, rest, 0.05 * j), M);
+                t.addContact(id, b, kf * area, rest);
+                t.applyForce(t.node(id), ForceLaw.constant(new Vec3(0, -load * area / (side * side), 0)));
+                id++;
+            }
+        }
+        t.setViscousDamping(1.4 * Math.sqrt(kf * side * side / 16 * M)); // damping ratio 0.7 for the corner nodes
+        Simulation sim = simulation(t, integrator);
+        sim.runUntil(1, step(sim, 1e-3));
+        SystemState s = sim.state();
+        double sink = load / (kf * side * side); // 10 mm
+        for (int n = 0; n < 9; n++) {
+            assertEquals(rest - sink, s.x[3 * n + 1], 1e-4 * sink, integrator + ": node " + n + " sinks by F / (K A)");
+        }
+        assertArrayEquals(new double[] {0, load, 0}, s.contacts.totalForceN(sim.time(), s.x), 1e-4 * load,
+                integrator + ": the foundation holds the load");
+        assertEquals(sink - rest, s.contacts.maxPenetrationM(sim.time(), s.x), 1e-4 * sink,
+                integrator + ": below the plane by the sink less the rest gap");
+        // Lift it: the foundation lets go (one-sided), the plate leaves at the load's acceleration.
+        for (int n = 0; n < 9; n++) {
+            t.applyForce(t.node(n), ForceLaw.constant(new Vec3(0, 2 * load, 0)));
+        }
+        Simulation up = simulation(t, integrator);
+        up.runUntil(0.05, step(up, 1e-3));
+        assertEquals(0, up.state().contacts.activeCount(up.time(), up.state().x), integrator + ": no pull");
+        assertTrue(up.state().x[1] > rest, integrator + ": the plate rises above its rest height");
+    }
 }

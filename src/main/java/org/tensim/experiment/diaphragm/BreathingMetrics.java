@@ -58,6 +58,10 @@ public final class BreathingMetrics implements StepListener {
     private double maxContactArea;
     private double maxPenetration;
     private double maxPastGap;
+    /** Per contact pair, whether its body is a bone (the penetration and contact figures); false for the liver. */
+    private final boolean[] bonePair;
+    /** Deepest a node pressed into the liver's support below its rest distance over the run, m. */
+    private double maxSupportDeflection;
     private int worstPair = -1;
     private double worstPairT;
 
@@ -82,6 +86,10 @@ public final class BreathingMetrics implements StepListener {
         this.site = org.tensim.scene.diaphragm.MeasuringSites.domeTopSites(scene, DOME_RADIUS_M);
         this.cartilageMarkers = org.tensim.scene.diaphragm.MeasuringSites.cartilageMarkerNodes(scene);
         this.distances = new double[scene.topology().contacts().size()];
+        this.bonePair = new boolean[distances.length];
+        for (int e = 0; e < bonePair.length; e++) {
+            bonePair[e] = scene.isBoneContact(scene.topology().contacts().get(e).body());
+        }
         this.contactNodes = new boolean[nodes];
         this.nodeArea = scene.nodeAreasM2();
     }
@@ -177,6 +185,10 @@ public final class BreathingMetrics implements StepListener {
         c.distances(t, s.x, distances);
         double area = 0;
         for (int e = 0; e < distances.length; e++) {
+            if (!bonePair[e]) {
+                maxSupportDeflection = Math.max(maxSupportDeflection, c.gap(e) - distances[e]);
+                continue;
+            }
             double past = c.gap(e) - distances[e];
             if (past > maxPastGap) {
                 maxPastGap = past;
@@ -319,6 +331,12 @@ public final class BreathingMetrics implements StepListener {
             f.put("max_contact_area_mm2", 1e6 * maxContactArea);
             f.put("max_bone_penetration_mm", 1e3 * maxPenetration);
             f.put("max_penetration_past_rest_mm", 1e3 * maxPastGap);
+            for (boolean bone : bonePair) {
+                if (!bone) {
+                    f.put("max_liver_deflection_mm", 1e3 * maxSupportDeflection);
+                    break;
+                }
+            }
         }
         return f;
     }

@@ -259,6 +259,23 @@ public final class DiaphragmScene {
                 ? org.tensim.io.mesh.VertexLabel.ORIGIN_STERNAL : org.tensim.io.mesh.VertexLabel.ORIGIN_COSTAL;
     }
 
+    /**
+     * Whether contact body {@code body} ({@link Topology#contactBodies()}) is a bone, which the diaphragm must not
+     * enter, rather than the liver's compliant support, which it presses in by design.
+     */
+    public boolean isBoneContact(int body) {
+        if (bones == null) {
+            return true;
+        }
+        String name = parts.topology().contactBodies().get(body).name();
+        for (Bones.Bone b : bones.all()) {
+            if (b.name().equals(name)) {
+                return b.kind() != Bones.Kind.LIVER;
+            }
+        }
+        return true;
+    }
+
     /** The thorax's bones, or null for a cage made from boxes. */
     public Bones bones() {
         return bones;

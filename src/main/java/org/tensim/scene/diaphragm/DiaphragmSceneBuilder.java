@@ -313,7 +313,8 @@ final class DiaphragmSceneBuilder {
     /** Sliding contact on the bones' surfaces where the diaphragm is not attached (a thorax, contact on). */
     private void contact() {
         if (bones != null && spec.cage().contact()) {
-            contactPairs = BoneContact.add(this, bones, boneMotions, spec.cage().contactStiffnessPaPerM());
+            contactPairs = BoneContact.add(this, bones, boneMotions, spec.cage().contactStiffnessPaPerM(),
+                    spec.cage().liverSupportPaPerM());
         }
     }
 

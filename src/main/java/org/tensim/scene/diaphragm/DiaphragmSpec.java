@@ -151,8 +151,11 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
      * @param contact              whether the muscle slides on the bones' surfaces (frictionless, one-sided) where
      *                             it is not attached; needs bone surfaces
      * @param contactStiffnessPaPerM penalty stiffness of the contact per unit area of diaphragm, Pa/m
+     * @param liverSupportPaPerM   stiffness per unit area of the liver's compliant support under the right
+     *                             hemidiaphragm, Pa/m (a thorax with a liver, contact on); 0 turns it off
      */
-    public record Cage(Path boxes, Path thorax, boolean contact, double contactStiffnessPaPerM) {
+    public record Cage(Path boxes, Path thorax, boolean contact, double contactStiffnessPaPerM,
+            double liverSupportPaPerM) {
         /**
          * Default contact stiffness, Pa/m: twice the attachment band's. A penalty's penetration is the local
          * pressure over it; at the band's 2.5e7 the BodyParts3D diaphragm went 0.78 mm past its start into rib 11
@@ -161,33 +164,49 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
          */
         public static final double DEFAULT_CONTACT_PA_PER_M = 5e7;
 
+        /**
+         * Default stiffness per unit area of the liver's support under the right hemidiaphragm (a thorax with a
+         * liver, contact on), Pa/m: the liver as an elastic layer pressed along its height, a Winkler foundation of
+         * modulus {@code E / h}, with E = 5.5 kPa (the healthy liver's Young's modulus by transient elastography:
+         * 5.49 +/- 1.59 kPa in 429 subjects, Roulot et al., J Hepatol 48:606, 2008) over h = 0.158 m (the shared
+         * thorax's liver from its top under the dome to its lowest point): 3.5e4 Pa/m, on top of the abdominal
+         * support's 5e4 under every free node (docs/thorax.md).
+         */
+        public static final double DEFAULT_LIVER_PA_PER_M = 3.5e4;
+
         public Cage {
             if (boxes != null && thorax != null) {
                 throw new IllegalArgumentException("give rib boxes (--boxes " + boxes + ") or a thorax (--thorax "
                         + thorax + "), not both");
             }
             Check.positive("contact stiffness", "Pa/m", contactStiffnessPaPerM);
+            Check.nonNegative("liver support stiffness", "Pa/m", liverSupportPaPerM);
         }
 
         /** The project's parametric cage, contact on wherever there are bone surfaces. */
         public static Cage defaults() {
-            return new Cage(null, null, true, DEFAULT_CONTACT_PA_PER_M);
+            return new Cage(null, null, true, DEFAULT_CONTACT_PA_PER_M, DEFAULT_LIVER_PA_PER_M);
         }
 
         public Cage withBoxes(Path b) {
-            return new Cage(b, thorax, contact, contactStiffnessPaPerM);
+            return new Cage(b, thorax, contact, contactStiffnessPaPerM, liverSupportPaPerM);
         }
 
         public Cage withThorax(Path dir) {
-            return new Cage(boxes, dir, contact, contactStiffnessPaPerM);
+            return new Cage(boxes, dir, contact, contactStiffnessPaPerM, liverSupportPaPerM);
         }
 
         public Cage withContact(boolean on) {
-            return new Cage(boxes, thorax, on, contactStiffnessPaPerM);
+            return new Cage(boxes, thorax, on, contactStiffnessPaPerM, liverSupportPaPerM);
         }
 
         public Cage withContactStiffness(double paPerM) {
-            return new Cage(boxes, thorax, contact, paPerM);
+            return new Cage(boxes, thorax, contact, paPerM, liverSupportPaPerM);
+        }
+
+        /** The liver's support stiffness per unit area, Pa/m; 0 turns it off. */
+        public Cage withLiverSupport(double paPerM) {
+            return new Cage(boxes, thorax, contact, contactStiffnessPaPerM, paPerM);
         }
 
         /** Which cage, for summaries. */

@@ -14,17 +14,20 @@ import org.tensim.model.Vec3;
  * builder): each rib rigid and moved by its own finite-helical-axis law, the sternum following the
  * ribs, the costal cartilage a very stiff mass-spring between them (the paper), the vertebrae fixed.
  *
- * <p><b>Each rib's axis from its own geometry.</b> A rib turns about the axis of its neck, through
- * the costovertebral joint (its head, on the vertebral bodies) and the costotransverse joint (its
- * tubercle, on the transverse process) (De Troyer, Kirkwood and Wilson, Physiol Rev 85:717-756, 2005).
- * On the surface: the head is the rib's most medial vertex, the tubercle its most posterior vertex;
- * the axis runs from the head to the tubercle. The upper ribs' necks point mostly laterally (a pump
- * handle: the anterior end rises and moves forwards), the lower ribs' backwards and laterally (a
- * bucket handle: the lateral part rises and moves outwards). The rotation per quiet breath is that of
- * the parametric cage: Wilson et al. (J Appl Physiol 1987) measured from relaxed expiration to full
- * inspiration a pump-handle rotation of 11 degrees at rib 3 falling to 7 at rib 7 and a bucket-handle
- * rotation of 13 falling to 10; the rib turns by their quadratic sum ({@link RibCage#wilsonDegrees})
- * times the quiet-breathing fraction, in the sense that raises its far end.
+ * <p><b>Each rib's rotation.</b> Wilson et al. (J Appl Physiol 62:1872, 1987) measured by CT from relaxed
+ * expiration (FRC) to full inspiration (TLC) that each rib's plane turns about an axis through the spine, with a
+ * pump-handle component (about the mediolateral axis) of 11 degrees at rib 3 falling to 7 at rib 7 and a
+ * bucket-handle component (about the antero-posterior axis) of 13 falling to 10 ({@link RibCage#wilsonDegrees}).
+ * Here each rib turns through its head (the vertex nearest the midline) by the two components added as rotation
+ * vectors, each times {@link #TIDAL_FRACTION} (a tidal breath's share), signed to raise the rib: the pump handle
+ * about the mediolateral axis raises the anterior end and carries it forwards (the ribs slope down to the front);
+ * the bucket handle of a true rib (1-7) turns about the chord from its head to its anterior end, the rib's two
+ * fixed points in the classic description (De Troyer, Kirkwood and Wilson, Physiol Rev 85:717, 2005), so that it
+ * lifts and everts the rib's lateral part without pulling the anterior end sideways away from the sternum (a
+ * rotation of a true rib about an oblique axis through its head, such as its neck, would move the costochondral
+ * junction some 6 mm laterally per breath and stretch the nearly inextensible cartilage, whose chain then
+ * straightens and rises instead of following the rib); that of a false or floating rib (8-12), whose end is free,
+ * about the antero-posterior axis, widening the costal margin.
  *
  * <p><b>Sternum.</b> It follows the ribs: it is carried by the mean displacement of the anterior ends
  * of the true ribs 1-7 (a translation; the sternum's own small rotation is left out).
@@ -65,7 +68,7 @@ final class ThoraxCage {
         List<Vec3> trueRibEnds = new ArrayList<>();
         List<HelicalAxisMotion> trueRibMotions = new ArrayList<>();
         for (Bones.Bone b : bones.of(Bones.Kind.RIB)) {
-            HelicalAxisMotion m = neckAxisMotion(b, centre[0], p, cycle, controls);
+            HelicalAxisMotion m = ribMotion(b, centre[0], p, cycle, controls);
             motions[bones.indexOf(b)] = m;
             ribMotions.put(b.name(), m);
             int[] nodes = polyline(t, b.mesh(), centre, RIB_NODES, p.structureNodeMassKg());
@@ -77,7 +80,7 @@ final class ThoraxCage {
                 }
             }
             ribPolylines.put(key(b.side(), b.index()), nodes);
-            if (b.index() <= 7) {
+            if (b.index() <= TRUE_RIBS) {
                 trueRibEnds.add(t.node(nodes[nodes.length - 1]).position());
                 trueRibMotions.add(m);
             }
@@ -124,14 +127,18 @@ final class ThoraxCage {
             }
             int medial = chain[chain.length - 1];
             int[] above = chains.get(key(b.side(), b.index() - 1));
-            if (b.index() <= 7 && sternum.length > 0) {
+            int[] held = null; // the nodes the cartilage's medial end joins
+            if (b.index() <= TRUE_RIBS && sternum.length > 0) {
                 t.node(medial).drive(sternumMotion);
+                held = sternum;
             } else if (above != null) {
                 int[] two = RibCage.nearestTwo(t, above, t.node(medial).position());
                 for (int s : two) {
                     springs.add(medial, s, p.structureStiffness());
                 }
+                held = above;
             }
+            brace(t, springs, chain, rib, held, p.structureStiffness());
             chains.put(key(b.side(), b.index()), chain);
         }
         for (Bones.Bone b : bones.all()) {
@@ -145,15 +152,52 @@ final class ThoraxCage {
     }
 
     /**
-     * A rib's rotation about its neck (head to tubercle; class comment), signed to raise its far end,
-     * through its head, plus the small translation along the axis of the parametric cage.
+     * Braces a cartilage chain's free nodes to the bones it joins: each to the last two nodes of its rib's polyline
+     * and to the two nearest nodes of what its medial end joins (the sternum's line, or the cartilage above), by
+     * springs of the chain's stiffness. A chain of springs to the next and next-but-one node alone is a mechanism (3
+     * free nodes, 9 degrees of freedom, 7 springs): its middle nodes' place is not set by its ends, and the least
+     * mismatch between the rib's end and the sternum moves them by more than the mismatch (they rose 15 mm where
+     * their ends rose 10). Braced, each free node is held by at least four non-collinear points.
      */
-    static HelicalAxisMotion neckAxisMotion(Bones.Bone rib, double midX, DiaphragmParameters p, BreathingCycle cycle,
+    private static void brace(Topology t, SpringList springs, int[] chain, int[] rib, int[] held, double k) {
+        for (int c : chain) {
+            if (t.node(c).isDriven()) {
+                continue;
+            }
+            if (rib != null && rib.length >= 2) {
+                springs.add(c, rib[rib.length - 1], k);
+                springs.add(c, rib[rib.length - 2], k);
+            }
+            // (The medial end of a false rib's cartilage is tied to the cartilage above already.)
+            if (held != null && held.length >= 2 && c != chain[chain.length - 1]) {
+                for (int s : RibCage.nearestTwo(t, held, t.node(c).position())) {
+                    springs.add(c, s, k);
+                }
+            }
+        }
+    }
+
+    /**
+     * Share of Wilson et al.'s FRC-to-TLC rotations a tidal breath takes: the tidal volume (about 0.5 L) over the
+     * inspiratory capacity (about 3 L), the rib cage's displacement being nearly linear in its volume. The
+     * parametric cage keeps its own {@code ribQuietFraction} (0.3); {@code --rib-amplitude} scales both.
+     */
+    static final double TIDAL_FRACTION = 0.17;
+    /** Ribs 1-7 reach the sternum through their own cartilage. */
+    static final int TRUE_RIBS = 7;
+
+    /**
+     * A rib's rotation per tidal breath (class comment): through its head, Wilson et al.'s pump-handle component
+     * about the mediolateral axis and bucket-handle component about the chord from the head to the rib's anterior
+     * end (the costochondral junction; for ribs 8-12 the antero-posterior axis), each times
+     * {@link #TIDAL_FRACTION}, signed to raise the anterior end and the rib's lateral part (the two components add
+     * as rotation vectors); plus the parametric cage's small translation along the axis.
+     */
+    static HelicalAxisMotion ribMotion(Bones.Bone rib, double midX, DiaphragmParameters p, BreathingCycle cycle,
             DiaphragmControls controls) {
         TriangleMesh m = rib.mesh();
         // midX: the body's midline (x, m); the rib's head is the vertex nearest it.
         int head = -1;
-        int tubercle = -1;
         double bestMedial = Double.POSITIVE_INFINITY;
         for (int v = 0; v < m.vertexCount(); v++) {
             double medial = Math.abs(m.coord(v, 0) - midX);
@@ -163,37 +207,58 @@ final class ThoraxCage {
             }
         }
         Vec3 h = vertex(m, head);
-        // Tubercle: the most posterior vertex (+Y posterior) within the rib's posterior fifth along x from the head.
-        double width = m.bounds()[3] - m.bounds()[0];
-        double bestY = Double.NEGATIVE_INFINITY;
-        int far = head;
-        double farD = 0;
+        Vec3 end = anteriorEnd(m, h);
+        Vec3 chord = end.minus(h);
+        if (!(chord.norm() > 1e-3)) {
+            throw new IllegalArgumentException("rib " + rib.name() + ": its head and anterior end coincide (" + h
+                    + "); cannot place its axes");
+        }
+        int lateral = head;
         for (int v = 0; v < m.vertexCount(); v++) {
-            double lateral = Math.abs(m.coord(v, 0) - h.x());
-            if (lateral < 0.4 * width && m.coord(v, 1) > bestY) {
-                bestY = m.coord(v, 1);
-                tubercle = v;
-            }
-            double d = vertex(m, v).distance(h);
-            if (d > farD) {
-                farD = d;
-                far = v;
+            if (Math.abs(m.coord(v, 0) - midX) > Math.abs(m.coord(lateral, 0) - midX)) {
+                lateral = v;
             }
         }
-        Vec3 axis = vertex(m, tubercle).minus(h);
-        if (!(axis.norm() > 1e-3)) {
-            throw new IllegalArgumentException("rib " + rib.name() + ": its head and tubercle coincide ("
-                    + h + "); cannot place its neck axis");
-        }
-        Vec3 r = vertex(m, far).minus(h);
-        Vec3 n = axis.normalized();
-        // d(far)/d(theta) = n x r must rise.
-        if (n.x() * r.y() - n.y() * r.x() < 0) {
-            n = n.times(-1);
-        }
+        Vec3 pump = raising(new Vec3(1, 0, 0), chord);
+        // A true rib's anterior end is held by the sternum: its bucket handle turns about the chord. A false or
+        // floating rib's end is free, and its plane tilts about the antero-posterior axis, as Wilson et al. measured.
+        Vec3 bucket = raising(rib.index() <= TRUE_RIBS ? chord.normalized() : new Vec3(0, 1, 0),
+                vertex(m, lateral).minus(h));
         double[] deg = RibCage.wilsonDegrees(rib.index());
-        double angle = Math.toRadians(Math.hypot(deg[0], deg[1])) * p.ribQuietFraction();
-        return new HelicalAxisMotion(n, h, angle, p.ribTranslationM(), cycle, controls);
+        double ap = Math.toRadians(deg[0]) * TIDAL_FRACTION;
+        double ab = Math.toRadians(deg[1]) * TIDAL_FRACTION;
+        Vec3 axis = pump.times(ap).plus(bucket.times(ab));
+        return new HelicalAxisMotion(axis, h, axis.norm(), p.ribTranslationM(), cycle, controls);
+    }
+
+    /** The axis, or its opposite, about which a small positive rotation raises the point at r (from the axis). */
+    static Vec3 raising(Vec3 axis, Vec3 r) {
+        return axis.x() * r.y() - axis.y() * r.x() < 0 ? axis.times(-1) : axis;
+    }
+
+    /**
+     * The rib's anterior end: the centroid of its vertices farther than 0.9 times the farthest one's distance from
+     * the head along the horizontal direction of the farthest vertex (its tip, where the cartilage begins).
+     */
+    static Vec3 anteriorEnd(TriangleMesh m, Vec3 head) {
+        double far = 0;
+        int tip = 0;
+        for (int v = 0; v < m.vertexCount(); v++) {
+            double d = vertex(m, v).distance(head);
+            if (d > far) {
+                far = d;
+                tip = v;
+            }
+        }
+        Vec3 sum = Vec3.ZERO;
+        int n = 0;
+        for (int v = 0; v < m.vertexCount(); v++) {
+            if (vertex(m, v).distance(head) >= 0.9 * far && vertex(m, v).distance(vertex(m, tip)) < 0.5 * far) {
+                sum = sum.plus(vertex(m, v));
+                n++;
+            }
+        }
+        return sum.times(1.0 / n);
     }
 
     private static Vec3 vertex(TriangleMesh m, int v) {

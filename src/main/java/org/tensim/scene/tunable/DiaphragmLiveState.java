@@ -33,6 +33,8 @@ public final class DiaphragmLiveState implements LiveState {
     private final double[] restMarker = new double[3];
     private final double[] nodeArea;
     private final double[] distances;
+    /** Per contact pair, whether its body is a bone (not the liver's support). */
+    private final boolean[] bonePair;
     private final List<Readout> readouts = new ArrayList<>();
     private final List<Legend> legend = new ArrayList<>();
     private final int right;
@@ -67,6 +69,10 @@ public final class DiaphragmLiveState implements LiveState {
         this.tendonPercent = 100 * scene.tendonAreaFraction();
         boolean contact = !scene.topology().contacts().isEmpty();
         this.distances = new double[scene.topology().contacts().size()];
+        this.bonePair = new boolean[distances.length];
+        for (int e = 0; e < bonePair.length; e++) {
+            bonePair[e] = scene.isBoneContact(scene.topology().contacts().get(e).body());
+        }
         right = add("Right dome descent", "mm", "right_dome_descent_mm");
         left = add("Left dome descent", "mm", "left_dome_descent_mm");
         cranial = markers.length > 0 ? add("Cartilage 3-5 cranial", "mm", "cartilage_marker_cranial_mm") : -1;
@@ -151,6 +157,9 @@ public final class DiaphragmLiveState implements LiveState {
             double area = 0;
             double deepestNow = 0;
             for (int e = 0; e < distances.length; e++) {
+                if (!bonePair[e]) {
+                    continue; // the liver's support: pressed in by design, no bone
+                }
                 deepestNow = Math.max(deepestNow, -distances[e]);
                 int v = c.node(e);
                 if (c.gap(e) - distances[e] > 0 && v < marks.length && marks[v] != IN_CONTACT) {

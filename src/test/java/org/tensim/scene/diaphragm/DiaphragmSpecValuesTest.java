@@ -37,6 +37,10 @@ class DiaphragmSpecValuesTest {
         assertEquals(1e8, c.withContactStiffness(1e8).contactStiffnessPaPerM());
         assertEquals(c.contact(), c.withContactStiffness(1e8).contact());
         refused("0", () -> c.withContactStiffness(0));
+        assertEquals(2e4, c.withLiverSupport(2e4).liverSupportPaPerM());
+        assertEquals(c.contactStiffnessPaPerM(), c.withLiverSupport(2e4).contactStiffnessPaPerM());
+        assertEquals(0, c.withLiverSupport(0).liverSupportPaPerM()); // off
+        refused("-1", () -> c.withLiverSupport(-1));
         refused("--thorax", () -> c.withBoxes(java.nio.file.Path.of("b.json")).withThorax(java.nio.file.Path.of("t")));
     }
 }

@@ -13,6 +13,7 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
+import org.tensim.model.Vec3;
 
 /**
  * The BodyParts3D diaphragm in the shared thorax of bone surfaces: attached at its origins only, the
@@ -62,6 +63,50 @@ class ThoraxSceneTest {
             assertTrue(!s.isAttached(c.node()) && !n.isDriven() && !n.isFixed(), "node " + c.node()
                     + " is attached and in contact");
         }
+    }
+
+    /**
+     * The liver is the compliant support under the right dome, not a bone: its pairs hold free lower-surface nodes
+     * only, each at its rest distance (resting on it at end-expiration) with the liver's stiffness per unit area
+     * times the node's area (K A_i / 2), and they lie mostly under the right half; the penetration figures leave it
+     * out.
+     */
+    @Test
+    void theLiverSupportsTheRightDomesLowerSurfaceFromRest() {
+        DiaphragmScene s = scene(full);
+        double k = DiaphragmSpec.Cage.DEFAULT_LIVER_PA_PER_M;
+        double[] area = s.nodeAreasM2();
+        double[] b = full.mesh().bounds();
+        double midX = 0.5 * (b[0] + b[3]);
+        int liver = 0;
+        int right = 0;
+        double[] g = new double[3];
+        for (org.tensim.model.ContactPair c : s.topology().contacts()) {
+            org.tensim.model.ContactBody body = s.topology().contactBodies().get(c.body());
+            boolean isLiver = body.name().startsWith("liver");
+            assertEquals(!isLiver, s.isBoneContact(c.body()), body.name());
+            if (!isLiver) {
+                continue;
+            }
+            liver++;
+            int v = c.node();
+            assertTrue(!full.isUpper(v), "node " + v + " of the upper surface rests on the liver");
+            Vec3 x = s.topology().node(v).position();
+            assertEquals(body.surface().distance(x.x(), x.y(), x.z(), g, 0), c.gapM(), 1e-12,
+                    "node " + v + " rests on the liver at its rest distance");
+            assertTrue(c.gapM() < BoneContact.LIVER_RANGE_M);
+            assertEquals(k * area[v], c.stiffnessNPerM(), 1e-9 * c.stiffnessNPerM(), "K A_i / 2 at node " + v);
+            if (x.x() < midX) {
+                right++;
+            }
+        }
+        assertTrue(liver > 100, "the liver supports " + liver + " nodes");
+        // Mostly under the right dome (1,219 of 1,900 nodes); the left lobe reaches under the left dome's medial part.
+        assertTrue(right > 0.6 * liver, right + " of the " + liver + " nodes on the liver lie on the right");
+        DiaphragmSpec off = DiaphragmSpec.defaults().withCage(DiaphragmSpec.Cage.defaults().withThorax(THORAX)
+                .withLiverSupport(0));
+        DiaphragmScene none = DiaphragmScene.build(full, off, Map.of(), bones, null, off.newControls());
+        assertEquals(s.topology().contacts().size() - liver, none.topology().contacts().size(), "0 turns it off");
     }
 
     @Test

@@ -81,10 +81,10 @@ class ThoraxLiveStateTest {
         for (int e = 0; e < c.count(); e++) {
             assertTrue(d[e] >= c.gap(e) - 1e-12, "at rest no pair is in contact (pair " + e + ")");
         }
-        // Push three pairs' nodes into their bones.
+        // Push three pairs' nodes into their bones (the liver's support is no bone: the readouts leave it out).
         TreeSet<Integer> pushed = new TreeSet<>();
         for (int e = 0; e < c.count() && pushed.size() < 3; e += c.count() / 7) {
-            if (pushed.add(c.node(e))) {
+            if (s.isBoneContact(c.body(e)) && pushed.add(c.node(e))) {
                 pushIn(s, sim, e, d);
             }
         }
@@ -92,6 +92,9 @@ class ThoraxLiveStateTest {
         double deepest = 0;
         c.distances(0, sim.state().x, d);
         for (int e = 0; e < c.count(); e++) {
+            if (!s.isBoneContact(c.body(e))) {
+                continue;
+            }
             if (c.gap(e) - d[e] > 0) {
                 touching.add(c.node(e));
             }
