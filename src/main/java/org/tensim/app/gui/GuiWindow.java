@@ -7,19 +7,16 @@ import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
-import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
-import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JPopupMenu;
 import javax.swing.JScrollPane;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.ToolTipManager;
-import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.scene.tunable.FrameBuffer;
 import org.tensim.scene.tunable.ProbeRecorder;
 import org.tensim.scene.tunable.DiaphragmViewScene;
@@ -29,7 +26,6 @@ import org.tensim.scene.tunable.ViewScene;
 import org.tensim.solver.SimulationDivergedException;
 import org.tensim.tuning.ConfigDir;
 import org.tensim.tuning.PresetFile;
-import org.tensim.tuning.Settings;
 import org.tensim.tuning.SimulationRunner;
 import org.tensim.tuning.Tuning;
 import org.tensim.view.SceneView;
@@ -54,7 +50,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private JMenuItem saveLabels;
     private final BrushPanel brush;
     private final LabelTools labels;
-    private final java.util.Map<Integer, javax.swing.JRadioButtonMenuItem> capItems = new java.util.HashMap<>();
+    private final PresetActions presets;
+    private FrameCapMenu frameCaps;
     private final SimulationRunner runner;
     private final Timer uiTimer;
     private final Timer saveTimer;
@@ -96,6 +93,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         controls = new ControlPanel(tuning, this, first.defaultProbeAxis(), msg -> status.message(msg, true));
         runner = new SimulationRunner(factory, tuning::snapshot, this, threads);
         labels = new LabelTools(frame, status, runner, factory, configDir, () -> scene);
+        presets = new PresetActions(frame, status, tuning);
         tuning.bind(runner);
 
         JPanel centre = new JPanel(new BorderLayout());
@@ -156,29 +154,14 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         file.addSeparator();
         file.add(item("Quit", this::close));
         bar.add(file);
-        JMenu drawing = new JMenu("View");
-        javax.swing.ButtonGroup caps = new javax.swing.ButtonGroup();
-        for (int fps : new int[] {15, 30, 60, 0}) {
-            javax.swing.JRadioButtonMenuItem i = new javax.swing.JRadioButtonMenuItem(fps == 0 ? "No frame cap"
-                    : "At most " + fps + " frames/s", fps == view.frameCap());
-            i.setName("fps." + fps);
-            i.addActionListener(e -> setFrameCap(fps));
-            capItems.put(fps, i);
-            caps.add(i);
-            drawing.add(i);
-        }
-        bar.add(drawing);
+        frameCaps = new FrameCapMenu(view, status);
+        bar.add(frameCaps);
         return bar;
     }
 
     /** Draws at most fps frames per second (0: no cap), leaving the rest of the renderer's core to the simulation. */
     void setFrameCap(int fps) {
-        view.setFrameCap(fps);
-        if (capItems.containsKey(fps)) {
-            capItems.get(fps).setSelected(true);
-        }
-        status.message(fps == 0 ? "Frames drawn as fast as the display allows" : "Frames drawn at most " + fps
-                + " per second", false);
+        frameCaps.select(fps);
     }
 
     private static JMenuItem item(String text, Runnable r) {
@@ -277,56 +260,22 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
 
     @Override
     public void loadPreset() {
-        JFileChooser c = chooser();
-        if (c.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
-            loadPreset(c.getSelectedFile().toPath());
-        }
+        presets.loadDialog();
     }
 
     /** Loads a preset; a malformed one is refused with its reason and nothing changes. */
     boolean loadPreset(Path file) {
-        try {
-            Settings s = PresetFile.read(file, tuning);
-            tuning.apply(s, file.toString());
-            status.message("Loaded preset " + file, false);
-            return true;
-        } catch (PresetFile.PresetException | IllegalArgumentException e) {
-            status.message("Preset refused: " + e.getMessage(), true);
-            if (frame.isShowing() && !GuiCommand.scripted()) {
-                JOptionPane.showMessageDialog(frame, e.getMessage(), "Preset refused", JOptionPane.ERROR_MESSAGE);
-            }
-            return false;
-        }
+        return presets.load(file);
     }
 
     @Override
     public void savePreset() {
-        JFileChooser c = chooser();
-        if (c.showSaveDialog(frame) == JFileChooser.APPROVE_OPTION) {
-            Path p = c.getSelectedFile().toPath();
-            if (!p.getFileName().toString().endsWith(".json")) {
-                p = p.resolveSibling(p.getFileName() + ".json");
-            }
-            savePreset(p);
-        }
+        presets.saveDialog();
     }
 
     /** Saves the current parameters atomically. */
     boolean savePreset(Path file) {
-        try {
-            PresetFile.write(file, tuning.snapshot());
-            status.message("Saved preset " + file, false);
-            return true;
-        } catch (IOException e) {
-            status.message("Cannot save preset " + file + ": " + e.getMessage(), true);
-            return false;
-        }
-    }
-
-    private static JFileChooser chooser() {
-        JFileChooser c = new JFileChooser();
-        c.setFileFilter(new FileNameExtensionFilter("tensim presets (*.json)", "json"));
-        return c;
+        return presets.save(file);
     }
 
     /** Captures the whole window as it is on screen into a PNG file (written, then renamed). */

@@ -1,9 +1,7 @@
 package org.tensim.scene.diaphragm;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
@@ -207,56 +205,15 @@ public final class DiaphragmScene {
     }
 
     /**
-     * The labels of the mesh's vertices as this scene has them, for a label file ({@code VertexLabelsFile}): tendon
-     * or muscle as built (by the rule and its share or plane, or a label file); the origins of the label file the
-     * scene was built from, or else its attached nodes, each named by its nearest origin bone (a vertebra: lumbar;
-     * the sternum or xiphoid: sternal; a rib or cartilage, or a cage without bone surfaces: costal). Read back, a
-     * file's origins are widened by the insertion's width as any label file's are.
+     * The labels of the mesh's vertices as this scene has them, for a label file ({@link SceneVertexLabels#of}).
      */
     public org.tensim.io.mesh.VertexLabel[] currentVertexLabels() {
-        int n = diaphragmNodes();
-        org.tensim.io.mesh.VertexLabel[] out = new org.tensim.io.mesh.VertexLabel[n];
-        double[] g = new double[3];
-        for (int v = 0; v < n; v++) {
-            org.tensim.io.mesh.VertexLabel l = labels[v] == TENDON ? org.tensim.io.mesh.VertexLabel.TENDON
-                    : org.tensim.io.mesh.VertexLabel.MUSCLE;
-            if (vertexLabels != null) {
-                if (vertexLabels[v].isOrigin()) {
-                    l = vertexLabels[v];
-                }
-            } else if (attached[v]) {
-                l = originNear(v, g);
-            }
-            out[v] = l;
-        }
-        return out;
+        return SceneVertexLabels.of(this);
     }
 
-    /** The origin label of attached node v by its nearest origin bone. */
-    private org.tensim.io.mesh.VertexLabel originNear(int v, double[] g) {
-        if (bones == null) {
-            return org.tensim.io.mesh.VertexLabel.ORIGIN_COSTAL;
-        }
-        double x = surfaces.mesh().coord(v, 0);
-        double y = surfaces.mesh().coord(v, 1);
-        double z = surfaces.mesh().coord(v, 2);
-        Bones.Kind nearest = null;
-        double best = Double.POSITIVE_INFINITY;
-        for (int i = 0; i < bones.all().size(); i++) {
-            if (!bones.all().get(i).origin()) {
-                continue;
-            }
-            double d = Math.abs(bones.field(i).distance(x, y, z, g, 0));
-            if (d < best) {
-                best = d;
-                nearest = bones.all().get(i).kind();
-            }
-        }
-        if (nearest == Bones.Kind.VERTEBRA) {
-            return org.tensim.io.mesh.VertexLabel.ORIGIN_LUMBAR;
-        }
-        return nearest == Bones.Kind.STERNUM || nearest == Bones.Kind.XIPHOID
-                ? org.tensim.io.mesh.VertexLabel.ORIGIN_STERNAL : org.tensim.io.mesh.VertexLabel.ORIGIN_COSTAL;
+    /** The labels of the label file this scene was built from, or null. */
+    org.tensim.io.mesh.VertexLabel[] fileLabels() {
+        return vertexLabels;
     }
 
     /**
@@ -296,64 +253,9 @@ public final class DiaphragmScene {
         return parameters;
     }
 
-    /**
-     * Gives the state of a running simulation the spring stiffnesses, spring damping, membrane
-     * triangles' and shear elements' constants and viscous damping of topology {@code to}: that of a scene rebuilt from the running one with other
-     * constants ({@link #rebuiltWith}), or a copy of it made the same way as the running topology
-     * (e.g. with the rigid links as springs). Positions, velocities and time are kept.
-     *
-     * @throws IllegalArgumentException when the two topologies do not have the same springs
-     */
-    public static void copyConstantsTo(org.tensim.solver.SystemState state, Topology to) {
-        List<org.tensim.model.Spring> springs = to.springs();
-        if (springs.size() != state.springCount()) {
-            throw new IllegalArgumentException("the rebuilt scene has " + springs.size() + " springs, the running"
-                    + " simulation " + state.springCount() + ": only constants may change, not the topology");
-        }
-        for (int i = 0; i < springs.size(); i++) {
-            org.tensim.model.Spring sp = springs.get(i);
-            if (sp.a() != state.springA[i] || sp.b() != state.springB[i]) {
-                throw new IllegalArgumentException("spring " + i + " joins " + sp.a() + "-" + sp.b()
-                        + " in the rebuilt scene, " + state.springA[i] + "-" + state.springB[i] + " in the running one");
-            }
-            state.setSpringStiffness(i, sp.stiffness());
-            state.setSpringDamping(i, sp.damping());
-        }
-        if (to.triangles().size() != state.triangleCount()) {
-            throw new IllegalArgumentException("the rebuilt scene has " + to.triangles().size() + " membrane triangles,"
-                    + " the running simulation " + state.triangleCount() + ": only constants may change");
-        }
-        for (int i = 0; i < to.triangles().size(); i++) {
-            state.setTriangleConstants(i, to.triangles().get(i));
-        }
-        if (to.shears().size() != state.shears.count()) {
-            throw new IllegalArgumentException("the rebuilt scene has " + to.shears().size() + " shear elements, the"
-                    + " running simulation " + state.shears.count() + ": only constants may change");
-        }
-        for (int i = 0; i < to.shears().size(); i++) {
-            state.setShearConstants(i, to.shears().get(i));
-        }
-        state.setViscousDamping(to.viscousDamping());
-    }
-
-    /**
-     * Two action lines through the highest points of the right and left halves of the
-     * upper surface (the domes), each with a radius of action of 0.3 times the
-     * mesh's transverse width. The highest points are taken on a quadratic fitted to the
-     * surface around the highest vertices ({@link DomeTops}), not at the vertices, whose place on
-     * a flat top changes with the mesh.
-     */
+    /** The default action lines of a mesh ({@link DefaultActionLines#of}). */
     public static List<ActionLines.Line> defaultActionLines(TwoSurfaces s) {
-        double[] bounds = s.mesh().bounds();
-        double cx = 0.5 * (bounds[0] + bounds[3]);
-        double radius = 0.3 * (bounds[3] - bounds[0]);
-        List<ActionLines.Line> l = new ArrayList<>();
-        for (double[] top : DomeTops.tops(s, cx)) {
-            if (top != null) {
-                l.add(new ActionLines.Line(top[0], top[1], radius));
-            }
-        }
-        return l;
+        return DefaultActionLines.of(s);
     }
 
     /** A new simulation of this scene with the paper's RK2 integrator, at rest at t = 0. */

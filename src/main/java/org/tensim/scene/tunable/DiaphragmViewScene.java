@@ -36,7 +36,7 @@ import org.tensim.solver.SystemState;
  * (viscous, per second) makes new {@link DiaphragmParameters}; the scene is rebuilt
  * with them ({@link DiaphragmScene#rebuiltWith}) and the running simulation takes the
  * rebuilt scene's spring and damping constants
- * ({@link DiaphragmScene#copyConstantsTo}), keeping its positions, velocities and time.
+ * ({@link org.tensim.scene.diaphragm.LiveConstants#copy}), keeping its positions, velocities and time.
  * The recommended time step becomes the rebuilt scene's. A rebuild takes about 0.4 s at
  * the GUI's default resolution (20 rings, measured at a load average of 25): through
  * {@link #prepare} it is made on a background thread while the simulation keeps
@@ -391,7 +391,7 @@ public final class DiaphragmViewScene implements ViewScene {
         Topology constants = tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology());
         prepared = rebuilt;
         return () -> {
-            DiaphragmScene.copyConstantsTo(sim.state(), constants);
+            org.tensim.scene.diaphragm.LiveConstants.copy(sim.state(), constants);
             scene = rebuilt;
         };
     }
