@@ -64,8 +64,22 @@ public final class DiaphragmCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
     Path out = Path.of("out", "diaphragm");
 
+    /** The studies' former mode flags, kept to say where the studies went. */
+    @Option(names = "--resolution-study", hidden = true)
+    boolean formerResolutionFlag;
+
+    @Option(names = "--realtime-study", hidden = true)
+    boolean formerRealtimeFlag;
+
     @Override
     public Integer call() throws Exception {
+        var pr = spec.commandLine().getParseResult();
+        for (String flag : new String[] {"--resolution-study", "--realtime-study"}) {
+            if (pr.hasMatchedOption(flag)) {
+                throw usage(flag + " is now a subcommand: tensim diaphragm " + flag.substring(2) + " [options]"
+                        + " (tensim diaphragm " + flag.substring(2) + " --help)");
+            }
+        }
         // Options are checked before the mesh is read, which takes seconds.
         final DiaphragmSpec sceneSpec;
         try {

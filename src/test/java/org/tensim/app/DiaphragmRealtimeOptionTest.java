@@ -40,6 +40,10 @@ class DiaphragmRealtimeOptionTest {
                 "rk4");
         rejected("--study-rings must be ascending ring counts of 4 or more, got [43, 10]", "diaphragm",
                 "realtime-study", "--study-rings", "43,10");
+        rejected("--resolution-study is now a subcommand: tensim diaphragm resolution-study", "diaphragm",
+                "--resolution-study");
+        rejected("--realtime-study is now a subcommand: tensim diaphragm realtime-study", "diaphragm",
+                "--realtime-study");
         rejected("--study-configs is not a regular expression", "diaphragm", "realtime-study", "--study-configs",
                 "bdf2[");
     }
