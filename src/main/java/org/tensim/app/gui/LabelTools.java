@@ -95,13 +95,13 @@ final class LabelTools {
             status.message("Label brush: no vertex of the diaphragm under the pointer", true);
             return -1;
         }
-        VertexLabel[] before = d.scene().currentVertexLabels();
-        VertexLabel[] after = LabelBrush.paint(d.scene().surfaces(), before, v, radiusM, label);
-        int changed = 0;
-        for (int i = 0; i < after.length; i++) {
-            changed += after[i] != before[i] ? 1 : 0;
-        }
         try {
+            VertexLabel[] before = d.scene().currentVertexLabels();
+            VertexLabel[] after = LabelBrush.paint(d.scene().surfaces(), before, v, radiusM, label);
+            int changed = 0;
+            for (int i = 0; i < after.length; i++) {
+                changed += after[i] != before[i] ? 1 : 0;
+            }
             Path file = configDir != null ? configDir.resolve("painted.labels")
                     : java.nio.file.Files.createTempFile("tensim-painted", ".labels");
             java.nio.file.Files.createDirectories(file.toAbsolutePath().getParent());
@@ -112,7 +112,7 @@ final class LabelTools {
                     + "; the run restarts with the labels of " + file, false);
             return changed;
         } catch (IOException | RuntimeException e) {
-            status.message("Label brush: cannot keep the labels: " + e.getMessage(), true);
+            status.message("Label brush: cannot paint or keep the labels: " + e.getMessage(), true);
             return -1;
         }
     }
