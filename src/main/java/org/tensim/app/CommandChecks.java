@@ -2,7 +2,9 @@ package org.tensim.app;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.solver.parallel.Parallelism;
+import org.tensim.tuning.DiaphragmOptions;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
 
@@ -68,5 +70,14 @@ final class CommandChecks {
 
     static CommandLine.ParameterException usage(CommandSpec spec, String message) {
         return new CommandLine.ParameterException(spec.commandLine(), message);
+    }
+
+    /** The diaphragm scene the options describe ({@link DiaphragmOptions#spec}); a bad option is a usage error. */
+    static DiaphragmSpec scene(CommandSpec spec, DiaphragmOptions options, Path defaultMesh, int defaultRings) {
+        try {
+            return options.spec(defaultMesh, defaultRings);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
     }
 }

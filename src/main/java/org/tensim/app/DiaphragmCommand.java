@@ -81,13 +81,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         // Options are checked before the mesh is read, which takes seconds.
-        final DiaphragmSpec sceneSpec;
-        try {
-            sceneSpec = scene.spec(Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH
-                    : null, DiaphragmSpec.PAPER_RINGS);
-        } catch (IllegalArgumentException e) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
-        }
+        final DiaphragmSpec sceneSpec = CommandChecks.scene(spec, scene,
+                Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH : null,
+                DiaphragmSpec.PAPER_RINGS);
         boolean inThorax = sceneSpec.cage().thorax() != null;
         solver.check(spec, sceneSpec, seconds);
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);

@@ -48,12 +48,7 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        DiaphragmSpec s;
-        try {
-            s = scene.spec(null, DiaphragmSpec.PAPER_RINGS);
-        } catch (IllegalArgumentException e) {
-            throw usage(e.getMessage());
-        }
+        DiaphragmSpec s = CommandChecks.scene(spec, scene, null, DiaphragmSpec.PAPER_RINGS);
         CommandChecks.outFolder(spec, out);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);

@@ -69,12 +69,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        DiaphragmSpec s;
-        try {
-            s = scene.spec(null, DiaphragmSpec.PAPER_RINGS);
-        } catch (IllegalArgumentException e) {
-            throw usage(e.getMessage());
-        }
+        DiaphragmSpec s = CommandChecks.scene(spec, scene, null, DiaphragmSpec.PAPER_RINGS);
         solver.check(spec, s, seconds);
         CommandChecks.outFolder(spec, out);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
