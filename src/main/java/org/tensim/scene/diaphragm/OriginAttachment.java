@@ -56,6 +56,8 @@ final class OriginAttachment {
         double midX = midline(bones);
         int[] nearestBone = new int[b.nv];
         double[] distance = new double[b.nv];
+        // Per vertex: within the threshold of an origin vertebra (the crura's region, attached by their own rule).
+        boolean[] crural = new boolean[b.nv];
         double[] g = new double[3];
         for (int v = 0; v < b.nv; v++) {
             nearestBone[v] = -1;
@@ -70,6 +72,7 @@ final class OriginAttachment {
                 }
                 SignedDistance f = bones.field(i);
                 double d = Math.max(0, f.distance(x, y, z, g, 0));
+                crural[v] |= bone.kind() == Bones.Kind.VERTEBRA && d < w;
                 if (d < distance[v]) {
                     distance[v] = d;
                     nearestBone[v] = i;
@@ -82,11 +85,13 @@ final class OriginAttachment {
         // Per vertex: its height above the origin line (above the inferior margin, or its distance along the
         // surface from a label file's origin) and its closeness to an origin bone (1 within the threshold less
         // the taper, falling to 0 at the threshold; 1 for a label file's).
-        double[] height = seeds == null ? inferiorMargin(m) : geodesic(m, seeds);
+        double[] height = seeds == null ? inferiorMargin(m, crural) : geodesic(m, seeds);
         double[] boneFactor = new double[b.nv];
         for (int v = 0; v < b.nv; v++) {
             if (seeds == null) {
-                height[v] = m.coord(v, 2) - height[v];
+                // The crura's region is left to their own rule below: it hangs below the costal margin.
+                height[v] = crural[v] || Double.isInfinite(height[v]) ? Double.POSITIVE_INFINITY
+                        : m.coord(v, 2) - height[v];
                 boneFactor[v] = AttachmentBand.taper(distance[v], w, Math.min(TAPER_M, w));
             } else {
                 boneFactor[v] = 1;
@@ -192,8 +197,16 @@ final class OriginAttachment {
      * lowest point is the surface's, not a vertex's: the lowest vertex in the sector, or where an edge
      * crosses into it (a linear height is lowest at a corner of the triangle clipped to the sector), so that
      * the same surface sampled finer gives the same margin.
+     *
+     * <p>The points of {@code skip} (the crura's region, within the threshold of an origin vertebra) do not
+     * count: the right crus hangs down the lumbar spine to L3, 40 mm below the costal margin of ribs 11-12
+     * in the same sectors, and taken as the margin there it left that costal origin unattached. The crura
+     * are attached by their own rule.
+     *
+     * @param skip per vertex, left out of the search (null: none); a sector with no point left takes its
+     *             neighbours' margin, and is infinite (no margin) when they have none either
      */
-    static double[] inferiorMargin(TriangleMesh m) {
+    static double[] inferiorMargin(TriangleMesh m, boolean[] skip) {
         double[] b = m.bounds();
         double cx = 0.5 * (b[0] + b[3]);
         double cy = 0.5 * (b[1] + b[4]);
@@ -205,14 +218,16 @@ final class OriginAttachment {
         for (int v = 0; v < nv; v++) {
             angle[v] = Math.atan2(m.coord(v, 1) - cy, m.coord(v, 0) - cx) + Math.PI; // 0 .. 2 pi
             sector[v] = sectorOf(angle[v]);
-            low[sector[v]] = Math.min(low[sector[v]], m.coord(v, 2));
+            if (skip == null || !skip[v]) {
+                low[sector[v]] = Math.min(low[sector[v]], m.coord(v, 2));
+            }
         }
         double step = 2 * Math.PI / SECTORS;
         for (int t = 0; t < m.triangleCount(); t++) {
             for (int k = 0; k < 3; k++) {
                 int p = m.corner(t, k);
                 int q = m.corner(t, (k + 1) % 3);
-                if (sector[p] == sector[q]) {
+                if (sector[p] == sector[q] || skip != null && (skip[p] || skip[q])) {
                     continue;
                 }
                 // The boundaries between the two sectors, the short way round.
