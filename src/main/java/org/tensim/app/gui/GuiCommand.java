@@ -9,6 +9,7 @@ import javax.swing.SwingUtilities;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.cli.ThreadsOption;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.tuning.ConfigDir;
 import org.tensim.tuning.DiaphragmOptions;
@@ -27,6 +28,9 @@ import picocli.CommandLine.Option;
             "Guide: docs/gui.md"})
 public final class GuiCommand implements Callable<Integer> {
     private static volatile boolean scripted;
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--scene", paramLabel = "NAME", description = "scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})",
             completionCandidates = SceneNames.class)
@@ -70,11 +74,8 @@ public final class GuiCommand implements Callable<Integer> {
                     + " ${DEFAULT-VALUE}, which leaves the renderer's spare time to the simulation)")
     int fpsCap = org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS;
 
-    @Option(names = "--threads", paramLabel = "N",
-            description = "threads that share each step; 0 = automatic, as diaphragm --threads 0: all cores from "
-                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1"
-                    + " (default: ${DEFAULT-VALUE})")
-    int threads = 0;
+    @picocli.CommandLine.Mixin
+    ThreadsOption threads = new ThreadsOption();
 
     /** Scene names for picocli's help. */
     static final class SceneNames implements Iterable<String> {
@@ -103,9 +104,7 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--run-for must be a number of wall seconds > 0 and at most a day,"
                     + " got " + runFor);
         }
-        if (threads < 0) {
-            throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
-        }
+        int threadCount = threads.threads(spec);
         if (fpsCap < 0 || fpsCap > 1000) {
             throw new IllegalArgumentException("--fps-cap must be 0 (no cap) to 1000 frames per second, got " + fpsCap);
         }
@@ -117,7 +116,7 @@ public final class GuiCommand implements Callable<Integer> {
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
-        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
+        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
