@@ -14,6 +14,7 @@ import org.tensim.solver.integrators.Integrators;
 import org.tensim.tuning.ConfigDir;
 import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.PresetScene;
 import org.tensim.tuning.Settings;
 import org.tensim.tuning.TunableScenes;
 import org.tensim.tuning.Tuning;
@@ -109,6 +110,7 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--fps-cap must be 0 (no cap) to 1000 frames per second, got " + fpsCap);
         }
         // Bad names and files fail here, before any window.
+        java.util.List<String> sceneArgs = sceneFromPreset();
         SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
@@ -119,6 +121,7 @@ public final class GuiCommand implements Callable<Integer> {
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
+        w.tuning().setSceneOptions(sceneArgs);
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
@@ -226,6 +229,41 @@ public final class GuiCommand implements Callable<Integer> {
         AtomicReference<GuiWindow> w = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> w.set(new GuiWindow(factory, start, tuning, saveDir, play, note, threads)));
         return w.get();
+    }
+
+    /**
+     * The diaphragm's options in command-line form (null for the cube): those given, or the scene a
+     * {@code --preset} holds, which then replaces {@link #options} (a muscle load given still applies). A preset's
+     * scene and other scene options given together are refused unless they agree.
+     */
+    private java.util.List<String> sceneFromPreset() {
+        if (!"diaphragm".equals(scene)) {
+            return null;
+        }
+        java.util.List<String> given = PresetScene.given(spec.commandLine().getParseResult());
+        if (preset == null) {
+            return given;
+        }
+        PresetScene.Read held;
+        try {
+            held = PresetFile.scene(preset);
+        } catch (PresetFile.PresetException e) {
+            throw new IllegalArgumentException("--preset: " + e.getMessage(), e);
+        }
+        if (held == null) {
+            return given;
+        }
+        if (!given.isEmpty() && !PresetScene.same(given, held.options())) {
+            throw new IllegalArgumentException("--preset " + preset + " holds its own diaphragm scene "
+                    + held.options() + ", and other scene options were given " + given + ": give one of them");
+        }
+        java.util.List<String> args = new java.util.ArrayList<>(held.options());
+        BoundaryConditions.MuscleLoad load = options.muscleLoad != null ? options.muscleLoad : held.muscleLoad();
+        if (load != null) {
+            args.addAll(java.util.List.of("--muscle-load", BoundaryConditions.name(load)));
+        }
+        options = DiaphragmOptions.parse(args);
+        return held.options();
     }
 
     /** Restores last-used parameters; returns a note for the status bar when they could not be used. */
