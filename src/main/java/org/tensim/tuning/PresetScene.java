@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import picocli.CommandLine;
@@ -103,8 +104,8 @@ public final class PresetScene {
             spec = o.spec(null, DiaphragmSpec.PAPER_RINGS);
         } catch (IllegalArgumentException e) {
             String m = e.getMessage();
-            throw new IllegalArgumentException(where + ": " + (m.startsWith("field '") ? m : "field 'diaphragm': "
-                    + m), e);
+            throw new IllegalArgumentException(where + ": " + (m.startsWith("field '") ? m : "field 'diaphragm"
+                    + key(obj, e) + "': " + m), e);
         }
         String[][] files = {{"mesh", String.valueOf(spec.mesh().file())}, {"boxes", String.valueOf(spec.cage().boxes())},
             {"labels", String.valueOf(spec.mesh().labels())}, {"thorax", String.valueOf(spec.cage().thorax())}};
@@ -115,6 +116,22 @@ public final class PresetScene {
             }
         }
         return new Read(withoutMuscleLoad(args), o.muscleLoad);
+    }
+
+    /** ".KEY" for the key of the object that an option's refusal names, or "" when none is found. */
+    private static String key(JsonNode obj, IllegalArgumentException e) {
+        List<String> names = new ArrayList<>();
+        if (e.getCause() instanceof CommandLine.ParameterException pe && pe.getArgSpec() instanceof OptionSpec o) {
+            names.addAll(List.of(o.names()));
+        }
+        for (var it = obj.fieldNames(); it.hasNext();) {
+            String k = it.next();
+            if (names.contains("--" + k) || e.getMessage().matches("(?s).*--" + java.util.regex.Pattern.quote(k)
+                    + "\\b.*")) {
+                return "." + k;
+            }
+        }
+        return "";
     }
 
     /** Options in command-line form without {@code --muscle-load} and its value (a preset's own field). */
@@ -128,6 +145,16 @@ public final class PresetScene {
             }
         }
         return options;
+    }
+
+    /**
+     * A preset's scene with options given beside it: each option given replaces the preset's of that name
+     * (paths made absolute), in command-line form.
+     */
+    public static List<String> merge(List<String> preset, List<String> given) {
+        Map<String, Object> m = new LinkedHashMap<>(toJson(preset));
+        m.putAll(toJson(given));
+        return DiaphragmOptions.fromJson(Json.mapper().valueToTree(m), "diaphragm", Path.of(""));
     }
 
     /** Whether two sets of options in command-line form describe the same scene (paths compared absolute). */

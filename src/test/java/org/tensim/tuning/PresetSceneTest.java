@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
 
@@ -31,7 +32,8 @@ class PresetSceneTest {
     private Tuning tuning() {
         SceneFactory f = ParameterBindingTest.coarseDiaphragm();
         ViewScene s = f.create(true);
-        return ParameterBindingTest.tuning(s, f);
+        return new Tuning(s.name(), s.parameters(), s.defaultTimeStep(), f.hasTendonChoice(),
+                org.tensim.solver.integrators.Integrators.choices(), f.muscleLoad());
     }
 
     /** Every option of the diaphragm, each with a value it accepts (files made under the test's folder). */
@@ -96,9 +98,22 @@ class PresetSceneTest {
         t.apply(s, v2.toString());
         assertEquals(0.001, t.get(Tuning.TIME_STEP));
         assertEquals(MuscleLoad.PRESSURE, t.muscleLoad());
-        // the project's own preset, and one of the default scene
+        // the project's own preset holds its 14-ring scene
         Path shipped = org.tensim.io.ProjectFolder.resolve("docs", "presets", "diaphragm-realtime.json");
-        assertEquals(List.of(), PresetFile.read(shipped, tuning()).sceneOptions());
+        assertEquals(List.of("--rings", "14"), PresetFile.read(shipped, tuning()).sceneOptions());
+    }
+
+    @Test
+    void optionsGivenBesideAPresetChangeItsSceneOptionByOption() throws Exception {
+        Path thorax = Files.createDirectories(dir.resolve("thorax"));
+        List<String> held = List.of("--rings", "14", "--period", "5");
+        List<String> merged = PresetScene.merge(held, List.of("--resolution", "20", "--thorax", "thorax"));
+        DiaphragmSpec s = DiaphragmOptions.parse(merged).spec(null, 43);
+        assertEquals(20, s.mesh().rings(), "the option given replaces the preset's, whatever its alias");
+        assertEquals(5.0, s.breathing().periodS(), "the preset's other options stay");
+        assertEquals(thorax.toAbsolutePath().normalize(), s.cage().thorax().toAbsolutePath().normalize());
+        assertTrue(PresetScene.same(held, List.of("--resolution", "14", "--period", "5")));
+        assertTrue(!PresetScene.same(held, List.of("--rings", "20", "--period", "5")));
     }
 
     @Test
@@ -108,7 +123,8 @@ class PresetSceneTest {
         Object[][] cases = {
             {"{\"bogus\": 1}", "diaphragm.bogus"},
             {"{\"rings\": 2}", "--rings"},
-            {"{\"rings\": \"many\"}", "--rings"},
+            {"{\"rings\": \"many\"}", "diaphragm.rings"},
+            {"{\"resolution\": 3}", "diaphragm.resolution"},
             {"{\"mesh\": \"missing.obj\"}", "diaphragm.mesh"},
             {"{\"tissue-model\": \"rubber\"}", "--tissue-model"},
             {"{\"contact\": \"yes\", \"period\": [1, 2]}", "--period"},

@@ -233,8 +233,8 @@ public final class GuiCommand implements Callable<Integer> {
 
     /**
      * The diaphragm's options in command-line form (null for the cube): those given, or the scene a
-     * {@code --preset} holds, which then replaces {@link #options} (a muscle load given still applies). A preset's
-     * scene and other scene options given together are refused unless they agree.
+     * {@code --preset} holds with the options given beside it changing it ({@link PresetScene#merge}), which then
+     * replaces {@link #options}; a muscle load given applies over the preset's.
      */
     private java.util.List<String> sceneFromPreset() {
         if (!"diaphragm".equals(scene)) {
@@ -253,17 +253,14 @@ public final class GuiCommand implements Callable<Integer> {
         if (held == null) {
             return given;
         }
-        if (!given.isEmpty() && !PresetScene.same(given, held.options())) {
-            throw new IllegalArgumentException("--preset " + preset + " holds its own diaphragm scene "
-                    + held.options() + ", and other scene options were given " + given + ": give one of them");
-        }
-        java.util.List<String> args = new java.util.ArrayList<>(held.options());
+        java.util.List<String> scene = PresetScene.merge(held.options(), given);
+        java.util.List<String> args = new java.util.ArrayList<>(scene);
         BoundaryConditions.MuscleLoad load = options.muscleLoad != null ? options.muscleLoad : held.muscleLoad();
         if (load != null) {
             args.addAll(java.util.List.of("--muscle-load", BoundaryConditions.name(load)));
         }
         options = DiaphragmOptions.parse(args);
-        return held.options();
+        return scene;
     }
 
     /** Restores last-used parameters; returns a note for the status bar when they could not be used. */
