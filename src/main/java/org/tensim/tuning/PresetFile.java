@@ -111,7 +111,16 @@ public final class PresetFile {
         JsonNode root = tree(file);
         JsonNode d = root.isObject() ? root.get("diaphragm") : null;
         try {
-            return d == null ? null : PresetScene.read(d, file.toString(), file.toAbsolutePath().getParent());
+            MuscleLoad load = null;
+            if (d != null && root.has("muscleLoad")) {
+                String name = text(root, "muscleLoad", file.toString(), null);
+                try {
+                    load = BoundaryConditions.parse(MuscleLoad.class, name);
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException(file + ": field 'muscleLoad': " + e.getMessage(), e);
+                }
+            }
+            return d == null ? null : PresetScene.read(d, file.toString(), file.toAbsolutePath().getParent(), load);
         } catch (IllegalArgumentException e) {
             throw new PresetException(e.getMessage(), e);
         }
@@ -182,13 +191,9 @@ public final class PresetFile {
                 throw new IllegalArgumentException(where + ": field 'diaphragm': scene '" + scene + "' is not the"
                         + " diaphragm");
             }
-            PresetScene.Read r = PresetScene.read(diaphragm, where, base);
+            PresetScene.Read r = PresetScene.read(diaphragm, where, base,
+                    root.has("muscleLoad") ? muscleLoad : null);
             if (r.muscleLoad() != null) {
-                if (root.has("muscleLoad") && r.muscleLoad() != muscleLoad) {
-                    throw new IllegalArgumentException(where + ": field 'diaphragm.muscle-load' is '"
-                            + BoundaryConditions.name(r.muscleLoad()) + "' but field 'muscleLoad' is '"
-                            + BoundaryConditions.name(muscleLoad) + "'; give one");
-                }
                 if (muscleLoad == null) {
                     throw new IllegalArgumentException(where + ": field 'diaphragm.muscle-load': scene '"
                             + current.scene() + "' has no muscle");

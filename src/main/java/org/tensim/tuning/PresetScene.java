@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.tensim.io.Json;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import picocli.CommandLine;
@@ -26,7 +27,7 @@ public final class PresetScene {
      * A preset's scene as read.
      *
      * @param options    the options in command-line form, the muscle load left out
-     * @param muscleLoad the muscle load the object named, or null
+     * @param muscleLoad the muscle load the object or the preset named, or null
      */
     public record Read(List<String> options, MuscleLoad muscleLoad) {
     }
@@ -91,17 +92,27 @@ public final class PresetScene {
      * Reads a preset's {@code "diaphragm"} object and checks the scene it describes, the files it names
      * included; relative paths are resolved against {@code base} (the preset's folder).
      *
-     * @param where the preset, for messages
+     * @param where      the preset, for messages
+     * @param presetLoad the preset's own {@code "muscleLoad"} (null if none), which the scene is checked with
      * @throws IllegalArgumentException naming {@code where}, the key and what was expected
      */
-    public static Read read(JsonNode obj, String where, Path base) {
+    public static Read read(JsonNode obj, String where, Path base, MuscleLoad presetLoad) {
         List<String> args;
         DiaphragmSpec spec;
-        DiaphragmOptions o;
+        MuscleLoad load;
         try {
             args = DiaphragmOptions.fromJson(obj, "diaphragm", base);
-            o = DiaphragmOptions.parse(args);
-            spec = o.spec(null, DiaphragmSpec.PAPER_RINGS);
+            MuscleLoad own = DiaphragmOptions.parse(args).muscleLoad;
+            if (own != null && presetLoad != null && own != presetLoad) {
+                throw new IllegalArgumentException("field 'diaphragm.muscle-load' is '" + BoundaryConditions.name(own)
+                        + "' but field 'muscleLoad' is '" + BoundaryConditions.name(presetLoad) + "'; give one");
+            }
+            load = own != null ? own : presetLoad;
+            List<String> checked = new ArrayList<>(args);
+            if (own == null && load != null) {
+                checked.addAll(List.of(MUSCLE_LOAD, BoundaryConditions.name(load)));
+            }
+            spec = DiaphragmOptions.parse(checked).spec(null, DiaphragmSpec.PAPER_RINGS);
         } catch (IllegalArgumentException e) {
             String m = e.getMessage();
             throw new IllegalArgumentException(where + ": " + (m.startsWith("field '") ? m : "field 'diaphragm"
@@ -115,7 +126,7 @@ public final class PresetScene {
                         + ": no such file or folder");
             }
         }
-        return new Read(withoutMuscleLoad(args), o.muscleLoad);
+        return new Read(withoutMuscleLoad(args), load);
     }
 
     /** ".KEY" for the key of the object that an option's refusal names, or "" when none is found. */

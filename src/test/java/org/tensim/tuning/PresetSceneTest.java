@@ -107,7 +107,7 @@ class PresetSceneTest {
     void optionsGivenBesideAPresetChangeItsSceneOptionByOption() throws Exception {
         Path thorax = Files.createDirectories(dir.resolve("thorax"));
         List<String> held = List.of("--rings", "14", "--period", "5");
-        List<String> merged = PresetScene.merge(held, List.of("--resolution", "20", "--thorax", "thorax"));
+        List<String> merged = PresetScene.merge(held, List.of("--resolution", "20", "--thorax", thorax.toString()));
         DiaphragmSpec s = DiaphragmOptions.parse(merged).spec(null, 43);
         assertEquals(20, s.mesh().rings(), "the option given replaces the preset's, whatever its alias");
         assertEquals(5.0, s.breathing().periodS(), "the preset's other options stay");
