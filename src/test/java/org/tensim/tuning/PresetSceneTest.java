@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -36,53 +35,58 @@ class PresetSceneTest {
                 org.tensim.solver.integrators.Integrators.choices(), f.muscleLoad());
     }
 
-    /** Every option of the diaphragm, each with a value it accepts (files made under the test's folder). */
-    private List<String> everyOption() throws Exception {
+    /**
+     * Every option of the diaphragm, each with a value it accepts, in two scenes (rib boxes or a thorax: not
+     * both); files made under the test's folder.
+     */
+    private List<List<String>> everyOption() throws Exception {
         Path mesh = Files.writeString(dir.resolve("d.obj"), "");
         Path labels = Files.writeString(dir.resolve("d.labels"), "");
         Path boxes = Files.writeString(dir.resolve("boxes.json"), "{}");
         Path thorax = Files.createDirectories(dir.resolve("thorax"));
-        return List.of("--mesh", mesh.toString(), "--units", "m", "--thickness", "3", "--rings", "12",
-                "--boxes", boxes.toString(), "--thorax", thorax.toString(), "--labels", labels.toString(),
-                "--tendon-rule", "geodesic", "--no-contact", "--contact-stiffness", "2e6", "--liver-support", "1e5",
-                "--model", "default", "--rib-amplitude", "1.5", "--muscle-force", "2000", "--period", "5",
-                "--ie-ratio", "1.5", "--attach-threshold", "15", "--attachment", "band", "--band-stiffness", "3e5",
-                "--band-all-segments", "--muscle-load", "pressure", "--weld-tolerance", "0.002",
-                "--min-piece-fraction", "0.02", "--tendon-normal", "0,0.1,1", "--tendon-point", "1,2,3",
+        List<String> ribs = List.of("--units", "m", "--thickness", "3", "--rings", "12", "--boxes", boxes.toString(),
+                "--tendon-rule", "geodesic", "--model", "default", "--rib-amplitude", "1.5", "--muscle-force", "2000",
+                "--period", "5", "--ie-ratio", "1.5", "--attach-threshold", "15", "--attachment", "band",
+                "--band-stiffness", "3e5", "--band-all-segments", "--muscle-load", "pressure", "--weld-tolerance",
+                "0.002", "--min-piece-fraction", "0.02", "--tendon-normal", "0,0.1,1", "--tendon-point", "1,2,3",
                 "--tendon-fraction", "0.2", "--tissue-model", "springs", "--action-line", "0,10,40",
                 "--action-line", "0,-10,40");
+        List<String> inThorax = List.of("--mesh", mesh.toString(), "--labels", labels.toString(), "--thorax",
+                thorax.toString(), "--no-contact", "--contact-stiffness", "2e6", "--liver-support", "1e5",
+                "--muscle-load", "pressure");
+        return List.of(ribs, inThorax);
     }
 
     @Test
     void aPresetRoundTripsEveryOptionOfTheScene() throws Exception {
-        List<String> every = everyOption();
         Set<String> given = new TreeSet<>();
-        every.stream().filter(a -> a.startsWith("--")).forEach(a -> given.add(a.replace("--no-", "--").substring(2)));
+        Set<String> written = new TreeSet<>();
+        int n = 0;
+        for (List<String> every : everyOption()) {
+            every.stream().filter(a -> a.startsWith("--")).forEach(a -> given.add(a.replace("--no-", "--")
+                    .substring(2)));
+            Tuning t = tuning();
+            t.setMuscleLoad(MuscleLoad.PRESSURE);
+            t.setSceneOptions(PresetScene.withoutMuscleLoad(every));
+            Path p = dir.resolve("sub").resolve("whole" + n++ + ".json");
+            Files.createDirectories(p.getParent());
+            PresetFile.write(p, t.snapshot());
+            Json.mapper().readTree(p.toFile()).get("diaphragm").fieldNames().forEachRemaining(written::add);
+
+            Settings read = PresetFile.read(p, tuning());
+            assertEquals(MuscleLoad.PRESSURE, read.muscleLoad());
+            assertTrue(PresetScene.same(t.sceneOptions(), read.sceneOptions()), read.sceneOptions().toString());
+            List<String> back = new ArrayList<>(read.sceneOptions());
+            back.addAll(List.of("--muscle-load", "pressure"));
+            assertEquals(DiaphragmOptions.parse(every).spec(null, 43), DiaphragmOptions.parse(back).spec(null, 43),
+                    "the same scene");
+            // what the window opens from the preset is that scene too
+            assertEquals(read.sceneOptions(), PresetFile.scene(p).options());
+        }
         assertEquals(new TreeSet<>(DiaphragmOptions.names()), given, "the test gives every option");
-
-        Tuning t = tuning();
-        t.setMuscleLoad(MuscleLoad.PRESSURE);
-        t.setSceneOptions(PresetScene.withoutMuscleLoad(every));
-        Path p = dir.resolve("sub").resolve("whole.json");
-        Files.createDirectories(p.getParent());
-        PresetFile.write(p, t.snapshot());
-
-        JsonNode written = Json.mapper().readTree(p.toFile()).get("diaphragm");
-        Set<String> keys = new TreeSet<>();
-        written.fieldNames().forEachRemaining(keys::add);
         Set<String> expected = new TreeSet<>(given);
         expected.remove("muscle-load"); // the preset's own field "muscleLoad"
-        assertEquals(expected, keys, "every option is written");
-
-        Settings read = PresetFile.read(p, tuning());
-        assertEquals(MuscleLoad.PRESSURE, read.muscleLoad());
-        assertTrue(PresetScene.same(t.sceneOptions(), read.sceneOptions()), read.sceneOptions().toString());
-        List<String> back = new ArrayList<>(read.sceneOptions());
-        back.addAll(List.of("--muscle-load", "pressure"));
-        assertEquals(DiaphragmOptions.parse(every).spec(null, 43), DiaphragmOptions.parse(back).spec(null, 43),
-                "the same scene");
-        // what the window opens from the preset is that scene too
-        assertEquals(read.sceneOptions(), PresetFile.scene(p).options());
+        assertEquals(expected, written, "every option is written");
     }
 
     @Test
