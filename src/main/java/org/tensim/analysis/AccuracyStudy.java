@@ -207,7 +207,7 @@ public final class AccuracyStudy {
         Integrator integrator = Integrators.create(name);
         Simulation sim = new Simulation(SystemState.compile(scene.topology().get()), integrator);
         sim.setWarningSink(m -> { }); // beyond-critical steps are read from the counter below
-        sim.setProjectionFailureSeverity(org.tensim.solver.Severity.IGNORE);
+        sim.apply(sim.settings().withProjectionFailureSeverity(org.tensim.solver.Severity.IGNORE));
         long t0 = System.nanoTime();
         boolean diverged = false;
         try {

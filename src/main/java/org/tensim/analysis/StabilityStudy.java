@@ -118,9 +118,9 @@ public final class StabilityStudy {
     public static boolean stable(Topology t, String integrator, double h, double durationS, double amplitudeM) {
         SystemState s = SystemState.compile(t);
         Simulation sim = new Simulation(s, Integrators.create(integrator));
-        sim.setStepLimitSeverity(Severity.IGNORE);
-        sim.setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
-        sim.setProjectionFailureSeverity(Severity.IGNORE);
+        sim.apply(sim.settings().withStepLimitSeverity(Severity.IGNORE)
+                .withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval())
+                .withProjectionFailureSeverity(Severity.IGNORE));
         long steps = Math.max(MIN_STEPS, (long) Math.ceil(durationS / h));
         long quarter = steps / 4;
         double first = 0;

@@ -11,6 +11,8 @@ import org.knowm.xchart.XYChart;
 import org.tensim.analysis.AccuracyScenes;
 import org.tensim.analysis.AccuracyStudy;
 import org.tensim.analysis.ShellStudy;
+import org.tensim.cli.OptionChecks;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
@@ -63,8 +65,8 @@ public final class AccuracyCommand implements Callable<Integer> {
                     + "default diaphragm's element size)")
     int[] shellRings = ShellStudy.PLATE_RINGS;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "accuracy");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "accuracy"));
 
     /** Scene names for the help text. */
     static final class SceneNames extends ArrayList<String> {
@@ -95,12 +97,11 @@ public final class AccuracyCommand implements Callable<Integer> {
         }
         if (largestDt != null) {
             for (String name : scenes) {
-                CommandChecks.stepFits(spec, "--dt", largestDt, "the end time of scene " + name,
+                OptionChecks.stepFits(spec, "--dt", largestDt, "the end time of scene " + name,
                         AccuracyScenes.get(name).endTimeS());
             }
         }
-        CommandChecks.outFolder(spec, out);
-        return RunFolder.run(out, "accuracy", List.of(), run -> study(run, shellModel));
+        return RunFolder.run(out.folder(spec), "accuracy", List.of(), run -> study(run, shellModel));
     }
 
     private void study(RunFolder run, TissueModel shellModel) throws IOException {

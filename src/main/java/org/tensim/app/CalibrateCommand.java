@@ -9,6 +9,7 @@ import org.tensim.calibration.CalibrationReader;
 import org.tensim.calibration.CalibrationReport;
 import org.tensim.calibration.CalibrationSpec;
 import org.tensim.calibration.SyntheticTarget;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.io.Json;
 import org.tensim.sweep.SpecReader;
 import org.tensim.sweep.SweepEngine;
@@ -30,8 +31,8 @@ public final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the calibration spec (JSON)")
     Path specFile;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/calibrate/SPEC-NAME)")
-    Path out;
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "calibrate", OutFolderOption.SPEC_NAME));
 
     @picocli.CommandLine.Mixin
     EngineOptions engines = new EngineOptions();
@@ -66,8 +67,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         } catch (SpecReader.SpecException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
-        Path dir = out != null ? out : Path.of("out", "calibrate", SweepCommand.defaultOut(specFile).getFileName()
-                .toString());
+        Path dir = out.folder(spec, specFile);
         try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("calibrating " + s.names() + " of " + s.setup().geometry() + " on " + e.describe()
                     + " into " + dir);

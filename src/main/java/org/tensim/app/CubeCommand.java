@@ -6,7 +6,10 @@ import org.tensim.experiment.CubeReport;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
 import org.tensim.scene.CubeParameters;
-import org.tensim.solver.integrators.Integrators;
+import org.tensim.cli.IntegratorOption;
+import org.tensim.cli.OptionChecks;
+import org.tensim.cli.OutFolderOption;
+import org.tensim.cli.TimeStepOption;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -22,14 +25,14 @@ public final class CubeCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "cube");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "cube"));
 
     @Option(names = "--duration", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
     double duration = D.durationS();
 
-    @Option(names = "--dt", paramLabel = "S", description = "time step, s (default: ${DEFAULT-VALUE})")
-    double dt = D.dtS();
+    @picocli.CommandLine.Mixin
+    TimeStepOption dt = TimeStepOption.fixed(D.dtS());
 
     @Option(names = "--force", paramLabel = "N",
             description = "peak of the sinusoidal force on each loaded node, N (default: ${DEFAULT-VALUE})")
@@ -52,24 +55,24 @@ public final class CubeCommand implements Callable<Integer> {
     @Option(names = "--mass", paramLabel = "KG", description = "mass of every node, kg (default: ${DEFAULT-VALUE})")
     double mass = D.nodeMassKg();
 
-    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
-            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
-    String integrator = Integrators.DEFAULT;
+    @picocli.CommandLine.Mixin
+    IntegratorOption integrator = new IntegratorOption();
 
     @Override
     public Integer call() throws Exception {
-        CommandChecks.outFolder(spec, out);
+        Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--duration", duration, "s");
-        CommandChecks.stepFits(spec, "--dt", dt, "--duration", duration);
+        double step = dt.seconds(spec);
+        OptionChecks.stepFits(spec, "--dt", step, "--duration", duration);
+        integrator.create(spec);
         CubeParameters p;
         try {
-            p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, dt, duration);
-            org.tensim.solver.integrators.Integrators.create(integrator);
+            p = new CubeParameters(D.sideM(), mass, stiffness, damping, force, frequency, tilt, step, duration);
         } catch (IllegalArgumentException e) {
             throw CommandChecks.usage(spec, e.getMessage());
         }
-        return RunFolder.run(out, "cube", CubeReport.OUTPUTS, run -> {
-            CubeReport report = CubeReport.run(p, integrator, run);
+        return RunFolder.run(folder, "cube", CubeReport.OUTPUTS, run -> {
+            CubeReport report = CubeReport.run(p, integrator.name(), run);
             System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
             if (report.status() == RunStatus.DIVERGED) {
                 spec.commandLine().getErr().println("tensim cube: " + report.summary().get("diverged")

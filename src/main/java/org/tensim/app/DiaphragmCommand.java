@@ -4,6 +4,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.cli.OutFolderOption;
+import org.tensim.cli.ThreadsOption;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.experiment.diaphragm.RealTimeSetting;
 import org.tensim.io.Json;
@@ -39,10 +41,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
             + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
     double seconds = 4;
 
-    @Option(names = "--threads", paramLabel = "N",
-            description = "threads that share each step; 0 = automatic: all cores from "
-                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
-    int threads = 0;
+    @picocli.CommandLine.Mixin
+    ThreadsOption threads = new ThreadsOption();
 
     @Option(names = "--realtime",
             description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
@@ -61,8 +61,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "times of displacements.csv, s (default: end-inspiration and end of the last cycle)")
     double[] csvTimes;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "diaphragm");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
 
     /** The studies' former mode flags, kept to say where the studies went. */
     @Option(names = "--resolution-study", hidden = true)
@@ -87,13 +87,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
         boolean inThorax = sceneSpec.cage().thorax() != null;
         solver.check(spec, sceneSpec, seconds);
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
-        double dt = solver.dt;
-        CommandChecks.threads(spec, "--threads", threads, true);
-        CommandChecks.outFolder(spec, out);
+        double dt = solver.dt();
+        int threadCount = threads.threads(spec);
+        Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         RealTimeSetting setting = null;
         if (realtime) {
-            if (dt != 0 || solver.cgTolerance != null || !solver.integrator.equals("rk2")) {
+            if (dt != 0 || solver.cgTolerance != null || !solver.integratorName().equals("rk2")) {
                 throw usage("--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
                         + " --cg-tolerance");
             }
@@ -109,8 +109,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
-        return RunFolder.run(out, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, sceneSpec, o,
-                integratorUsed, named));
+        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, sceneSpec, o,
+                integratorUsed, named, threadCount));
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {
@@ -131,7 +131,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
     }
 
     private void simulate(RunFolder run, DiaphragmSpec sceneSpec, DiaphragmReport.Options o,
-            org.tensim.solver.Integrator chosen, RealTimeSetting setting) throws Exception {
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads) throws Exception {
         BoundaryConditions bc = sceneSpec.boundary();
         DiaphragmSetup.Built built = DiaphragmSetup.build(sceneSpec);
         if (built.meshReport() != null) {
@@ -155,7 +155,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 fields);
         if (fields.containsKey("diverged")) {
             spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
-                    + " (outputs up to that step are in " + out + ", figures marked DIVERGED)");
+                    + " (outputs up to that step are in " + run.dir() + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));
     }

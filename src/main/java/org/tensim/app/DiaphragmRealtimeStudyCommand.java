@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.experiment.diaphragm.RealTimeStudy;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
@@ -43,13 +44,13 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
                     + " resolution, always runs)")
     String studyConfigs;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "diaphragm");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
 
     @Override
     public Integer call() throws Exception {
         DiaphragmSpec s = CommandChecks.scene(spec, scene, null, DiaphragmSpec.PAPER_RINGS);
-        CommandChecks.outFolder(spec, out);
+        Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
         if (s.cage().thorax() != null || s.mesh().labels() != null || scene.mesh != null) {
@@ -63,12 +64,12 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
             throw usage("--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
                     + "'");
         }
-        return RunFolder.run(out, "diaphragm realtime-study", OUTPUTS, run -> {
+        return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, run -> {
             for (String n : OUTPUTS) {
                 run.file(n);
             }
             Map<String, Object> r = RealTimeStudy.run(studyRings != null ? studyRings : RealTimeStudy.RINGS, only,
-                    s.cage().boxes(), s.tissue(), s.boundary(), s.breathing().cycle(), s.newControls(), seconds, out,
+                    s.cage().boxes(), s.tissue(), s.boundary(), s.breathing().cycle(), s.newControls(), seconds, folder,
                     System.out);
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
         });

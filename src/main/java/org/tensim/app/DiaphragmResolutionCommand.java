@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.experiment.diaphragm.ResolutionPick;
 import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
@@ -64,14 +65,14 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             + " to --out)")
     boolean noPick;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "diaphragm");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
 
     @Override
     public Integer call() throws Exception {
         DiaphragmSpec s = CommandChecks.scene(spec, scene, null, DiaphragmSpec.PAPER_RINGS);
         solver.check(spec, s, seconds);
-        CommandChecks.outFolder(spec, out);
+        Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
         if (s.mesh().labels() != null) {
@@ -87,7 +88,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                     + java.util.Arrays.toString(cellsMm));
         }
         ResolutionStudy.Thorax inThorax = s.cage().thorax() == null ? null : new ResolutionStudy.Thorax(s,
-                DiaphragmSetup.read(s), () -> solver.create(s), solver.dt);
+                DiaphragmSetup.read(s), () -> solver.create(s), solver.dt());
         ResolutionStudy.Setup rs;
         try {
             rs = new ResolutionStudy.Setup(DiaphragmSetup.boxes(s.cage().boxes()), s.tissue(), s.boundary(),
@@ -97,15 +98,15 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             throw usage("--tolerance: " + e.getMessage());
         }
         DiaphragmSpec.Mesh m = s.mesh();
-        return RunFolder.run(out, "diaphragm resolution-study", OUTPUTS, run -> {
+        return RunFolder.run(folder, "diaphragm resolution-study", OUTPUTS, run -> {
             for (String n : OUTPUTS) {
                 run.file(n);
             }
             Map<String, Object> r = ownMesh
                     ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm, refine,
-                            rs, out)
-                    : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, out)
-                    : ResolutionStudy.run(rs, out, noPick ? null : ResolutionPick.FILE);
+                            rs, folder)
+                    : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder)
+                    : ResolutionStudy.run(rs, folder, noPick ? null : ResolutionPick.FILE);
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
         });
     }

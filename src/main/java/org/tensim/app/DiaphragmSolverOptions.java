@@ -1,10 +1,14 @@
 package org.tensim.app;
 
+import org.tensim.cli.IntegratorOption;
+import org.tensim.cli.OptionChecks;
+import org.tensim.cli.TimeStepOption;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -14,14 +18,12 @@ import picocli.CommandLine.ParameterException;
  * mixin): {@code --integrator}, {@code --dt} and the iterative solvers' settings.
  */
 public final class DiaphragmSolverOptions {
-    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
-            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
-    String integrator = Integrators.DEFAULT;
+    @Mixin
+    IntegratorOption integrator = new IntegratorOption();
 
-    @Option(names = "--dt", paramLabel = "S",
-            description = "time step, s (default: the step the time-step policy recommends for the integrator on"
-                    + " this scene; summary.json's dt_rule says how it was chosen)")
-    double dt = 0;
+    @Mixin
+    TimeStepOption dt = TimeStepOption.chosenByScene("the step the time-step policy recommends for the integrator"
+            + " on this scene; summary.json's dt_rule says how it was chosen");
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
             description = "implicit-euler only: relative residual at which each step's CG solve stops"
@@ -40,19 +42,21 @@ public final class DiaphragmSolverOptions {
                     + PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ")")
     Integer cgIterations;
 
+    private double checkedDt;
+
     /**
      * Checks the options against the scene (each setting applies to its own integrator; the step is at most one
      * breathing period and fits {@code seconds}) and returns the integrator they configure.
      */
     void check(CommandSpec spec, DiaphragmSpec scene, double seconds) {
-        Integrator chosen = Integrators.create(integrator);
+        Integrator chosen = integrator.create(spec);
         if (cgTolerance != null && !(chosen instanceof ImplicitEuler)) {
             throw new ParameterException(spec.commandLine(), "--cg-tolerance applies to --integrator implicit-euler"
-                    + " only, not " + integrator);
+                    + " only, not " + integrator.name());
         }
         if ((newton != null || cgIterations != null) && !(chosen instanceof PrefactoredBdf2)) {
             throw new ParameterException(spec.commandLine(), "--newton and --cg-iterations apply to --integrator"
-                    + " bdf2 only, not " + integrator);
+                    + " bdf2 only, not " + integrator.name());
         }
         try {
             configured(chosen, scene);
@@ -60,18 +64,30 @@ public final class DiaphragmSolverOptions {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         double period = scene.breathing().periodS();
-        if (dt < 0 || dt > period) {
+        double dt = this.dt.seconds(spec);
+        checkedDt = dt;
+        if (dt > period) {
             throw new ParameterException(spec.commandLine(), "--dt must be > 0 s (or 0 for the recommended step) and"
                     + " at most one breathing period (--period " + period + " s), got " + dt + " s");
         }
         if (dt != 0) {
-            CommandChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
+            OptionChecks.stepFits(spec, "--dt", dt, "--seconds", seconds);
         }
     }
 
     /** A new integrator as the options configure it, for a scene of this spec. */
     Integrator create(DiaphragmSpec scene) {
-        return configured(Integrators.create(integrator), scene);
+        return configured(Integrators.create(integrator.name()), scene);
+    }
+
+    /** The step asked for, s, 0 for the recommended one (known after {@link #check}). */
+    double dt() {
+        return checkedDt;
+    }
+
+    /** The integrator's name as given. */
+    String integratorName() {
+        return integrator.name();
     }
 
     /**
@@ -81,7 +97,7 @@ public final class DiaphragmSolverOptions {
      */
     private Integrator configured(Integrator i, DiaphragmSpec s) {
         if (i instanceof PrefactoredBdf2 b) {
-            if (s.cage().thorax() != null && s.cage().contact() && integrator.equals(PrefactoredBdf2.NAME)) {
+            if (s.cage().thorax() != null && s.cage().contact() && integrator.name().equals(PrefactoredBdf2.NAME)) {
                 b.setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
                 b.setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
             }

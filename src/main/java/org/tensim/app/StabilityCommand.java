@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.knowm.xchart.XYChart;
 import org.tensim.analysis.StabilityStudy;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.io.Charts;
 import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
@@ -51,8 +52,8 @@ public final class StabilityCommand implements Callable<Integer> {
     @Option(names = "--periods", paramLabel = "P", description = "periods per trial run (default: ${DEFAULT-VALUE})")
     int periods = 50;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("out", "stability");
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "stability"));
 
     private static final double REF_OMEGA = 10;
     private static final double TOL = 1e-4;
@@ -75,8 +76,7 @@ public final class StabilityCommand implements Callable<Integer> {
         if (periods < 1) {
             throw new IllegalArgumentException("--periods must be at least 1, got " + periods);
         }
-        CommandChecks.outFolder(spec, out);
-        return RunFolder.run(out, "stability", OUTPUTS, this::study);
+        return RunFolder.run(out.folder(spec), "stability", OUTPUTS, this::study);
     }
 
     /** The files this command writes into --out (docs/outputs.md). */

@@ -2,6 +2,7 @@ package org.tensim.app;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.tensim.cli.OutFolderOption;
 import org.tensim.io.Json;
 import org.tensim.sweep.SpecReader;
 import org.tensim.sweep.Sweep;
@@ -24,8 +25,8 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the sweep spec (JSON)")
     Path specFile;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: out/sweep/SPEC-NAME)")
-    Path out;
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "sweep", OutFolderOption.SPEC_NAME));
 
     @picocli.CommandLine.Mixin
     EngineOptions engines = new EngineOptions();
@@ -38,7 +39,7 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (SpecReader.SpecException e) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
-        Path dir = out != null ? out : defaultOut(specFile);
+        Path dir = out.folder(spec, specFile);
         try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("sweep of " + s.setup().geometry() + " on " + e.describe() + " into " + dir);
             Sweep.Outcome o = Sweep.run(s, dir, e, System.console() != null, System.out);
@@ -46,11 +47,5 @@ public final class SweepCommand implements Callable<Integer> {
             System.out.println(Json.line(o.summary()));
         }
         return 0;
-    }
-
-    /** out/sweep/NAME for a spec file NAME.json (also used by calibrate: out/calibrate/NAME). */
-    static Path defaultOut(Path specFile) {
-        String n = specFile.getFileName().toString();
-        return Path.of("out", "sweep", n.endsWith(".json") ? n.substring(0, n.length() - 5) : n);
     }
 }

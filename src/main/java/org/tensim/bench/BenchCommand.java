@@ -5,6 +5,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.tensim.cli.IntegratorOption;
+import org.tensim.cli.OptionChecks;
+import org.tensim.cli.TimeStepOption;
 import org.tensim.io.Json;
 import org.tensim.io.OutputFiles;
 import org.tensim.io.RunFolder;
@@ -37,9 +40,8 @@ public final class BenchCommand implements Callable<Integer> {
             description = "thread counts (default: all cores, here ${DEFAULT-VALUE})")
     List<Integer> threads = List.of(Parallelism.availableCores());
 
-    @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
-            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
-    String integrator = Integrators.DEFAULT;
+    @picocli.CommandLine.Mixin
+    IntegratorOption integrator = new IntegratorOption();
 
     @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
     boolean links;
@@ -57,9 +59,9 @@ public final class BenchCommand implements Callable<Integer> {
             + "(an arbitrarily numbered mesh; default: off)")
     boolean shuffle;
 
-    @Option(names = "--dt", paramLabel = "S",
-            description = "time step, s (default: 0.001 for the lattice, the step recommended for the integrator on the diaphragm)")
-    Double dt;
+    @picocli.CommandLine.Mixin
+    TimeStepOption dt = TimeStepOption.chosenByScene("0.001 for the lattice, the step recommended for the integrator"
+            + " on the diaphragm");
 
     @Option(names = "--steps", paramLabel = "K",
             description = "timed steps per repetition; 0 = about 2e7 spring evaluations (default: ${DEFAULT-VALUE})")
@@ -83,17 +85,11 @@ public final class BenchCommand implements Callable<Integer> {
         if (!"lattice".equals(scene) && !"diaphragm".equals(scene)) {
             throw new IllegalArgumentException("--scene " + scene + ": expected lattice or diaphragm");
         }
-        int maxThreads = 4 * Parallelism.availableCores();
         for (int t : threads) {
-            if (t < 1 || t > maxThreads) {
-                throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--threads " + t
-                        + ": expected 1 to " + maxThreads + " (4 x the " + Parallelism.availableCores()
-                        + " cores here; more threads than that only wait for one another)");
-            }
+            OptionChecks.threads(spec, "--threads", t, false);
         }
-        if (out != null && out.toString().isBlank()) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
-                    "--out must name a folder, got an empty path");
+        if (out != null) {
+            OptionChecks.outFolder(spec, out);
         }
         for (int n : sizes) {
             if (n < 2) {
@@ -104,16 +100,14 @@ public final class BenchCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--steps must be >= 0 and --repeats >= 1, got " + steps + " and "
                     + repeats);
         }
-        if (dt != null && (!(dt > 0) || !Double.isFinite(dt))) {
-            throw new IllegalArgumentException("--dt " + dt + ": the time step must be a finite number > 0 s");
-        }
+        double step = dt.seconds(spec); // 0: the scene's own
         ParallelSpringPass.Order ord = parseOrder(order);
         if (!"parallel".equals(solver) && !"builtin".equals(solver)) {
             throw new IllegalArgumentException("--solver " + solver + ": expected parallel or builtin");
         }
         boolean builtin = "builtin".equals(solver);
         List<Integer> threadCounts = builtin ? List.of(1) : threads;
-        Integrators.create(integrator); // fails early on an unknown name
+        integrator.create(spec); // fails early on an unknown name
         if (compare != null) {
             if (compare.size() != 2 || !"diaphragm".equals(scene)) {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--compare takes two "
@@ -121,16 +115,16 @@ public final class BenchCommand implements Callable<Integer> {
             }
             compare.forEach(Integrators::create);
             int k = steps > 0 ? steps : 20;
-            InterleavedComparison.run(DiaphragmBenchScene::build, compare, threads.get(0), dt != null ? dt : 0, k,
+            InterleavedComparison.run(DiaphragmBenchScene::build, compare, threads.get(0), step, k,
                     repeats, k, m -> System.out.println(Json.line(m)));
             return 0;
         }
         if (out == null) {
-            measure(builtin, threadCounts, ord, null);
+            measure(builtin, threadCounts, ord, step, null);
             return 0;
         }
         return RunFolder.run(out, "bench", List.of("bench.jsonl", "scaling.png"), run -> {
-            List<Map<String, Object>> results = measure(builtin, threadCounts, ord, run.file("bench.jsonl"));
+            List<Map<String, Object>> results = measure(builtin, threadCounts, ord, step, run.file("bench.jsonl"));
             if (sizes.size() >= 2 && !"diaphragm".equals(scene)) {
                 ScalingChart.write(results, run.file("scaling.png"));
             }
@@ -139,7 +133,7 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private List<Map<String, Object>> measure(boolean builtin, List<Integer> threadCounts,
-            ParallelSpringPass.Order ord, Path jsonl) throws Exception {
+            ParallelSpringPass.Order ord, double step, Path jsonl) throws Exception {
         List<Map<String, Object>> results = new ArrayList<>();
         StringBuilder lines = new StringBuilder();
         boolean diaphragm = "diaphragm".equals(scene);
@@ -149,12 +143,12 @@ public final class BenchCommand implements Callable<Integer> {
                 if (diaphragm) {
                     // A new scene per case: a simulation is consumed by its run.
                     org.tensim.scene.diaphragm.DiaphragmScene d = DiaphragmBenchScene.build();
-                    org.tensim.solver.Integrator in = Integrators.create(integrator);
+                    org.tensim.solver.Integrator in = Integrators.create(integrator.name());
                     c = new LatticeBenchmark.Case(scene, 0, d.topology(), d.newSimulation(), false, in, t, ord,
-                            builtin, d.timeStep(in, dt != null ? dt : 0).seconds(), steps, repeats);
+                            builtin, d.timeStep(in, step).seconds(), steps, repeats);
                 } else {
                     c = new LatticeBenchmark.Case(scene, n, LatticeBenchmark.lattice(n, links), null, shuffle,
-                            Integrators.create(integrator), t, ord, builtin, dt != null ? dt : 1e-3, steps,
+                            Integrators.create(integrator.name()), t, ord, builtin, step > 0 ? step : 1e-3, steps,
                             repeats);
                 }
                 Map<String, Object> r = LatticeBenchmark.run(c);

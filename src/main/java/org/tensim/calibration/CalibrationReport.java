@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import org.knowm.xchart.XYChart;
 import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.PresetScene;
 import org.tensim.tuning.Settings;
 import org.tensim.tuning.Tuning;
 import org.tensim.io.Charts;
@@ -49,8 +50,11 @@ public final class CalibrationReport {
         }
         // The muscle load goes with the values: it sets what muscleActionPa means.
         BoundaryConditions.MuscleLoad load = spec.setup().muscleLoad();
+        // The diaphragm's scene goes with them too: the preset holds the whole scene the values were found on.
+        List<String> scene = spec.setup().scene().equals("diaphragm")
+                ? PresetScene.withoutMuscleLoad(spec.setup().diaphragm()) : null;
         PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
-                spec.setup().integrator(), true, values, load));
+                spec.setup().integrator(), true, values, load, scene));
 
         List<String> header = new ArrayList<>(List.of("generation", "runs", "best_of_generation", "best_so_far",
                 "wall_s"));

@@ -14,8 +14,8 @@ import org.tensim.model.Check;
  *
  * <p>Links that share nodes disturb each other, so the sweep is repeated
  * (Gauss-Seidel) until the largest relative length error |l - L| / L is at most
- * {@link #tolerance()} or {@link #maxIterations()} sweeps have been made. The
- * result of the last call is kept in {@link #iterations()} and
+ * the tolerance or the cap on sweeps has been reached, both given with each call (a simulation's
+ * {@link SolverSettings}, read every step). The result of the last call is kept in {@link #iterations()} and
  * {@link #maxRelativeError()}; {@link #converged()} says whether the tolerance
  * was met. Nothing is silently accepted: a caller can see the residual.
  */
@@ -26,31 +26,10 @@ public final class RigidLinkProjection {
     public static final int DEFAULT_MAX_ITERATIONS = SolverSettings.DEFAULTS.projectionMaxIterations();
 
     private double tolerance = DEFAULT_TOLERANCE;
-    private int maxIterations = DEFAULT_MAX_ITERATIONS;
     private int iterations;
     private double maxRelativeError;
     private int worstLink = -1;
     private LinkSweeps sweeps;
-
-    /** Largest accepted relative length error |l - L| / L (dimensionless, > 0). */
-    public double tolerance() {
-        return tolerance;
-    }
-
-    public RigidLinkProjection setTolerance(double relative) {
-        tolerance = Check.positive("rigid link tolerance", "(relative length error)", relative);
-        return this;
-    }
-
-    /** Cap on Gauss-Seidel sweeps per step (>= 1). */
-    public int maxIterations() {
-        return maxIterations;
-    }
-
-    public RigidLinkProjection setMaxIterations(int n) {
-        maxIterations = Check.atLeast("rigid link iteration cap", n, 1);
-        return this;
-    }
 
     /** Sweeps made by the last call. */
     public int iterations() {
@@ -67,7 +46,7 @@ public final class RigidLinkProjection {
         return worstLink;
     }
 
-    /** Whether the last call met the tolerance. */
+    /** Whether the last call met its tolerance. */
     public boolean converged() {
         return maxRelativeError <= tolerance;
     }
@@ -89,11 +68,15 @@ public final class RigidLinkProjection {
     /**
      * Projects the positions {@code x} of state s onto the rigid links.
      *
+     * @param relativeTolerance largest accepted relative length error |l - L| / L (dimensionless, > 0)
+     * @param maxIterations     cap on Gauss-Seidel sweeps (>= 1)
      * @return true when the tolerance was met
      */
-    public boolean project(SystemState s, double[] x) {
+    public boolean project(SystemState s, double[] x, double relativeTolerance, int maxIterations) {
+        tolerance = Check.positive("rigid link tolerance", "(relative length error)", relativeTolerance);
+        Check.atLeast("rigid link iteration cap", maxIterations, 1);
         if (sweeps != null) {
-            return projectWith(sweeps, s, x);
+            return projectWith(sweeps, s, x, maxIterations);
         }
         iterations = 0;
         maxRelativeError = measure(s, x);
@@ -105,7 +88,7 @@ public final class RigidLinkProjection {
         return converged();
     }
 
-    private boolean projectWith(LinkSweeps w, SystemState s, double[] x) {
+    private boolean projectWith(LinkSweeps w, SystemState s, double[] x, int maxIterations) {
         iterations = 0;
         maxRelativeError = w.measure(s, x);
         while (maxRelativeError > tolerance && iterations < maxIterations) {

@@ -28,20 +28,21 @@ import org.tensim.solver.stability.TimeStepPolicy;
  * <ul>
  * <li>Critical time step: on the first step with a given integrator and dt, an
  * explicit integrator stepping beyond {@link CriticalTimeStep#forMethod} of
- * the state's estimate is reported ({@link #setStepLimitSeverity}, default
+ * the state's estimate is reported ({@link SolverSettings#stepLimitSeverity}, default
  * {@link Severity#WARN}; {@link Severity#ERROR} throws
  * {@link IllegalArgumentException} naming the estimate).</li>
  * <li>Divergence: a non-finite position or velocity, a runaway node (checked every
  * step, {@link #setRunawayLimit}), or the kinetic + spring
- * energy growing more than {@link #energyGrowthLimit()} times between checks made
- * every {@link #energyCheckInterval()} steps, throws
+ * energy growing more than {@link SolverSettings#energyGrowthLimit} times between checks made
+ * every {@link SolverSettings#energyCheckInterval} steps, throws
  * {@link SimulationDivergedException} naming the step, the time, the worst node
  * and the critical step estimate.</li>
  * <li>Rigid-link projection: a projection that stops at its iteration cap above
  * its tolerance is counted and reported with its residual
- * ({@link #setProjectionFailureSeverity}, default {@link Severity#WARN};
+ * ({@link SolverSettings#projectionFailureSeverity}, default {@link Severity#WARN};
  * {@link Severity#ERROR} throws {@link ProjectionFailedException}).</li>
  * </ul>
+ * All of these settings are one {@link SolverSettings} record ({@link #apply}), read as the steps are made.
  * Warnings go to {@link #setWarningSink} (default: standard error).
  */
 public final class Simulation {
@@ -70,10 +71,10 @@ public final class Simulation {
         this(state, new MidpointRK2());
     }
 
-    /** A simulation with the given settings ({@link #apply(SolverSettings)}). */
+    /** A simulation with the given settings, the integrator's CG included ({@link Integrator#configure}). */
     public Simulation(SystemState state, Integrator integrator, SolverSettings settings) {
         this(state, integrator);
-        apply(settings);
+        install(settings, true);
     }
 
     public Simulation(SystemState state, Integrator integrator) {
@@ -111,7 +112,7 @@ public final class Simulation {
         integrator = i;
     }
 
-    /** The rigid-link projection, whose tolerance and iteration cap can be set. */
+    /** The rigid-link projection (its tolerance and sweep cap are the settings', {@link #apply}). */
     public RigidLinkProjection projection() {
         return projection;
     }
@@ -121,27 +122,33 @@ public final class Simulation {
     }
 
     /**
-     * Applies every setting: the severities, the energy check, the projection's
-     * tolerance and sweep cap, and the integrator's own ({@link Integrator#configure}:
-     * an implicit method's CG); the thread count is read by
-     * {@code parallel.Parallelism.install(Simulation)}. Takes effect at the next step.
+     * Applies the settings, e.g. {@code sim.apply(sim.settings().withStepLimitSeverity(Severity.IGNORE))}: the
+     * severities, the energy check, the projection's tolerance and sweep cap (read every step), and, when they
+     * differ from those in force, the CG settings, which go to the integrator ({@link Integrator#configure}: an
+     * implicit method's CG), so that an integrator's own (a named setup's, {@code --cg-tolerance}) stay otherwise;
+     * the thread count is read by {@code parallel.Parallelism.install(Simulation)}. Takes effect at the next step.
      */
     public Simulation apply(SolverSettings s) {
-        settings = java.util.Objects.requireNonNull(s, "solver settings");
-        monitor.setEnergyGrowthLimit(s.energyGrowthLimit());
-        monitor.setEnergyCheckInterval(s.energyCheckInterval());
-        projection.setTolerance(s.projectionTolerance()).setMaxIterations(s.projectionMaxIterations());
-        integrator.configure(s);
+        java.util.Objects.requireNonNull(s, "solver settings");
+        install(s, s.cgTolerance() != settings.cgTolerance() || s.cgMaxIterations() != settings.cgMaxIterations());
         return this;
     }
 
+    private void install(SolverSettings s, boolean configureIntegrator) {
+        settings = s;
+        monitor.setEnergyGrowthLimit(s.energyGrowthLimit());
+        monitor.setEnergyCheckInterval(s.energyCheckInterval());
+        if (configureIntegrator) {
+            integrator.configure(s);
+        }
+    }
+
     /**
-     * The settings in force: those last applied or set through this class, with the
-     * projection's tolerance and cap as the projection holds them (its own setters
-     * may have been called). An integrator set later keeps its own CG settings.
+     * The settings in force, as last applied (the defaults before). An integrator set later keeps its own CG
+     * settings.
      */
     public SolverSettings settings() {
-        return settings.withProjection(projection.tolerance(), projection.maxIterations());
+        return settings;
     }
 
     /** Simulated time, s. */
@@ -164,56 +171,10 @@ public final class Simulation {
         return stepLimitWarnings;
     }
 
-    /** What a step beyond the critical step estimate does (default WARN). */
-    public Simulation setStepLimitSeverity(Severity s) {
-        settings = settings.withStepLimitSeverity(s);
-        return this;
-    }
-
-    public Severity stepLimitSeverity() {
-        return settings.stepLimitSeverity();
-    }
-
-    /** What a projection that misses its tolerance does (default WARN). */
-    public Simulation setProjectionFailureSeverity(Severity s) {
-        settings = settings.withProjectionFailureSeverity(s);
-        return this;
-    }
-
-    public Severity projectionFailureSeverity() {
-        return settings.projectionFailureSeverity();
-    }
-
     /** Where warnings go (default: standard error, prefixed "tensim: warning: "). */
     public Simulation setWarningSink(java.util.function.Consumer<String> sink) {
         warningSink = java.util.Objects.requireNonNull(sink, "warning sink");
         return this;
-    }
-
-    /**
-     * Energy growth factor (> 1) allowed between two energy checks before the run
-     * is stopped as diverged; {@link Double#POSITIVE_INFINITY} turns the energy check
-     * off (the finiteness check stays). Default 100.
-     */
-    public Simulation setEnergyGrowthLimit(double factor) {
-        settings = settings.withEnergyCheck(factor, settings.energyCheckInterval());
-        monitor.setEnergyGrowthLimit(factor);
-        return this;
-    }
-
-    public double energyGrowthLimit() {
-        return monitor.energyGrowthLimit();
-    }
-
-    /** Steps between energy checks (>= 1, default 100). */
-    public Simulation setEnergyCheckInterval(int steps) {
-        settings = settings.withEnergyCheck(settings.energyGrowthLimit(), steps);
-        monitor.setEnergyCheckInterval(steps);
-        return this;
-    }
-
-    public int energyCheckInterval() {
-        return monitor.energyCheckInterval();
     }
 
     /**
@@ -287,7 +248,8 @@ public final class Simulation {
         boolean links = state.linkCount() > 0;
         if (links) {
             System.arraycopy(state.x, 0, unconstrained, 0, unconstrained.length);
-            if (!projection.project(state, state.x)) {
+            if (!projection.project(state, state.x, settings.projectionTolerance(),
+                    settings.projectionMaxIterations())) {
                 unconvergedProjections++;
                 projectionFailed(dt);
             }
@@ -364,8 +326,8 @@ public final class Simulation {
         String msg = "rigid-link projection at step " + (steps + 1) + " (t = " + (time + dt) + " s) stopped after "
                 + projection.iterations() + " sweeps with a relative length error of "
                 + projection.maxRelativeError() + " on link " + projection.worstLink() + " (tolerance "
-                + projection.tolerance() + "): the links contradict each other, or need more sweeps than the cap"
-                + " (projection().setMaxIterations) or a looser tolerance";
+                + settings.projectionTolerance() + "): the links contradict each other, or need more sweeps than the"
+                + " cap (SolverSettings.withProjection) or a looser tolerance";
         if (projectionSeverity == Severity.ERROR) {
             throw new ProjectionFailedException(steps + 1, projection.worstLink(), projection.maxRelativeError(),
                     msg);

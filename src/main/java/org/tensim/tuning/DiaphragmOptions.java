@@ -246,7 +246,7 @@ public final class DiaphragmOptions {
 
     /** Holds the options for a parse outside a command (spec files). */
     @picocli.CommandLine.Command(name = "diaphragm-options")
-    private static final class Holder {
+    static final class Holder {
         @picocli.CommandLine.Mixin
         DiaphragmOptions options = new DiaphragmOptions();
     }

@@ -9,6 +9,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.tensim.io.Json;
 import org.tensim.scene.diaphragm.BoundaryConditions;
@@ -22,14 +23,21 @@ import org.tensim.scene.tunable.DiaphragmViewScene;
  * <pre>
  * {
  *   "format" : "tensim-gui-preset",
- *   "version" : 2,
+ *   "version" : 3,
  *   "scene" : "diaphragm",
  *   "integrator" : "rk2",
  *   "tendon" : "tensegrity",
  *   "muscleLoad" : "fibres",
+ *   "diaphragm" : { "rings" : "20", "thorax" : "/data/thorax", "contact" : false },
  *   "parameters" : { "muscleActionPa" : 15000.0, "timeStepS" : 0.001, ... }
  * }
  * </pre>
+ *
+ * {@code diaphragm} (version 3, the diaphragm scene only) is the rest of the scene's definition: the options of
+ * {@code tensim diaphragm} without the dashes, as in a sweep or calibration spec, read through the same parser
+ * ({@link PresetScene}); {@code {}} is the default scene. Without it (versions 1 and 2) the preset holds the
+ * tunables only and applies to whatever scene is open. A {@code muscle-load} key there is the same as
+ * {@code muscleLoad}.
  *
  * {@code muscleLoad} (version 2, scenes with a muscle only) names the muscle-load model the values were tuned
  * with, since it sets what {@code muscleActionPa} means (an active fibre stress or a pressure); loading the
@@ -45,7 +53,7 @@ import org.tensim.scene.tunable.DiaphragmViewScene;
  */
 public final class PresetFile {
     public static final String FORMAT = "tensim-gui-preset";
-    public static final int VERSION = 2;
+    public static final int VERSION = 3;
     /** The muscle load every preset of version 1 was made with (the default load until version 2). */
     static final MuscleLoad VERSION_1_MUSCLE_LOAD = MuscleLoad.PRESSURE;
 
@@ -70,6 +78,9 @@ public final class PresetFile {
         if (s.muscleLoad() != null) {
             root.put("muscleLoad", BoundaryConditions.name(s.muscleLoad()));
         }
+        if (s.sceneOptions() != null) {
+            root.put("diaphragm", PresetScene.toJson(s.sceneOptions()));
+        }
         root.put("parameters", new LinkedHashMap<>(s.values()));
         Json.write(file, root);
     }
@@ -80,6 +91,42 @@ public final class PresetFile {
      * itself is not changed: apply the result with {@link Tuning#apply}.
      */
     public static Settings read(Path file, Tuning current) throws PresetException {
+        String where = file.toString();
+        JsonNode root = tree(file);
+        try {
+            Path base = file.toAbsolutePath().getParent();
+            Settings s = parse(root, where, current, base);
+            current.validate(s, where);
+            return s;
+        } catch (IllegalArgumentException e) {
+            throw new PresetException(e.getMessage(), e);
+        }
+    }
+
+    /**
+     * The diaphragm scene a preset describes (its {@code "diaphragm"} object, checked), to build the scene before
+     * the preset's values are read with {@link #read}; null when the preset holds none.
+     */
+    public static PresetScene.Read scene(Path file) throws PresetException {
+        JsonNode root = tree(file);
+        JsonNode d = root.isObject() ? root.get("diaphragm") : null;
+        try {
+            MuscleLoad load = null;
+            if (d != null && root.has("muscleLoad")) {
+                String name = text(root, "muscleLoad", file.toString(), null);
+                try {
+                    load = BoundaryConditions.parse(MuscleLoad.class, name);
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException(file + ": field 'muscleLoad': " + e.getMessage(), e);
+                }
+            }
+            return d == null ? null : PresetScene.read(d, file.toString(), file.toAbsolutePath().getParent(), load);
+        } catch (IllegalArgumentException e) {
+            throw new PresetException(e.getMessage(), e);
+        }
+    }
+
+    private static JsonNode tree(Path file) throws PresetException {
         String where = file.toString();
         JsonNode root;
         try {
@@ -94,16 +141,10 @@ public final class PresetFile {
         } catch (IOException e) {
             throw new PresetException("cannot read preset " + where + ": " + e.getMessage(), e);
         }
-        try {
-            Settings s = parse(root, where, current);
-            current.validate(s, where);
-            return s;
-        } catch (IllegalArgumentException e) {
-            throw new PresetException(e.getMessage(), e);
-        }
+        return root;
     }
 
-    static Settings parse(JsonNode root, String where, Tuning current) {
+    static Settings parse(JsonNode root, String where, Tuning current, Path base) {
         if (root == null || !root.isObject()) {
             throw new IllegalArgumentException(where + ": expected a JSON object { ... } at the top level, got "
                     + (root == null ? "nothing" : root.getNodeType().toString().toLowerCase()));
@@ -138,6 +179,28 @@ public final class PresetFile {
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException(where + ": field 'muscleLoad': " + e.getMessage(), e);
             }
+        }
+        List<String> sceneOptions = null;
+        JsonNode diaphragm = root.get("diaphragm");
+        if (diaphragm != null) {
+            if (presetVersion < 3) {
+                throw new IllegalArgumentException(where + ": field 'diaphragm' needs \"version\": 3 or more, got"
+                        + " version " + presetVersion);
+            }
+            if (!scene.equals("diaphragm")) {
+                throw new IllegalArgumentException(where + ": field 'diaphragm': scene '" + scene + "' is not the"
+                        + " diaphragm");
+            }
+            PresetScene.Read r = PresetScene.read(diaphragm, where, base,
+                    root.has("muscleLoad") ? muscleLoad : null);
+            if (r.muscleLoad() != null) {
+                if (muscleLoad == null) {
+                    throw new IllegalArgumentException(where + ": field 'diaphragm.muscle-load': scene '"
+                            + current.scene() + "' has no muscle");
+                }
+                muscleLoad = r.muscleLoad();
+            }
+            sceneOptions = r.options();
         }
         String integrator = text(root, "integrator", where, now.integrator());
         String tendonText = text(root, "tendon", where, now.tensegrityTendon() ? "tensegrity" : "mass-spring");
@@ -182,13 +245,13 @@ public final class PresetFile {
         }
         for (Iterator<String> it = root.fieldNames(); it.hasNext();) {
             String f = it.next();
-            if (!f.equals("format") && !f.equals("version") && !f.equals("scene") && !f.equals("integrator")
-                    && !f.equals("tendon") && !f.equals("muscleLoad") && !f.equals("parameters")) {
+            if (!List.of("format", "version", "scene", "integrator", "tendon", "muscleLoad", "diaphragm", "parameters")
+                    .contains(f)) {
                 throw new IllegalArgumentException(where + ": unknown field '" + f
-                        + "'; expected format, version, scene, integrator, tendon, muscleLoad, parameters");
+                        + "'; expected format, version, scene, integrator, tendon, muscleLoad, diaphragm, parameters");
             }
         }
-        return new Settings(scene, integrator, tensegrity, values, muscleLoad);
+        return new Settings(scene, integrator, tensegrity, values, muscleLoad, sceneOptions);
     }
 
     private static String text(JsonNode root, String field, String where, String fallback) {

@@ -48,6 +48,7 @@ public final class Tuning {
     private volatile IntegratorChoice integrator;
     private volatile boolean tensegrityTendon = true;
     private volatile MuscleLoad muscleLoad;
+    private volatile List<String> sceneOptions;
     private volatile Target target;
 
     /**
@@ -262,8 +263,22 @@ public final class Tuning {
     /** The current values as a settings record. */
     public Settings snapshot() {
         synchronized (values) {
-            return new Settings(scene, integrator.name(), tensegrityTendon, values, muscleLoad);
+            return new Settings(scene, integrator.name(), tensegrityTendon, values, muscleLoad, sceneOptions);
         }
+    }
+
+    /**
+     * The options the scene was built from, in command-line form without the muscle load
+     * ({@link Settings#sceneOptions}); null when not known. They are fixed for the scene: a preset records them,
+     * and {@link #apply} leaves them alone.
+     */
+    public List<String> sceneOptions() {
+        return sceneOptions;
+    }
+
+    /** Records the options the scene was built from (see {@link #sceneOptions()}). */
+    public void setSceneOptions(List<String> options) {
+        sceneOptions = options == null ? null : List.copyOf(options);
     }
 
     /**

@@ -31,8 +31,8 @@ class DiaphragmRealtimeOptionTest {
 
     @Test
     void badStepsAndSelectionsGetOneClearLine() {
-        rejected("--dt must be > 0 s (or 0 for the recommended step) and at most one breathing period (--period 4.0 s),"
-                + " got -1.0 s", "diaphragm", "--dt", "-1");
+        rejected("--dt -1.0: the time step must be a finite number > 0 s (or 0 for the scene's own step)", "diaphragm",
+                "--dt", "-1");
         rejected("got 5.0 s", "diaphragm", "--dt", "5");
         rejected("(--period 2.0 s), got 2.5 s", "diaphragm", "--period", "2", "--dt", "2.5");
         rejected("--realtime chooses the integrator and the step itself", "diaphragm", "--realtime", "--dt", "0.01");

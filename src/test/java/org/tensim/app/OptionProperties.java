@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tensim.RandomCases;
+import org.tensim.cli.TimeStepOption;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.OptionSpec;
 
@@ -57,7 +58,7 @@ class OptionProperties {
 
     private static boolean isNumber(Class<?> c) {
         return c == int.class || c == double.class || c == long.class || c == Integer.class || c == Double.class
-                || c == Long.class;
+                || c == Long.class || c == TimeStepOption.Step.class;
     }
 
     @Test

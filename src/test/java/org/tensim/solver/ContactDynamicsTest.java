@@ -45,7 +45,7 @@ class ContactDynamicsTest {
     private static Simulation simulation(Topology t, String integrator) {
         Simulation sim = new Simulation(SystemState.compile(t), Integrators.create(integrator));
         // A body that pushes a node from rest gives it energy from nothing in the monitor's view.
-        sim.setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+        sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
         return sim;
     }
 

@@ -182,7 +182,7 @@ class ContactForcesTest {
             t.setViscousDamping(5); // zeta = 0.25: the nodes ride the floor instead of bouncing off it
             Simulation sim = new Simulation(SystemState.compile(t),
                     org.tensim.solver.integrators.Integrators.create(name));
-            sim.setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+            sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
             double h = sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : 1e-3;
             for (int i = 0; i < 300; i++) {
                 sim.step(h);

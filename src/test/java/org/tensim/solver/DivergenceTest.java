@@ -57,7 +57,7 @@ class DivergenceTest {
     void nonFiniteStateIsReportedWithItsNode() {
         SystemState s = SystemState.compile(SpringScene.build(10, 0, 0.01));
         Simulation sim = new Simulation(s, Integrators.create("rk4"));
-        sim.setWarningSink(m -> { }).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+        sim.setWarningSink(m -> { }).apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
         SimulationDivergedException e = assertThrows(SimulationDivergedException.class, () -> sim.runUntil(1e9, 5));
         assertEquals(1, e.node());
         assertTrue(e.getMessage().contains("critical time step estimate"), e.getMessage());
@@ -80,7 +80,7 @@ class DivergenceTest {
                         }
                         SystemState s = SystemState.compile(t);
                         Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
-                        sim.setWarningSink(m -> { }).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+                        sim.setWarningSink(m -> { }).apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
                         sim.step(0.01); // a clean step passes
                         (velocity ? s.v : s.x)[3 * node + axis] = bad;
                         SimulationDivergedException e = assertThrows(SimulationDivergedException.class,
@@ -102,7 +102,7 @@ class DivergenceTest {
     void aRunawayStopsTheRunAtThatStep(@TempDir Path dir) throws IOException {
         SystemState s = SystemState.compile(SpringScene.build(10, 0, 1e-6)); // w = 10 rad/s, one 1 m spring
         Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
-        sim.setWarningSink(m -> { }).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+        sim.setWarningSink(m -> { }).apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
         double dt = 0.25; // w h = 2.5: |lambda| about 4 per step
         double size = 1; // the spring's rest length: the largest of the scene's sizes
         double[] worst = {0};
@@ -135,9 +135,10 @@ class DivergenceTest {
     @Test
     void growthLimitIsValidated() {
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)));
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.setEnergyGrowthLimit(0.5));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> sim.apply(sim.settings().withEnergyCheck(0.5, 100)));
         assertTrue(e.getMessage().contains("0.5"), e.getMessage());
-        assertThrows(IllegalArgumentException.class, () -> sim.setEnergyCheckInterval(0));
+        assertThrows(IllegalArgumentException.class, () -> sim.apply(sim.settings().withEnergyCheck(100, 0)));
         assertThrows(IllegalArgumentException.class, () -> sim.setRunawayLimit(0));
     }
 
@@ -147,7 +148,7 @@ class DivergenceTest {
         CubeParameters p = CubeParameters.paper();
         for (boolean rigid : new boolean[] {false, true}) {
             Simulation sim = new Simulation(SystemState.compile(CubeScene.build(p, rigid).topology));
-            sim.setStepLimitSeverity(Severity.ERROR).setProjectionFailureSeverity(Severity.ERROR);
+            sim.apply(sim.settings().withStepLimitSeverity(Severity.ERROR).withProjectionFailureSeverity(Severity.ERROR));
             sim.runUntil(p.durationS(), p.dtS());
             assertEquals(p.steps(), sim.steps());
         }

@@ -22,7 +22,7 @@ class ProjectionFailureTest {
         t.addRigidLink(b.id(), c.id(), 1);
         t.addRigidLink(c.id(), a.id(), 3);
         Simulation sim = new Simulation(SystemState.compile(t));
-        sim.projection().setMaxIterations(50);
+        sim.apply(sim.settings().withProjection(sim.settings().projectionTolerance(), 50));
         return sim;
     }
 
@@ -43,7 +43,7 @@ class ProjectionFailureTest {
     @Test
     void errorSeverityStopsTheRunNamingLinkAndResidual() {
         Simulation sim = contradictory();
-        sim.setProjectionFailureSeverity(Severity.ERROR);
+        sim.apply(sim.settings().withProjectionFailureSeverity(Severity.ERROR));
         ProjectionFailedException e = assertThrows(ProjectionFailedException.class, () -> sim.step(1e-3));
         assertTrue(e.residual() > 0.1);
         assertEquals(sim.projection().worstLink(), e.link());
@@ -63,9 +63,9 @@ class ProjectionFailureTest {
         t.addRigidLink(c, a);
         t.setGravity(new org.tensim.model.Vec3(0, -9.81, 0));
         Simulation sim = new Simulation(SystemState.compile(t));
-        sim.setProjectionFailureSeverity(Severity.ERROR);
+        sim.apply(sim.settings().withProjectionFailureSeverity(Severity.ERROR));
         sim.runUntil(0.5, 1e-3);
         assertEquals(0, sim.unconvergedProjections());
-        assertTrue(sim.projection().maxRelativeError() <= sim.projection().tolerance());
+        assertTrue(sim.projection().maxRelativeError() <= sim.settings().projectionTolerance());
     }
 }

@@ -57,8 +57,8 @@ class RigidLinkProjectionTest {
         SystemState s = SystemState.compile(t);
         double[] x = perturb(s, rnd, 0.05);
         assertTrue(maxRelError(s, x) > 1e-3, "the perturbation must break the links");
-        RigidLinkProjection p = new RigidLinkProjection().setTolerance(1e-10);
-        assertTrue(p.project(s, x), "projection converges");
+        RigidLinkProjection p = new RigidLinkProjection();
+        assertTrue(p.project(s, x, 1e-10, RigidLinkProjection.DEFAULT_MAX_ITERATIONS), "projection converges");
         assertTrue(p.iterations() > 1, "shared nodes need several sweeps, made " + p.iterations());
         assertTrue(maxRelError(s, x) <= 1e-10, "independent check of every link: " + maxRelError(s, x));
         assertEquals(maxRelError(s, x), p.maxRelativeError(), 1e-15, "reported error is the real one");
@@ -77,7 +77,8 @@ class RigidLinkProjectionTest {
         SystemState s = SystemState.compile(u);
         double[] x = perturb(s, rnd, 0.1);
         double[] before = centreOfMassMoment(s, x);
-        new RigidLinkProjection().project(s, x);
+        new RigidLinkProjection().project(s, x, RigidLinkProjection.DEFAULT_TOLERANCE,
+                RigidLinkProjection.DEFAULT_MAX_ITERATIONS);
         double[] after = centreOfMassMoment(s, x);
         for (int k = 0; k < 3; k++) {
             assertEquals(before[k], after[k], 1e-12, "sum m x, axis " + k);
@@ -102,11 +103,11 @@ class RigidLinkProjectionTest {
         double[] x = perturb(s, rnd, 0.1);
         double[] fixed = {x[0], x[1], x[2]};
         RigidLinkProjection p = new RigidLinkProjection();
-        assertTrue(p.project(s, x));
+        assertTrue(p.project(s, x, RigidLinkProjection.DEFAULT_TOLERANCE, RigidLinkProjection.DEFAULT_MAX_ITERATIONS));
         assertEquals(fixed[0], x[0], 0);
         assertEquals(fixed[1], x[1], 0);
         assertEquals(fixed[2], x[2], 0);
-        assertTrue(maxRelError(s, x) <= p.tolerance());
+        assertTrue(maxRelError(s, x) <= RigidLinkProjection.DEFAULT_TOLERANCE);
     }
 
     @Test
@@ -120,9 +121,9 @@ class RigidLinkProjectionTest {
         t.addRigidLink(1, 2, 1);
         t.addRigidLink(0, 2, 3);
         SystemState s = SystemState.compile(t);
-        RigidLinkProjection p = new RigidLinkProjection().setMaxIterations(50);
+        RigidLinkProjection p = new RigidLinkProjection();
         double[] x = s.x.clone();
-        assertFalse(p.project(s, x), "cannot converge");
+        assertFalse(p.project(s, x, RigidLinkProjection.DEFAULT_TOLERANCE, 50), "cannot converge");
         assertFalse(p.converged());
         assertEquals(50, p.iterations());
         assertTrue(p.maxRelativeError() > 0.05, "residual reported: " + p.maxRelativeError());
@@ -144,7 +145,7 @@ class RigidLinkProjectionTest {
         double[] p = new double[3];
         for (int i = 0; i < 2000; i++) {
             sim.step(1e-3);
-            assertTrue(sim.projection().maxRelativeError() <= sim.projection().tolerance(),
+            assertTrue(sim.projection().maxRelativeError() <= sim.settings().projectionTolerance(),
                     "step " + i + " link error " + sim.projection().maxRelativeError());
         }
         assertTrue(maxRelError(s, s.x) <= 1e-9);

@@ -29,7 +29,6 @@ class SolverSettingsTest {
         assertEquals(1, d.threads());
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)));
         assertEquals(d, sim.settings());
-        assertEquals(100, sim.energyGrowthLimit());
     }
 
     @Test
@@ -62,21 +61,31 @@ class SolverSettingsTest {
                 .withCg(1e-4, 33).withThreads(2);
         Simulation sim = new Simulation(SystemState.compile(LatticeScene.build(3, 0.1, 1, 1000, 0.5, true)), ie, s);
         assertEquals(s, sim.settings());
-        assertEquals(Severity.ERROR, sim.stepLimitSeverity());
-        assertEquals(Severity.IGNORE, sim.projectionFailureSeverity());
-        assertEquals(50, sim.energyGrowthLimit());
-        assertEquals(7, sim.energyCheckInterval());
-        assertEquals(1e-6, sim.projection().tolerance());
-        assertEquals(12, sim.projection().maxIterations());
         assertEquals(1e-4, ie.tolerance());
         assertEquals(33, ie.maxIterations());
         try (Parallelism p = Parallelism.install(sim)) {
             assertEquals(2, p.threads());
             assertSame(p.nodeLoops(), sim.forces().nodeLoops());
         }
-        // A setter of the simulation updates the same record.
-        sim.setEnergyGrowthLimit(1e3);
+        // A change of one setting keeps the others; an integrator's own CG stays unless the CG settings change.
+        ie.setTolerance(1e-7);
+        sim.apply(sim.settings().withEnergyCheck(1e3, 7));
         assertEquals(1e3, sim.settings().energyGrowthLimit());
-        assertEquals(7, sim.settings().energyCheckInterval());
+        assertEquals(12, sim.settings().projectionMaxIterations());
+        assertEquals(1e-7, ie.tolerance());
+        sim.apply(sim.settings().withCg(1e-5, 33));
+        assertEquals(1e-5, ie.tolerance());
+    }
+
+    /** The projection's tolerance and cap are the settings', read at each step. */
+    @Test
+    void theProjectionStopsAtTheSettingsCapEachStep() {
+        Simulation sim = new Simulation(SystemState.compile(LatticeScene.build(3, 0.1, 1, 1000, 0.5, true)));
+        sim.apply(sim.settings().withProjection(1e-30, 3).withProjectionFailureSeverity(Severity.IGNORE));
+        sim.step(1e-3);
+        assertEquals(3, sim.projection().iterations(), "an unreachable tolerance: the cap of 3 sweeps");
+        sim.apply(sim.settings().withProjection(1e-30, 5));
+        sim.step(1e-3);
+        assertEquals(5, sim.projection().iterations());
     }
 }

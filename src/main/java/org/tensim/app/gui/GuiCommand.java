@@ -9,10 +9,12 @@ import javax.swing.SwingUtilities;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.SceneFactory;
 import org.tensim.scene.tunable.ViewScene;
+import org.tensim.cli.ThreadsOption;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.tuning.ConfigDir;
 import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.PresetScene;
 import org.tensim.tuning.Settings;
 import org.tensim.tuning.TunableScenes;
 import org.tensim.tuning.Tuning;
@@ -27,6 +29,9 @@ import picocli.CommandLine.Option;
             "Guide: docs/gui.md"})
 public final class GuiCommand implements Callable<Integer> {
     private static volatile boolean scripted;
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--scene", paramLabel = "NAME", description = "scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})",
             completionCandidates = SceneNames.class)
@@ -70,11 +75,8 @@ public final class GuiCommand implements Callable<Integer> {
                     + " ${DEFAULT-VALUE}, which leaves the renderer's spare time to the simulation)")
     int fpsCap = org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS;
 
-    @Option(names = "--threads", paramLabel = "N",
-            description = "threads that share each step; 0 = automatic, as diaphragm --threads 0: all cores from "
-                    + org.tensim.solver.parallel.Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1"
-                    + " (default: ${DEFAULT-VALUE})")
-    int threads = 0;
+    @picocli.CommandLine.Mixin
+    ThreadsOption threads = new ThreadsOption();
 
     /** Scene names for picocli's help. */
     static final class SceneNames implements Iterable<String> {
@@ -103,13 +105,12 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--run-for must be a number of wall seconds > 0 and at most a day,"
                     + " got " + runFor);
         }
-        if (threads < 0) {
-            throw new IllegalArgumentException("--threads must be 0 (automatic) or more, got " + threads);
-        }
+        int threadCount = threads.threads(spec);
         if (fpsCap < 0 || fpsCap > 1000) {
             throw new IllegalArgumentException("--fps-cap must be 0 (no cap) to 1000 frames per second, got " + fpsCap);
         }
         // Bad names and files fail here, before any window.
+        java.util.List<String> sceneArgs = sceneFromPreset();
         SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
@@ -117,9 +118,10 @@ public final class GuiCommand implements Callable<Integer> {
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
-        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threads,
+        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
+        w.tuning().setSceneOptions(sceneArgs);
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
             java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
@@ -227,6 +229,38 @@ public final class GuiCommand implements Callable<Integer> {
         AtomicReference<GuiWindow> w = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> w.set(new GuiWindow(factory, start, tuning, saveDir, play, note, threads)));
         return w.get();
+    }
+
+    /**
+     * The diaphragm's options in command-line form (null for the cube): those given, or the scene a
+     * {@code --preset} holds with the options given beside it changing it ({@link PresetScene#merge}), which then
+     * replaces {@link #options}; a muscle load given applies over the preset's.
+     */
+    private java.util.List<String> sceneFromPreset() {
+        if (!"diaphragm".equals(scene)) {
+            return null;
+        }
+        java.util.List<String> given = PresetScene.given(spec.commandLine().getParseResult());
+        if (preset == null) {
+            return given;
+        }
+        PresetScene.Read held;
+        try {
+            held = PresetFile.scene(preset);
+        } catch (PresetFile.PresetException e) {
+            throw new IllegalArgumentException("--preset: " + e.getMessage(), e);
+        }
+        if (held == null) {
+            return given;
+        }
+        java.util.List<String> scene = PresetScene.merge(held.options(), given);
+        java.util.List<String> args = new java.util.ArrayList<>(scene);
+        BoundaryConditions.MuscleLoad load = options.muscleLoad != null ? options.muscleLoad : held.muscleLoad();
+        if (load != null) {
+            args.addAll(java.util.List.of("--muscle-load", BoundaryConditions.name(load)));
+        }
+        options = DiaphragmOptions.parse(args);
+        return scene;
     }
 
     /** Restores last-used parameters; returns a note for the status bar when they could not be used. */

@@ -7,6 +7,7 @@ import javax.swing.JFrame;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.tensim.tuning.PresetFile;
+import org.tensim.tuning.PresetScene;
 import org.tensim.tuning.Settings;
 import org.tensim.tuning.Tuning;
 
@@ -33,6 +34,12 @@ final class PresetActions {
     boolean load(Path file) {
         try {
             Settings s = PresetFile.read(file, tuning);
+            if (s.sceneOptions() != null && tuning.sceneOptions() != null
+                    && !PresetScene.same(s.sceneOptions(), tuning.sceneOptions())) {
+                throw new IllegalArgumentException(file + ": field 'diaphragm' describes another scene "
+                        + s.sceneOptions() + " than this window's " + tuning.sceneOptions()
+                        + ": open it with tensim gui --preset " + file);
+            }
             tuning.apply(s, file.toString());
             status.message("Loaded preset " + file, false);
             return true;

@@ -1,6 +1,7 @@
 package org.tensim.solver.integrators;
 
 import org.tensim.model.Check;
+import org.tensim.solver.ConjugateGradient;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.SolverSettings;
@@ -83,9 +84,8 @@ public final class ImplicitEuler implements Integrator {
     private double[] vs;
     private double[] dv;
     private double[] r;
-    private double[] z;
-    private double[] p;
     private double[] ap;
+    private ConjugateGradient cg;
     private double[] invDiag; // per degree of freedom: 1 / A_kk on free nodes, 0 elsewhere
     private double[] free; // per degree of freedom: 1 on free nodes, 0 on fixed and driven ones
     private double[] massTerm; // per degree of freedom: (m + h c_v) on free nodes, 0 elsewhere
@@ -212,9 +212,9 @@ public final class ImplicitEuler implements Integrator {
     }
 
     /**
-     * Preconditioned CG on A dv = b, with r holding b on entry; with links, projected CG on
-     * {@code P^T A P} from a first guess that meets the linearised links. z, p and dv stay 0 on
-     * fixed and driven nodes (the preconditioner is 0 there).
+     * Preconditioned CG on A dv = b ({@link ConjugateGradient}, stopped on |r| / |b|), with r holding b on entry
+     * and the last step's dv as the first guess; with links, projected CG on {@code P^T A P} from a first guess
+     * that meets the linearised links. dv stays 0 on fixed and driven nodes (the preconditioner is 0 there).
      */
     private void solve(double bNorm2) {
         final int n3 = r.length;
@@ -225,59 +225,35 @@ public final class ImplicitEuler implements Integrator {
         if (links != null) {
             links.projectDual(r);
         }
-        double stop2 = tolerance * tolerance * bNorm2;
-        double rr = dot(r, r);
-        int it = 0;
-        if (rr > stop2) {
-            double rz = precondition();
-            System.arraycopy(z, 0, p, 0, n3);
-            while (it < maxIterations) {
-                multiply(p, ap);
-                if (links != null) {
-                    links.projectDual(ap);
-                }
-                double pap = dot(p, ap);
-                if (!(pap > 0)) {
-                    break; // breakdown: A is positive definite on free nodes, so only p = 0 gets here
-                }
-                double alpha = rz / pap;
-                rr = 0;
-                for (int k = 0; k < n3; k++) {
-                    dv[k] += alpha * p[k];
-                    final double rk = r[k] - alpha * ap[k];
-                    r[k] = rk;
-                    rr += rk * rk;
-                }
-                it++;
-                if (rr <= stop2) {
-                    break;
-                }
-                double rzNew = precondition();
-                double beta = rzNew / rz;
-                rz = rzNew;
-                for (int k = 0; k < n3; k++) {
-                    p[k] = z[k] + beta * p[k];
-                }
-            }
-        }
-        lastIterations = it;
-        lastRelativeResidual = bNorm2 > 0 ? Math.sqrt(rr / bNorm2) : 0;
-        if (rr > stop2) {
+        if (!cg.solve(system, dv, r, bNorm2, tolerance, maxIterations, ConjugateGradient.Stop.RESIDUAL)) {
             unconvergedSolves++;
         }
+        lastIterations = cg.iterations();
+        lastRelativeResidual = cg.relativeResidual();
     }
 
-    /** z = D^-1 r (Jacobi), kept in the links' tangent space (P D^-1 P^T: r is already P^T r); returns r . z. */
-    private double precondition() {
-        final double[] id = invDiag;
-        for (int k = 0; k < r.length; k++) {
-            z[k] = r[k] * id[k];
+    /** A = M + h C + h^2 S on free nodes for the CG, in the links' tangent space, with its Jacobi preconditioner. */
+    private final ConjugateGradient.Problem system = new ConjugateGradient.Problem() {
+        @Override
+        public void multiply(double[] pv, double[] out) {
+            ImplicitEuler.this.multiply(pv, out);
+            if (links != null) {
+                links.projectDual(out);
+            }
         }
-        if (links != null) {
-            links.project(z);
+
+        /** z = D^-1 r (Jacobi), kept in the links' tangent space (P D^-1 P^T: r is already P^T r). */
+        @Override
+        public void precondition(double[] rv, double[] zv) {
+            final double[] id = invDiag;
+            for (int k = 0; k < rv.length; k++) {
+                zv[k] = rv[k] * id[k];
+            }
+            if (links != null) {
+                links.project(zv);
+            }
         }
-        return dot(r, z);
-    }
+    };
 
     /**
      * The springs' blocks ({@link SpringBlocks}), the triangles', shear elements' and contacts' tangents at t (positive
@@ -360,9 +336,8 @@ public final class ImplicitEuler implements Integrator {
             vs = new double[n3];
             dv = new double[n3];
             r = new double[n3];
-            z = new double[n3];
-            p = new double[n3];
             ap = new double[n3];
+            cg = new ConjugateGradient(n3);
             invDiag = new double[n3];
             free = new double[n3];
             massTerm = new double[n3];

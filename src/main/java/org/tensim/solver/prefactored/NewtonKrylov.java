@@ -1,5 +1,6 @@
 package org.tensim.solver.prefactored;
 
+import org.tensim.solver.ConjugateGradient;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.links.LinkTangent;
@@ -30,10 +31,9 @@ final class NewtonKrylov {
     private final LinkTangent links;
     private final double[] g;
     private final double[] r;
-    private final double[] z;
-    private final double[] p;
-    private final double[] q;
     private final double[] dv;
+    private final ConjugateGradient cg;
+    private SparseCholesky preconditioner;
     private final double[] work;
     private final double[] scratch = new double[6];
     double lastRelativeResidual;
@@ -56,10 +56,8 @@ final class NewtonKrylov {
         links = new LinkTangent(s, freeIndex, freeNodes.length);
         g = new double[nf3];
         r = new double[nf3];
-        z = new double[nf3];
-        p = new double[nf3];
-        q = new double[nf3];
         dv = new double[nf3];
+        cg = new ConjugateGradient(nf3);
         work = new double[nf3];
     }
 
@@ -134,9 +132,9 @@ final class NewtonKrylov {
     }
 
     /**
-     * Preconditioned CG on J dv = -g from dv = 0, stopped when the residual's norm in the
-     * preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that
-     * weighs light and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
+     * Preconditioned CG on J dv = -g from dv = 0 ({@link ConjugateGradient}), stopped when the residual's norm
+     * in the preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that weighs light
+     * and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
      */
     private void conjugateGradient(SparseCholesky precond, int maxIterations, double tolerance) {
         final int nf3 = g.length;
@@ -145,55 +143,34 @@ final class NewtonKrylov {
             r[k] = -g[k];
         }
         links.projectDual(r);
-        System.arraycopy(r, 0, z, 0, nf3);
-        precondition(precond);
-        double rz = dot(r, z);
-        final double rz0 = rz;
-        System.arraycopy(z, 0, p, 0, nf3);
-        int it = 0;
-        double relative = 1;
-        while (it < maxIterations && rz0 > 0) {
-            products++;
-            long t0 = System.nanoTime();
-            jacobian.multiply(p, q);
-            links.projectDual(q);
-            partNanos[Bdf2Part.PRODUCTS.ordinal()] += System.nanoTime() - t0;
-            double pq = dot(p, q);
-            if (!(pq > 0)) {
-                break; // only p = 0 gets here: J is positive definite (clamped transverse stiffness)
-            }
-            double alpha = rz / pq;
-            for (int k = 0; k < nf3; k++) {
-                dv[k] += alpha * p[k];
-                r[k] -= alpha * q[k];
-            }
-            it++;
-            if (it == maxIterations) {
-                break; // no solve for a residual that nothing would use
-            }
-            System.arraycopy(r, 0, z, 0, nf3);
-            precondition(precond);
-            double rzNew = dot(r, z);
-            relative = Math.sqrt(Math.max(0, rzNew) / rz0);
-            if (relative <= tolerance) {
-                break;
-            }
-            double b = rzNew / rz;
-            rz = rzNew;
-            for (int k = 0; k < nf3; k++) {
-                p[k] = z[k] + b * p[k];
-            }
-        }
-        lastRelativeResidual = relative;
+        preconditioner = precond;
+        cg.solve(system, dv, r, 0, tolerance, maxIterations, ConjugateGradient.Stop.PRECONDITIONED);
+        lastRelativeResidual = cg.relativeResidual();
     }
 
-    /** z = P C^-1 P^T z (z holds the projected residual on entry), timed as the solves. */
-    private void precondition(SparseCholesky precond) {
-        long t0 = System.nanoTime();
-        precond.solve3(z, work);
-        links.project(z);
-        partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
-    }
+    /**
+     * J in the links' tangent space ({@code P^T J P}), products and solves timed, with the preconditioner
+     * {@code P C^-1 P^T}.
+     */
+    private final ConjugateGradient.Problem system = new ConjugateGradient.Problem() {
+        @Override
+        public void multiply(double[] pv, double[] out) {
+            products++;
+            long t0 = System.nanoTime();
+            jacobian.multiply(pv, out);
+            links.projectDual(out);
+            partNanos[Bdf2Part.PRODUCTS.ordinal()] += System.nanoTime() - t0;
+        }
+
+        @Override
+        public void precondition(double[] rv, double[] zv) {
+            System.arraycopy(rv, 0, zv, 0, rv.length);
+            long t0 = System.nanoTime();
+            preconditioner.solve3(zv, work);
+            links.project(zv);
+            partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
+        }
+    };
 
     private void scatter(double[] compact, double[] full) {
         for (int j = 0; j < nodes.length; j++) {
@@ -201,13 +178,5 @@ final class NewtonKrylov {
                 full[3 * nodes[j] + c] = compact[3 * j + c];
             }
         }
-    }
-
-    private static double dot(double[] a, double[] b) {
-        double sum = 0;
-        for (int k = 0; k < a.length; k++) {
-            sum += a[k] * b[k];
-        }
-        return sum;
     }
 }

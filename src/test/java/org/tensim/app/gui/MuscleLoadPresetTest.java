@@ -125,7 +125,7 @@ class MuscleLoadPresetTest {
         Path p = dir.resolve("v2.json");
         PresetFile.write(p, saved);
         String text = Files.readString(p);
-        assertTrue(text.contains("\"version\" : 2") && text.contains("\"muscleLoad\" : \"pressure\""), text);
+        assertTrue(text.contains("\"version\" : " + PresetFile.VERSION) && text.contains("\"muscleLoad\" : \"pressure\""), text);
         Tuning other = tuning(f.create(true), f);
         assertEquals(MuscleLoad.FIBRES, other.muscleLoad());
         Settings read = PresetFile.read(p, other);

@@ -28,7 +28,8 @@ class AmplificationTest {
             double stretch) {
         SystemState s = SystemState.compile(SpringScene.build(omega, 0, stretch));
         Simulation sim = new Simulation(s, Integrators.create(integrator));
-        sim.setStepLimitSeverity(Severity.IGNORE).setEnergyGrowthLimit(Double.POSITIVE_INFINITY);
+        sim.apply(sim.settings().withStepLimitSeverity(Severity.IGNORE).withEnergyCheck(Double.POSITIVE_INFINITY,
+                sim.settings().energyCheckInterval()));
         double a0 = amplitude(s, omega);
         double prev = a0;
         for (int i = 0; i < n; i++) {

@@ -45,7 +45,7 @@ public class ParallelIntegratorsTest {
 
     private static Simulation run(Topology t, String name, NodeLoops loops) {
         Simulation sim = new Simulation(SystemState.compile(t), Integrators.create(name));
-        sim.setStepLimitSeverity(Severity.IGNORE);
+        sim.apply(sim.settings().withStepLimitSeverity(Severity.IGNORE));
         sim.forces().setNodeLoops(loops);
         sim.runUntil(0.05, 1e-3);
         return sim;

@@ -54,11 +54,11 @@ class ParallelLinkSweepsTest {
         double[] reference = null;
         for (int t = 1; t <= 4; t++) {
             try (WorkerPool pool = new WorkerPool(t, "test")) {
-                RigidLinkProjection p = new RigidLinkProjection().setMaxIterations(10000);
+                RigidLinkProjection p = new RigidLinkProjection();
                 p.setSweeps(new ParallelLinkSweeps(s, pool, 1)); // split every colour, however small
                 double[] x = start.clone();
-                assertTrue(p.project(s, x), "converged with " + t + " threads");
-                assertTrue(p.maxRelativeError() <= p.tolerance());
+                assertTrue(p.project(s, x, RigidLinkProjection.DEFAULT_TOLERANCE, 10000), "converged with " + t + " threads");
+                assertTrue(p.maxRelativeError() <= RigidLinkProjection.DEFAULT_TOLERANCE);
                 if (reference == null) {
                     reference = x;
                 } else {
@@ -88,9 +88,9 @@ class ParallelLinkSweepsTest {
         double[] x = perturbed(s, 5);
         double[] before = x.clone();
         try (WorkerPool pool = new WorkerPool(2, "test")) {
-            RigidLinkProjection p = new RigidLinkProjection().setMaxIterations(10000);
+            RigidLinkProjection p = new RigidLinkProjection();
             p.setSweeps(new ParallelLinkSweeps(s, pool, 1));
-            assertTrue(p.project(s, x));
+            assertTrue(p.project(s, x, RigidLinkProjection.DEFAULT_TOLERANCE, 10000));
         }
         // Mass-weighted corrections cancel: sum m_i (x_i - x_i^0) is unchanged (0 up to rounding).
         for (int k = 0; k < 3; k++) {
@@ -107,9 +107,9 @@ class ParallelLinkSweepsTest {
         double[] y = perturbed(fixed, 9);
         double[] y0 = y.clone();
         try (WorkerPool pool = new WorkerPool(2, "test")) {
-            RigidLinkProjection p = new RigidLinkProjection().setMaxIterations(10000);
+            RigidLinkProjection p = new RigidLinkProjection();
             p.setSweeps(new ParallelLinkSweeps(fixed, pool, 1));
-            p.project(fixed, y);
+            p.project(fixed, y, RigidLinkProjection.DEFAULT_TOLERANCE, 10000);
         }
         for (int node : fixed.fixedNode) {
             for (int k = 3 * node; k < 3 * node + 3; k++) {

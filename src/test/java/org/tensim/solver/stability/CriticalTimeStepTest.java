@@ -130,7 +130,7 @@ class CriticalTimeStepTest {
     void explicitStepBeyondEstimateCanBeAnError() {
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)),
                 Integrators.create("rk4"));
-        sim.setStepLimitSeverity(Severity.ERROR);
+        sim.apply(sim.settings().withStepLimitSeverity(Severity.ERROR));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.step(0.3));
         assertTrue(e.getMessage().contains("critical step estimate " + 2 * Math.sqrt(2) / 10),
                 e.getMessage());
@@ -141,7 +141,7 @@ class CriticalTimeStepTest {
     void implicitMethodNeverWarns() {
         Simulation sim = new Simulation(SystemState.compile(SpringScene.build(10, 0, 0.01)),
                 Integrators.create("implicit-euler"));
-        sim.setStepLimitSeverity(Severity.ERROR);
+        sim.apply(sim.settings().withStepLimitSeverity(Severity.ERROR));
         sim.step(10); // w h = 100
         assertEquals(0, sim.stepLimitWarnings());
     }
