@@ -36,8 +36,8 @@ public final class Main implements Runnable {
         CommandLine cl = new CommandLine(new Main());
         // Every number option is a measured quantity, a factor or a count: NaN and infinities
         // (also from "1e400") are refused where they enter, with the option's name.
-        cl.registerConverter(Double.class, Main::finite);
-        cl.registerConverter(double.class, Main::finite);
+        cl.registerConverter(Double.class, org.tensim.cli.OptionChecks::finite);
+        cl.registerConverter(double.class, org.tensim.cli.OptionChecks::finite);
         long[] foldersBefore = {0};
         cl.setExecutionStrategy(parsed -> {
             foldersBefore[0] = RunFolder.opened();
@@ -53,19 +53,6 @@ public final class Main implements Runnable {
             return usage ? RunStatus.USAGE_EXIT : RunStatus.FAILED.exitCode();
         });
         return cl;
-    }
-
-    static Double finite(String text) {
-        double v;
-        try {
-            v = Double.parseDouble(text.trim());
-        } catch (NumberFormatException e) {
-            throw new CommandLine.TypeConversionException("'" + text + "' is not a number");
-        }
-        if (!Double.isFinite(v)) {
-            throw new CommandLine.TypeConversionException("'" + text + "' is not a finite number");
-        }
-        return v;
     }
 
     /**

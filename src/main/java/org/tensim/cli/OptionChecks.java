@@ -17,6 +17,23 @@ public final class OptionChecks {
     private OptionChecks() {
     }
 
+    /**
+     * Reads a number given on the command line: a finite double, else a conversion error naming the text (picocli
+     * reports it with the option).
+     */
+    public static double finite(String text) {
+        double v;
+        try {
+            v = Double.parseDouble(text.trim());
+        } catch (NumberFormatException e) {
+            throw new CommandLine.TypeConversionException("'" + text + "' is not a number");
+        }
+        if (!Double.isFinite(v)) {
+            throw new CommandLine.TypeConversionException("'" + text + "' is not a finite number");
+        }
+        return v;
+    }
+
     /** {@code --out}: a non-empty path that is not an existing file. */
     public static Path outFolder(CommandSpec spec, Path out) {
         if (out == null || out.toString().isBlank()) {

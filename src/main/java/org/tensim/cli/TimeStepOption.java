@@ -24,16 +24,7 @@ public final class TimeStepOption {
     static final class Parser implements CommandLine.ITypeConverter<Step> {
         @Override
         public Step convert(String text) {
-            double v;
-            try {
-                v = Double.parseDouble(text.trim());
-            } catch (NumberFormatException e) {
-                throw new CommandLine.TypeConversionException("'" + text + "' is not a number");
-            }
-            if (!Double.isFinite(v)) {
-                throw new CommandLine.TypeConversionException("'" + text + "' is not a finite number");
-            }
-            return new Step(v, null);
+            return new Step(OptionChecks.finite(text), null);
         }
     }
 
