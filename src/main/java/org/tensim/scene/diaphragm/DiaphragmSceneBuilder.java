@@ -66,12 +66,13 @@ final class DiaphragmSceneBuilder {
         b.meshSprings();
         b.rigidLinks();
         b.thicknessSprings();
-        if (bones != null) {
+        if (bones != null && spec.cage().thorax() != null) {
             ThoraxCage.Built tc = ThoraxCage.build(b.t, b.springs, bones, p, cycle, controls);
             b.cage = tc.cage();
             b.boneMotions = tc.motions();
         } else {
             b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+            b.boneMotions = bones == null ? null : ParametricBones.motions(bones, b.cage, b.t); // --cage surfaces
         }
         b.attach();
         b.contact();
