@@ -243,11 +243,11 @@ public final class DiaphragmOptions {
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
                 ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa);
-        DiaphragmSpec.Cage bones = new DiaphragmSpec.Cage(boxes, thorax,
+        DiaphragmSpec.Cage cageSpec = new DiaphragmSpec.Cage(boxes, thorax,
                 contact == null ? base.cage().contact() : contact,
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
                 liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM, cageSurfaces());
-        return new DiaphragmSpec(m, p, b, br, bones, actionLines,
+        return new DiaphragmSpec(m, p, b, br, cageSpec, actionLines,
                 tendonRule == null ? TendonRule.PLANE : tendonRule);
     }
 
