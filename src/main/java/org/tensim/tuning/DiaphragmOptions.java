@@ -50,6 +50,13 @@ public final class DiaphragmOptions {
                     + " its origins and sliding on the bones elsewhere) (default: the parametric rib cage)")
     public Path thorax;
 
+    @Option(names = "--cage", paramLabel = "segments|surfaces",
+            description = "how the diaphragm meets the parametric cage (or --boxes): segments (the attachment band to"
+                    + " the rib, cartilage and spine lines) or surfaces (the cage's bones swept into closed surfaces,"
+                    + " attached at the origins and sliding on the bones elsewhere, as with --thorax, whose bones are"
+                    + " always surfaces) (default: segments)")
+    String cage;
+
     @Option(names = "--labels", paramLabel = "FILE",
             description = "per-vertex labels of the mesh (tendon, muscle, origin-sternal, origin-costal,"
                     + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
@@ -236,11 +243,11 @@ public final class DiaphragmOptions {
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
                 ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa);
-        DiaphragmSpec.Cage cage = new DiaphragmSpec.Cage(boxes, thorax,
+        DiaphragmSpec.Cage cageSpec = new DiaphragmSpec.Cage(boxes, thorax,
                 contact == null ? base.cage().contact() : contact,
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
-                liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM);
-        return new DiaphragmSpec(m, p, b, br, cage, actionLines,
+                liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM, cageSurfaces());
+        return new DiaphragmSpec(m, p, b, br, cageSpec, actionLines,
                 tendonRule == null ? TendonRule.PLANE : tendonRule);
     }
 
@@ -332,6 +339,24 @@ public final class DiaphragmOptions {
             throw new IllegalArgumentException("field '" + field + "' must be a string or a number, got " + v);
         }
         return isPath ? base.resolve(v.asText()).normalize().toString() : v.asText();
+    }
+
+    /**
+     * Whether {@code --cage surfaces} was given; refuses a value that is neither segments nor surfaces, and
+     * segments with a thorax (whose bones are surfaces).
+     */
+    private boolean cageSurfaces() {
+        if (cage == null) {
+            return DiaphragmSpec.Cage.defaults().surfaces();
+        }
+        if (!cage.equals("segments") && !cage.equals("surfaces")) {
+            throw new IllegalArgumentException("--cage must be segments or surfaces, got '" + cage + "'");
+        }
+        if (cage.equals("segments") && thorax != null) {
+            throw new IllegalArgumentException("--cage segments: a thorax (--thorax " + thorax + ") has bone surfaces,"
+                    + " not segments; leave out --cage or give --cage surfaces");
+        }
+        return cage.equals("surfaces");
     }
 
     /** Whether {@code --model paper} was given; refuses a model that is neither default nor paper. */

@@ -44,6 +44,7 @@ class DiaphragmOptionsTest {
         v.put("thickness", 3.0);
         v.put("rings", 12);
         v.put("thorax", thorax);
+        v.put("cage", "surfaces");
         v.put("labels", labels);
         v.put("tendon-rule", "geodesic");
         v.put("contact", false);
@@ -148,6 +149,32 @@ class DiaphragmOptionsTest {
         assertEquals(cli, viaSpecFile(dir, json));
         assertEquals(v.get("thorax"), cli.cage().thorax());
         assertEquals(12, cli.mesh().rings());
+    }
+
+    @Test
+    void theCageIsSegmentsOrSurfacesEverywhereAndAThoraxIsNeverSegments(@TempDir Path dir) throws Exception {
+        DiaphragmSpec surfaces = viaCommandLine(List.of("--cage", "surfaces"));
+        assertTrue(surfaces.cage().surfaces() && surfaces.cage().boneSurfaces() && surfaces.cage().thorax() == null);
+        assertEquals(surfaces, viaGui(List.of("--cage", "surfaces")));
+        assertEquals(surfaces, viaSpecFile(dir, Map.of("cage", "surfaces")));
+        DiaphragmSpec segments = viaCommandLine(List.of("--cage", "segments"));
+        assertEquals(DiaphragmOptions.parse(List.of()).spec(null, TunableScenes.defaultRings()), segments,
+                "segments is the default");
+        assertTrue(!segments.cage().boneSurfaces());
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
+                () -> viaCommandLine(List.of("--cage", "tubes")));
+        assertTrue(bad.getMessage().contains("--cage") && bad.getMessage().contains("tubes")
+                && bad.getMessage().contains("surfaces"), bad.getMessage());
+        Path thorax = Files.createDirectories(dir.resolve("thorax"));
+        IllegalArgumentException both = assertThrows(IllegalArgumentException.class,
+                () -> viaCommandLine(List.of("--cage", "segments", "--thorax", thorax.toString())));
+        assertTrue(both.getMessage().contains("--cage segments") && both.getMessage().contains("--thorax"),
+                both.getMessage());
+        SpecReader.SpecException inSpec = assertThrows(SpecReader.SpecException.class,
+                () -> viaSpecFile(dir, Map.of("cage", "tubes")));
+        assertTrue(inSpec.getMessage().contains("tubes"), inSpec.getMessage());
+        assertTrue(viaCommandLine(List.of("--thorax", thorax.toString())).cage().boneSurfaces(),
+                "a thorax's bones are surfaces");
     }
 
     @Test

@@ -140,7 +140,8 @@ public final class DiaphragmScene {
      * controls given (a GUI's, kept across rebuilds).
      *
      * @param boxes the cage's rib and sternum boxes, metres (the parametric cage's or a file's)
-     * @param bones the thorax's bone surfaces; null for a cage made from the boxes
+     * @param bones the thorax's bone surfaces, or the boxes' cage swept into surfaces when the spec's cage says
+     *              {@code surfaces} ({@link DiaphragmSetup#read} makes them); null for the band on the cage's segments
      * @param vertexLabels per mesh vertex, a label file's labels (tendon, muscle, origins); null for the rules
      */
     public static DiaphragmScene build(TwoSurfaces surfaces, DiaphragmSpec spec, Map<String, double[]> boxes,
@@ -233,7 +234,7 @@ public final class DiaphragmScene {
         return true;
     }
 
-    /** The thorax's bones, or null for a cage made from boxes. */
+    /** The thorax's bones or the cage's swept surfaces ({@code --cage surfaces}); null for the band on segments. */
     public Bones bones() {
         return bones;
     }

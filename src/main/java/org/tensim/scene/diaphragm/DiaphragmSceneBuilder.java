@@ -66,12 +66,14 @@ final class DiaphragmSceneBuilder {
         b.meshSprings();
         b.rigidLinks();
         b.thicknessSprings();
-        if (bones != null) {
+        boolean sweptCage = spec.cage().surfaces() && spec.cage().thorax() == null; // --cage surfaces
+        if (bones != null && !sweptCage) {
             ThoraxCage.Built tc = ThoraxCage.build(b.t, b.springs, bones, p, cycle, controls);
             b.cage = tc.cage();
             b.boneMotions = tc.motions();
         } else {
             b.cage = RibCage.build(b.t, b.springs, boxes, p, cycle, controls);
+            b.boneMotions = bones == null ? null : ParametricBones.motions(bones, b.cage, b.t);
         }
         b.attach();
         b.contact();

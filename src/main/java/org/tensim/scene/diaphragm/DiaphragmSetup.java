@@ -74,7 +74,7 @@ public final class DiaphragmSetup {
      * DiaphragmSpec, DiaphragmControls)}); a thorax's bones keep their signed distances across them.
      *
      * @param boxes  the cage's rib and sternum boxes, m (empty with a thorax)
-     * @param bones  the thorax's bones, or null
+     * @param bones  the thorax's bones, the cage's swept into surfaces ({@code --cage surfaces}), or null
      * @param labels per vertex, the label file's labels, or null
      */
     public record Inputs(Surfaces surfaces, MeshReport report, Map<String, double[]> boxes, Bones bones,
@@ -95,9 +95,11 @@ public final class DiaphragmSetup {
         }
         org.tensim.io.mesh.VertexLabel[] labels = m.labels() == null ? null
                 : org.tensim.io.mesh.VertexLabelsFile.read(m.labels(), s.surfaces().mesh().vertexCount());
-        Bones bones = spec.cage().thorax() == null ? null : ThoraxBones.load(spec.cage().thorax());
-        return new Inputs(s, report, bones == null ? boxes(spec.cage().boxes()) : Map.of(), bones, labels,
-                m.describe() + ", " + spec.cage().describe());
+        DiaphragmSpec.Cage cage = spec.cage();
+        Map<String, double[]> boxes = cage.thorax() == null ? boxes(cage.boxes()) : Map.of();
+        Bones bones = cage.thorax() != null ? ThoraxBones.load(cage.thorax())
+                : cage.surfaces() ? ParametricBones.forBoxes(boxes) : null;
+        return new Inputs(s, report, boxes, bones, labels, m.describe() + ", " + cage.describe());
     }
 
     /** Builds a spec's scene from its inputs, read once ({@link #read}), with the live controls given. */

@@ -153,9 +153,13 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
      * @param contactStiffnessPaPerM penalty stiffness of the contact per unit area of diaphragm, Pa/m
      * @param liverSupportPaPerM   stiffness per unit area of the liver's compliant support under the right
      *                             hemidiaphragm, Pa/m (a thorax with a liver, contact on); 0 turns it off
+     * @param surfaces             the parametric cage (or the boxes' cage) as bone surfaces swept along its lines
+     *                             ({@code --cage surfaces}): attached at the origins and in contact elsewhere, as in
+     *                             a thorax, instead of the attachment band on its segments; a thorax has surfaces
+     *                             whatever this says
      */
     public record Cage(Path boxes, Path thorax, boolean contact, double contactStiffnessPaPerM,
-            double liverSupportPaPerM) {
+            double liverSupportPaPerM, boolean surfaces) {
         /**
          * Default contact stiffness, Pa/m: twice the attachment band's. A penalty's penetration is the local
          * pressure over it; at the band's 2.5e7 the BodyParts3D diaphragm went 0.78 mm past its start into rib 11
@@ -185,33 +189,44 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
 
         /** The project's parametric cage, contact on wherever there are bone surfaces. */
         public static Cage defaults() {
-            return new Cage(null, null, true, DEFAULT_CONTACT_PA_PER_M, DEFAULT_LIVER_PA_PER_M);
+            return new Cage(null, null, true, DEFAULT_CONTACT_PA_PER_M, DEFAULT_LIVER_PA_PER_M, false);
         }
 
         public Cage withBoxes(Path b) {
-            return new Cage(b, thorax, contact, contactStiffnessPaPerM, liverSupportPaPerM);
+            return new Cage(b, thorax, contact, contactStiffnessPaPerM, liverSupportPaPerM, surfaces);
         }
 
         public Cage withThorax(Path dir) {
-            return new Cage(boxes, dir, contact, contactStiffnessPaPerM, liverSupportPaPerM);
+            return new Cage(boxes, dir, contact, contactStiffnessPaPerM, liverSupportPaPerM, surfaces);
         }
 
         public Cage withContact(boolean on) {
-            return new Cage(boxes, thorax, on, contactStiffnessPaPerM, liverSupportPaPerM);
+            return new Cage(boxes, thorax, on, contactStiffnessPaPerM, liverSupportPaPerM, surfaces);
         }
 
         public Cage withContactStiffness(double paPerM) {
-            return new Cage(boxes, thorax, contact, paPerM, liverSupportPaPerM);
+            return new Cage(boxes, thorax, contact, paPerM, liverSupportPaPerM, surfaces);
         }
 
         /** The liver's support stiffness per unit area, Pa/m; 0 turns it off. */
         public Cage withLiverSupport(double paPerM) {
-            return new Cage(boxes, thorax, contact, contactStiffnessPaPerM, paPerM);
+            return new Cage(boxes, thorax, contact, contactStiffnessPaPerM, paPerM, surfaces);
+        }
+
+        /** The cage as bone surfaces (true) or as the attachment band's segments (false). */
+        public Cage withSurfaces(boolean on) {
+            return new Cage(boxes, thorax, contact, contactStiffnessPaPerM, liverSupportPaPerM, on);
+        }
+
+        /** Whether the bones are surfaces: a thorax, or the cage swept into surfaces. */
+        public boolean boneSurfaces() {
+            return thorax != null || surfaces;
         }
 
         /** Which cage, for summaries. */
         public String describe() {
-            return thorax != null ? "thorax " + thorax : DiaphragmSetup.cage(boxes);
+            return thorax != null ? "thorax " + thorax
+                    : DiaphragmSetup.cage(boxes) + (surfaces ? " as bone surfaces" : "");
         }
     }
 

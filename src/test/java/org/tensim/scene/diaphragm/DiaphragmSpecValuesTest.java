@@ -42,5 +42,8 @@ class DiaphragmSpecValuesTest {
         assertEquals(0, c.withLiverSupport(0).liverSupportPaPerM()); // off
         refused("-1", () -> c.withLiverSupport(-1));
         refused("--thorax", () -> c.withBoxes(java.nio.file.Path.of("b.json")).withThorax(java.nio.file.Path.of("t")));
+        assertTrue(!c.surfaces() && !c.boneSurfaces(), "the default cage is the band's segments");
+        assertEquals(c.withContactStiffness(1e8).withSurfaces(true), c.withSurfaces(true).withContactStiffness(1e8));
+        assertTrue(c.withSurfaces(true).boneSurfaces() && c.withThorax(java.nio.file.Path.of("t")).boneSurfaces());
     }
 }
