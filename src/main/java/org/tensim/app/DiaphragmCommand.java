@@ -84,7 +84,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         final DiaphragmSpec sceneSpec = CommandChecks.scene(spec, scene,
                 Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH : null,
                 DiaphragmSpec.PAPER_RINGS);
-        boolean inThorax = sceneSpec.cage().thorax() != null;
+        boolean inThorax = sceneSpec.cage().boneSurfaces();
         solver.check(spec, sceneSpec, seconds);
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
@@ -98,9 +98,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         + " --cg-tolerance");
             }
             if (inThorax) {
-                throw usage("--realtime was measured on the double dome held by its band; its step drifts in a"
-                        + " thorax (docs/thorax.md): use --integrator bdf2 --dt 0.0025 --newton 3 --cg-iterations 20"
-                        + " with --thorax");
+                throw usage("--realtime was measured on the double dome held by its band; its step drifts with"
+                        + " bone surfaces and contact (docs/thorax.md): use --integrator bdf2 --dt 0.0025 --newton 3"
+                        + " --cg-iterations 20 with --thorax or --cage surfaces");
             }
             setting = RealTimeSetting.forMuscleLoad(sceneSpec.boundary().muscleLoad());
             chosen = setting.newIntegrator();

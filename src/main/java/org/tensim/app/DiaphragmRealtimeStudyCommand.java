@@ -53,9 +53,9 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
-        if (s.cage().thorax() != null || s.mesh().labels() != null || scene.mesh != null) {
-            throw usage("the real-time study runs the generated double dome at its --study-rings: leave out --mesh,"
-                    + " --thorax and --labels");
+        if (s.cage().boneSurfaces() || s.mesh().labels() != null || scene.mesh != null) {
+            throw usage("the real-time study runs the generated double dome held by its band at its --study-rings:"
+                    + " leave out --mesh, --thorax, --cage surfaces and --labels");
         }
         java.util.regex.Pattern only;
         try {

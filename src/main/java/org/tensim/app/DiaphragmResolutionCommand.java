@@ -80,6 +80,10 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                     + " and the study decimates it");
         }
         boolean ownMesh = scene.mesh != null;
+        if (s.cage().surfaces()) {
+            throw usage("--cage surfaces cannot go with the resolution study yet: its generated models are held by the"
+                    + " band on the cage's segments (use --thorax with --mesh for bone surfaces)");
+        }
         if (s.cage().thorax() != null && !ownMesh) {
             throw usage("the resolution study with --thorax needs --mesh: the diaphragm registered to that thorax");
         }

@@ -97,7 +97,7 @@ public final class DiaphragmSolverOptions {
      */
     private Integrator configured(Integrator i, DiaphragmSpec s) {
         if (i instanceof PrefactoredBdf2 b) {
-            if (s.cage().thorax() != null && s.cage().contact() && integrator.name().equals(PrefactoredBdf2.NAME)) {
+            if (s.cage().boneSurfaces() && s.cage().contact() && integrator.name().equals(PrefactoredBdf2.NAME)) {
                 b.setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
                 b.setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
             }

@@ -341,6 +341,11 @@ public final class DiaphragmOptions {
         return isPath ? base.resolve(v.asText()).normalize().toString() : v.asText();
     }
 
+    /** Whether the bones are surfaces ({@code --thorax} or {@code --cage surfaces}): contact is on the table. */
+    public boolean boneSurfaces() {
+        return thorax != null || cageSurfaces();
+    }
+
     /**
      * Whether {@code --cage surfaces} was given; refuses a value that is neither segments nor surfaces, and
      * segments with a thorax (whose bones are surfaces).

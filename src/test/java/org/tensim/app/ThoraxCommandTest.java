@@ -141,6 +141,14 @@ class ThoraxCommandTest {
         assertTrue(r[2].contains("not both"), r[2]);
         r = run("diaphragm", "--thorax", dir.toString(), "--realtime", "--out", dir.resolve("f").toString());
         assertTrue(r[2].contains("--realtime was measured on the double dome"), r[2]);
+        // The swept cage has bone surfaces and contact too: the band's real-time step and studies do not take it.
+        r = run("diaphragm", "--cage", "surfaces", "--realtime", "--out", dir.resolve("h").toString());
+        assertEquals("2", r[0]);
+        assertTrue(r[2].contains("--realtime was measured on the double dome"), r[2]);
+        r = run("diaphragm", "realtime-study", "--cage", "surfaces", "--out", dir.resolve("i").toString());
+        assertTrue(r[2].contains("leave out --mesh, --thorax, --cage surfaces and --labels"), r[2]);
+        r = run("diaphragm", "resolution-study", "--cage", "surfaces", "--out", dir.resolve("j").toString());
+        assertTrue(r[2].contains("--cage surfaces cannot go with the resolution study"), r[2]);
         r = run("diaphragm", "--newton", "3", "--out", dir.resolve("g").toString());
         assertTrue(r[2].contains("--newton and --cg-iterations apply to --integrator bdf2 only, not rk2"), r[2]);
         r = run("diaphragm", "--tendon-rule", "sphere", "--out", dir.resolve("d").toString());

@@ -120,7 +120,7 @@ public final class GuiCommand implements Callable<Integer> {
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
-                options.thorax != null);
+                options.boneSurfaces());
         w.tuning().setSceneOptions(sceneArgs);
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
