@@ -17,7 +17,7 @@ import org.tensim.io.mesh.MeshReaders;
 import org.tensim.io.mesh.MeshUnits;
 
 /**
- * The random-kill soak of issue 13: 20 runs of each headless command, each stopped
+ * The random-kill soak: 20 runs of each headless command, each stopped
  * at a random moment by SIGINT, SIGTERM or SIGKILL (or left to end), over a folder
  * holding an old run's files; every folder must then hold a complete result or a
  * clearly marked incomplete one, with no torn row and no stale file

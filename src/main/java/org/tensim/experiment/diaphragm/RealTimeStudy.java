@@ -62,7 +62,7 @@ public final class RealTimeStudy {
     static final int[] BDF2_NEWTON = {2, 3, 6};
     /** Steps of those rows, s. */
     static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02};
-    /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime} (issue 10). */
+    /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime}. */
     public static final double TOLERANCE = 0.05;
     /** Difference of the apex's descent from RK2's accepted by {@code --realtime}, mm. */
     public static final double APEX_TOLERANCE_MM = 1;

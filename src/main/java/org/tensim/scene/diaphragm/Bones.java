@@ -95,7 +95,7 @@ public final class Bones {
     }
 
     /**
-     * The diaphragm's origins (Gray's Anatomy, 41st ed.; the issue's list): the xiphoid (sternal part);
+     * The diaphragm's origins (Gray's Anatomy, 41st ed.): the xiphoid (sternal part);
      * the inner surfaces of the lower six costal cartilages and ribs, 7-12 (costal part); the bodies of
      * the lumbar vertebrae, right L1-L3 and left L1-L2 (the crura; the arcuate ligaments span from them
      * to rib 12).
