@@ -50,7 +50,7 @@ class PresetSceneTest {
                 "--band-stiffness", "3e5", "--band-all-segments", "--muscle-load", "pressure", "--weld-tolerance",
                 "0.002", "--min-piece-fraction", "0.02", "--tendon-normal", "0,0.1,1", "--tendon-point", "1,2,3",
                 "--tendon-fraction", "0.2", "--tissue-model", "springs", "--action-line", "0,10,40",
-                "--action-line", "0,-10,40");
+                "--action-line", "0,-10,40", "--cage", "surfaces");
         List<String> inThorax = List.of("--mesh", mesh.toString(), "--labels", labels.toString(), "--thorax",
                 thorax.toString(), "--no-contact", "--contact-stiffness", "2e6", "--liver-support", "1e5",
                 "--muscle-load", "pressure");
