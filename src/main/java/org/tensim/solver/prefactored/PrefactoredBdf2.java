@@ -63,7 +63,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
 
     private int newtonIterations = DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
-    private double krylovTolerance = KRYLOV_TOLERANCE;
+    private final double krylovTolerance = KRYLOV_TOLERANCE;
     private Executor executor;
 
     private SystemState s;
@@ -127,15 +127,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     /** Cap on CG iterations per Newton iteration (>= 1). */
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
-        return this;
-    }
-
-    /**
-     * Relative residual (dimensionless, > 0) at which CG stops (default {@link #KRYLOV_TOLERANCE}); a tight one
-     * with many iterations gives the converged step, against which preconditioner variants are compared.
-     */
-    public PrefactoredBdf2 setKrylovTolerance(double r) {
-        krylovTolerance = Check.positive("BDF2 CG tolerance", "(relative residual)", r);
         return this;
     }
 
