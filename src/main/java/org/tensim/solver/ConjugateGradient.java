@@ -35,7 +35,6 @@ public final class ConjugateGradient {
     private final double[] q;
     private int iterations;
     private double relativeResidual;
-    private boolean converged;
 
     /** Scratch for systems of n unknowns. */
     public ConjugateGradient(int n) {
@@ -105,14 +104,8 @@ public final class ConjugateGradient {
             }
         }
         iterations = it;
-        if (residual) {
-            relativeResidual = bNorm2 > 0 ? Math.sqrt(rr / bNorm2) : 0;
-            converged = rr <= stop2;
-        } else {
-            relativeResidual = relative;
-            converged = relative <= tolerance;
-        }
-        return converged;
+        relativeResidual = residual ? (bNorm2 > 0 ? Math.sqrt(rr / bNorm2) : 0) : relative;
+        return residual ? rr <= stop2 : relative <= tolerance;
     }
 
     /** Iterations of the last solve. */
