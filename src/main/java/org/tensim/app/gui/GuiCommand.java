@@ -61,7 +61,8 @@ public final class GuiCommand implements Callable<Integer> {
     double after = 2;
 
     @Option(names = "--run-for", paramLabel = "S",
-            description = {"play for S seconds of wall time once the view shows, close the window and print a JSON"
+            description = {"play for S seconds of wall time once the view shows (on until the first step if none was done"
+                    + " by then), close the window and print a JSON"
                     + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
                     + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)"})
     Double runFor;

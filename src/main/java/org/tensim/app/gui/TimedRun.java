@@ -14,7 +14,8 @@ import org.tensim.tuning.SimulationRunner;
 
 /**
  * {@code gui --run-for S}: plays the window for S seconds of wall time once its
- * view shows, closes it, and returns what was measured, so that the window can be
+ * view shows (longer only if no step was done by then: until the first step, at
+ * most 10 minutes), closes it, and returns what was measured, so that the window can be
  * checked headless (under Xvfb) and its speed compared between configurations.
  *
  * <p>Measured over the S seconds (after the window is up and the first frames are
@@ -75,7 +76,10 @@ final class TimedRun {
         long shownStep = w.view().shownStep();
         long pictures = 0;
         long end = t0 + (long) (seconds * 1e9);
-        while (System.nanoTime() < end && r.divergence() == null) {
+        long stepDeadline = t0 + 600_000_000_000L;
+        // Past S, play on until the first step is done (a summary of no step says nothing), within 10 minutes.
+        while ((System.nanoTime() < end || (r.steps() == steps0 && System.nanoTime() < stepDeadline))
+                && r.divergence() == null) {
             Thread.sleep(4);
             long s = w.view().shownStep();
             if (s != shownStep) {

@@ -19,7 +19,7 @@ import org.tensim.testsupport.CoarseMeshes;
 
 /**
  * {@code tensim gui --thorax}: the decimated BodyParts3D diaphragm of {@code ThoraxCommandTest} in the shared thorax
- * opens, runs two seconds at most in real time and reports the live readouts (dome descent, contact area, penetration,
+ * opens, plays two seconds of wall time (or until its first step) and reports the live readouts (dome descent, contact area, penetration,
  * attached area) in its closing line. With a thorax the window opens with the step converged for contact
  * ({@code bdf2-contact}: 3 Newton x 20 CG at 5 ms; docs/thorax.md, "Solver settings"), not the real-time step that
  * drifts there. Skipped where {@code ../shared} or a display is absent.
