@@ -23,6 +23,7 @@ import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
+import org.tensim.solver.prefactored.PrefactoredTrBdf2;
 
 /**
  * What reaches real time, and at what accuracy: the diaphragm at several
@@ -61,7 +62,9 @@ public final class RealTimeStudy {
     /** Newton iterations of the most accurate BDF2 rows (the default is one: a linearly implicit step). */
     static final int[] BDF2_NEWTON = {2, 3, 6};
     /** Steps of those rows, s. */
-    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02};
+    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02, 0.025, 0.05};
+    /** TR-BDF2 steps tried, s ({@link PrefactoredTrBdf2}: two stages a step). */
+    static final double[] TR_BDF2_STEPS = {0.025, 1.0 / 30, 0.05};
     /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime}. */
     public static final double TOLERANCE = 0.05;
     /** Difference of the apex's descent from RK2's accepted by {@code --realtime}, mm. */
@@ -111,6 +114,13 @@ public final class RealTimeStudy {
                         1e3 * h, newton, BDF2_MORE_CG), () -> new PrefactoredBdf2().setNewtonIterations(newton)
                                 .setKrylovIterations(BDF2_MORE_CG), h, 2, false));
             }
+        }
+        for (double h : TR_BDF2_STEPS) {
+            c.add(new Config(String.format(Locale.ROOT, "tr-bdf2 at %.0f ms / 2 threads", 1e3 * h),
+                    () -> Integrators.create(PrefactoredTrBdf2.NAME), h, 2, false));
+            c.add(new Config(String.format(Locale.ROOT, "tr-bdf2 at %.0f ms with 3 Newton x 8 CG / 2 threads",
+                    1e3 * h), () -> new PrefactoredTrBdf2().setNewtonIterations(3).setKrylovIterations(BDF2_MORE_CG),
+                    h, 2, false));
         }
         return c;
     }
