@@ -1,5 +1,6 @@
 package org.tensim.solver.prefactored;
 
+import java.util.concurrent.Executor;
 import org.tensim.model.Check;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
@@ -39,6 +40,7 @@ public final class PrefactoredTrBdf2 implements Integrator {
     private int newtonIterations = PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS;
 
+    private Executor executor;
     private SystemState s;
     private PrefactoredMatrix matrix;
     private NewtonKrylov newton;
@@ -92,6 +94,20 @@ public final class PrefactoredTrBdf2 implements Integrator {
     /** Cap on CG iterations per Newton iteration. */
     public int krylovIterations() {
         return krylovIterations;
+    }
+
+    /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
+    public PrefactoredTrBdf2 setRefactorExecutor(Executor e) {
+        executor = java.util.Objects.requireNonNull(e, "refactorisation executor");
+        if (matrix != null) {
+            matrix.setExecutor(e);
+        }
+        return this;
+    }
+
+    /** Factorisations a step had to wait for: 1 after the first step, and never more. */
+    public long synchronousFactorisations() {
+        return matrix == null ? 0 : matrix.synchronousFactorisations();
     }
 
     /** Force passes made for the Jacobian products so far (the residual passes come on top). */
@@ -175,6 +191,9 @@ public final class PrefactoredTrBdf2 implements Integrator {
         }
         s = st;
         matrix = new PrefactoredMatrix(st);
+        if (executor != null) {
+            matrix.setExecutor(executor);
+        }
         newton = new NewtonKrylov(st, matrix.freeIndex, matrix.freeNodes);
         f0 = new double[3 * st.nodeCount];
         steps = 0;

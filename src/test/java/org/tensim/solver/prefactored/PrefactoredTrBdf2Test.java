@@ -52,6 +52,32 @@ class PrefactoredTrBdf2Test {
         }
     }
 
+    /**
+     * The stiffness of the chain quadruples while its refactorisation is held back: both stages go on with the
+     * old factor as preconditioner and still reach the new equilibrium, and no step waits.
+     */
+    @Test
+    void withAStaleFactorAfterAStiffnessChangeItReachesTheNewEquilibrium() {
+        int n = 12;
+        double m = 0.01;
+        double k = 50;
+        double l = 0.01;
+        PrefactoredBdf2Test.HeldExecutor slow = new PrefactoredBdf2Test.HeldExecutor();
+        PrefactoredTrBdf2 tr = new PrefactoredTrBdf2().setRefactorExecutor(slow);
+        Simulation sim = new Simulation(SystemState.compile(PrefactoredBdf2Test.chain(n, m, k, l, null)), tr);
+        sim.runUntil(1, 0.05);
+        for (int i = 0; i < sim.state().springCount(); i++) {
+            sim.state().setSpringStiffness(i, 4 * k);
+        }
+        sim.runUntil(30, 0.05);
+        assertEquals(1, slow.held.size(), "one refactorisation requested, held back");
+        assertEquals(1, tr.synchronousFactorisations(), "no step waited for the new factor");
+        for (int i = 0; i <= n; i++) {
+            assertEquals(PrefactoredBdf2Test.exactZ(i, n, m, 4 * k, l, 0), sim.state().x[3 * i + 2], 1e-9,
+                    "z of node " + i + " (old factor)");
+        }
+    }
+
     @Test
     void aRigidPendulumComesToRestOnItsConstrainedEquilibriumAtLargeSteps() {
         for (double h : new double[] {0.002, 0.02, 0.05}) {
