@@ -16,14 +16,13 @@ import org.tensim.solver.Simulation;
 import org.tensim.solver.parallel.Parallelism;
 import org.tensim.solver.prefactored.Bdf2Part;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
-import org.tensim.solver.prefactored.PrefactoredTrBdf2;
 
 /**
  * Two integrators of the catalogue on the same scene, in one JVM, timed in alternating rounds: a ratio of
  * before and after measured at the same moments, so that the load of a shared machine falls on both alike.
  * Each integrator steps its own copy of the scene (the same scene, the same step); a round runs
  * {@code steps} steps of each, the order alternating from round to round. For each round: wall and CPU time
- * per step, and for {@code bdf2}'s family and {@code tr-bdf2} the wall time per step of its solves with the factor
+ * per step, and for {@code bdf2}'s family the wall time per step of its solves with the factor
  * ({@link Bdf2Part#SOLVES}), with the time of day (UTC) and the machine's 1-minute load average. A last line
  * gives the medians of the ratios (first / second: above 1, the second is faster) and how far apart the two
  * scenes' positions ended.
@@ -61,8 +60,7 @@ final class InterleavedComparison {
 
         /** Total ms of a part of bdf2's solve so far (0 for other integrators). */
         double partMillis(Bdf2Part part) {
-            return integrator instanceof PrefactoredBdf2 b ? b.partMillisPerStep(part) * steps
-                    : integrator instanceof PrefactoredTrBdf2 tr ? tr.partMillisPerStep(part) * steps : 0;
+            return integrator instanceof PrefactoredBdf2 b ? b.partMillisPerStep(part) * steps : 0;
         }
     }
 
@@ -173,7 +171,7 @@ final class InterleavedComparison {
                 moved = Math.max(moved, Math.abs(a[k] - x0[k]));
             }
             for (Side s : sides) {
-                if (s.integrator instanceof PrefactoredBdf2 || s.integrator instanceof PrefactoredTrBdf2) {
+                if (s.integrator instanceof PrefactoredBdf2 bdf) {
                     // Where a step's time goes: wall ms per step over the timed rounds; "step" is their mean,
                     // "rest" the step's time outside the parts (predictor, history, driven nodes, error
                     // estimate, stages 2-3 and the check).
@@ -189,9 +187,7 @@ final class InterleavedComparison {
                     parts.put("rest", round(step - sumParts));
                     parts.put("step", round(step));
                     sum.put(s.name + "_parts_ms_per_step", parts);
-                    if (s.integrator instanceof PrefactoredBdf2 bdf) {
-                        sum.put(s.name + "_factor_nonzeros", bdf.factorNonZeros());
-                    }
+                    sum.put(s.name + "_factor_nonzeros", bdf.factorNonZeros());
                 }
             }
             sum.put("simulated_s", sides.get(0).steps * sides.get(0).dt);

@@ -14,7 +14,6 @@ import org.tensim.solver.SimulationDivergedException;
 import org.tensim.solver.integrators.ImplicitEuler;
 import org.tensim.solver.parallel.Parallelism;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
-import org.tensim.solver.prefactored.PrefactoredTrBdf2;
 
 /**
  * One timed run of the real-time study: the diaphragm from rest with one integrator, step and thread
@@ -131,8 +130,7 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
         }
         double simulated = sim.time();
         double products = in instanceof ImplicitEuler ie ? ie.matrixVectorProducts()
-                : in instanceof PrefactoredBdf2 b ? b.jacobianProducts()
-                : in instanceof PrefactoredTrBdf2 tr ? tr.jacobianProducts() : 0;
+                : in instanceof PrefactoredBdf2 b ? b.jacobianProducts() : 0;
         boolean[] upper = new boolean[nd];
         for (int v = 0; v < nd; v++) {
             upper[v] = scene.surfaces().isUpper(v);

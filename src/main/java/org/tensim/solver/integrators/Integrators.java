@@ -8,7 +8,6 @@ import java.util.function.Supplier;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
-import org.tensim.solver.prefactored.PrefactoredTrBdf2;
 
 /**
  * The project's one catalogue of integrators: every named setup (a method with its settings), by name. It is
@@ -82,7 +81,6 @@ public final class Integrators {
         METHODS.put("rk4", RK4::new);
         METHODS.put("implicit-euler", ImplicitEuler::new);
         METHODS.put(PrefactoredBdf2.NAME, PrefactoredBdf2::new);
-        METHODS.put(PrefactoredTrBdf2.NAME, PrefactoredTrBdf2::new);
         for (Map.Entry<String, Supplier<Integrator>> e : METHODS.entrySet()) {
             String n = e.getKey();
             String label = n + ", order " + e.getValue().get().order() + (n.equals(DEFAULT) ? " (paper)"
