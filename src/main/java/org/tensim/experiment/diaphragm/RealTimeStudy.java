@@ -46,7 +46,8 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * step at coarse resolutions), and implicit Euler at 5, 10 and 20 ms with a CG
  * tolerance of 1e-3 (the catalogue's {@value Integrators#REAL_TIME_IMPLICIT}; a larger
  * step than RK2's stability allows; the CG solve is the price), and the large-step BDF2 ({@link PrefactoredBdf2}, two threads) at
- * 5-25 ms with 4 and 8 CG iterations a step. The comparison with RK2 at the same
+ * 5-50 ms with 4 and 8 CG iterations a step, and with 2, 3 and 6 Newton iterations of 8 (at 5-50 ms:
+ * how much of the error is the inexact solve's). The comparison with RK2 at the same
  * resolution separates the integrator's error from the resolution's.
  */
 public final class RealTimeStudy {
@@ -61,7 +62,7 @@ public final class RealTimeStudy {
     /** Newton iterations of the most accurate BDF2 rows (the default is one: a linearly implicit step). */
     static final int[] BDF2_NEWTON = {2, 3, 6};
     /** Steps of those rows, s. */
-    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02};
+    static final double[] BDF2_NEWTON_STEPS = {0.005, 0.01, 0.02, 0.025, 0.05};
     /** Relative RMS displacement error against RK2 at the same mesh accepted by {@code --realtime}. */
     public static final double TOLERANCE = 0.05;
     /** Difference of the apex's descent from RK2's accepted by {@code --realtime}, mm. */
