@@ -33,11 +33,8 @@ public final class BreathingMetrics implements StepListener {
     private double apexAtInsp = Double.NaN;
     private double[] heightsExp;
     private double largestDescent = Double.NaN;
-    /**
-     * Per diaphragm node: 0 not a dome candidate, 1 where the right dome's top is sought, 2 the left's
-     * ({@link org.tensim.scene.diaphragm.MeasuringSites#domeTopCandidates}).
-     */
-    private final int[] half;
+    /** How each half's top is read ({@link org.tensim.scene.diaphragm.MeasuringSites#domeHeights}). */
+    private final org.tensim.scene.diaphragm.DomeHeights domeHeights;
     /** Where each half's top is measured (right, left), for the summary. */
     private final String[] site;
     private double[] domeTopsExp;
@@ -82,7 +79,7 @@ public final class BreathingMetrics implements StepListener {
         for (int v = 0; v < nodes; v++) {
             origin[v] = scene.isAttached(v);
         }
-        this.half = org.tensim.scene.diaphragm.MeasuringSites.domeTopCandidates(scene, DOME_RADIUS_M);
+        this.domeHeights = org.tensim.scene.diaphragm.MeasuringSites.domeHeights(scene, DOME_RADIUS_M);
         this.site = org.tensim.scene.diaphragm.MeasuringSites.domeTopSites(scene, DOME_RADIUS_M);
         this.cartilageMarkers = org.tensim.scene.diaphragm.MeasuringSites.cartilageMarkerNodes(scene);
         this.distances = new double[scene.topology().contacts().size()];
@@ -98,19 +95,13 @@ public final class BreathingMetrics implements StepListener {
     public static final double DOME_RADIUS_M = org.tensim.scene.diaphragm.MeasuringSites.DOME_TOP_RADIUS_M;
 
     /**
-     * The height of each dome's top (right, left), m: the highest of its candidate nodes
-     * ({@link org.tensim.scene.diaphragm.MeasuringSites#domeTopCandidates}): within {@link #DOME_RADIUS_M} of its top at rest, the local
-     * highest point (the mesh's highest node may lie on the other dome, or on the chest wall the ribs lift), or,
-     * for a half without a dome top of its own, on its midclavicular line.
+     * The height of each dome's top (right, left), m ({@link org.tensim.scene.diaphragm.MeasuringSites#domeHeights}):
+     * within {@link #DOME_RADIUS_M} of its top at rest, the local highest point (the mesh's highest node may lie on
+     * the other dome, or on the chest wall the ribs lift), or, for a half without a dome top of its own, the highest
+     * point of the upper surface on its midclavicular line.
      */
     private double[] domeTops(SystemState s) {
-        double[] top = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int v = 0; v < nodes; v++) {
-            if (half[v] > 0) {
-                top[half[v] - 1] = Math.max(top[half[v] - 1], s.x[3 * v + 2]);
-            }
-        }
-        return top;
+        return new double[] {domeHeights.top(s.x, 0), domeHeights.top(s.x, 1)};
     }
 
     /** The mean position of the cartilage markers, m; null without markers. */

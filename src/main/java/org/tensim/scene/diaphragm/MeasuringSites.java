@@ -1,8 +1,8 @@
 package org.tensim.scene.diaphragm;
 
 /**
- * Where a diaphragm scene is measured (by the run's summary and the GUI's readouts alike): the candidate nodes of
- * each hemidiaphragm's top, and the 3rd-5th costal cartilages' markers.
+ * Where a diaphragm scene is measured (by the run's summary and the GUI's readouts alike): each hemidiaphragm's top
+ * ({@link DomeHeights}), and the 3rd-5th costal cartilages' markers.
  */
 public final class MeasuringSites {
     /** Horizontal radius about each dome's top at rest within which its top is sought at every moment, m. */
@@ -10,49 +10,48 @@ public final class MeasuringSites {
 
     /**
      * Least distance of a half's top at rest from the midline, as a fraction of the half's width, for it to count
-     * as that hemidiaphragm's own dome top ({@link #domeTopCandidates}).
+     * as that hemidiaphragm's own dome top ({@link #domeHeights}).
      */
     public static final double OWN_TOP_FROM_MIDLINE = 0.2;
-    /** Half-width of the sagittal strip on the midclavicular line that measures a half without a dome top, m. */
-    public static final double STRIP_HALF_WIDTH_M = 0.010;
-
     /**
-     * Per diaphragm node, which dome top it may be: 1 the right dome's, 2 the left's, 0 neither; the top at any
-     * moment is the highest of a half's candidates. Candidates are free (not attached) upper-surface nodes.
-     * Where a half has a dome top of its own ({@link DiaphragmScene#domeTops()}, at rest, clear of the midline by
-     * {@link #OWN_TOP_FROM_MIDLINE} of the half's width), they lie within {@code radiusM} horizontally of it: the
-     * local highest point. A half whose highest point lies on the midline, rising towards the other, higher dome
-     * (the BodyParts3D diaphragm's left, the double dome's left), has no top of its own; its candidates lie within
-     * {@link #STRIP_HALF_WIDTH_M} of its midclavicular line (half-way from the midline to its lateral edge): the
-     * coronal silhouette a frontal radiograph shows there, lateral to the heart, where the hemidiaphragm's
-     * excursion is read (Hida et al.).
+     * How each half's top is read in a state ({@link DomeHeights}): where a half has a dome top of its own
+     * ({@link DiaphragmScene#domeTops()}, at rest, clear of the midline by {@link #OWN_TOP_FROM_MIDLINE} of the half's
+     * width), the highest of the free (not attached) upper-surface nodes within {@code radiusM} horizontally of it:
+     * the local highest point. A half whose highest point lies on the midline, rising towards the other, higher dome
+     * (the BodyParts3D diaphragm's left, the double dome's left), has no top of its own; it is read on its
+     * midclavicular line (half-way from the midline to its lateral edge): the highest point of the free upper surface
+     * in that sagittal plane, the coronal silhouette a frontal radiograph shows there, lateral to the heart, where the
+     * hemidiaphragm's excursion is read (Hida et al.).
      */
-    public static int[] domeTopCandidates(DiaphragmScene s, double radiusM) {
+    public static DomeHeights domeHeights(DiaphragmScene s, double radiusM) {
         double[][] tops = s.domeTops();
         int n = s.diaphragmNodes();
         TwoSurfaces surfaces = s.surfaces();
-        int[] half = new int[n];
+        boolean[] attached = new boolean[n];
+        for (int v = 0; v < n; v++) {
+            attached[v] = s.isAttached(v);
+        }
+        int[][] candidates = new int[2][];
+        int[][] line = new int[2][];
+        double[] lineX = {Double.NaN, Double.NaN};
         for (int d = 0; d < 2; d++) {
             if (tops[d] == null) {
-                continue;
-            }
-            boolean own = ownTop(surfaces, tops, d);
-            double mcl = midclavicularX(surfaces, d);
-            for (int v = 0; v < n; v++) {
-                if (!surfaces.isUpper(v) || s.isAttached(v)) {
-                    continue;
-                }
-                double x = surfaces.mesh().coord(v, 0);
-                double y = surfaces.mesh().coord(v, 1);
-                if (own ? Math.hypot(x - tops[d][0], y - tops[d][1]) < radiusM : Math.abs(x - mcl) < STRIP_HALF_WIDTH_M) {
-                    half[v] = d + 1;
-                }
+                candidates[d] = new int[0];
+            } else if (ownTop(surfaces, tops, d)) {
+                final int half = d;
+                candidates[d] = java.util.stream.IntStream.range(0, n)
+                        .filter(v -> surfaces.isUpper(v) && !attached[v] && Math.hypot(surfaces.mesh().coord(v, 0)
+                                - tops[half][0], surfaces.mesh().coord(v, 1) - tops[half][1]) < radiusM)
+                        .toArray();
+            } else {
+                lineX[d] = midclavicularX(surfaces, d);
+                line[d] = DomeHeights.lineTriangles(surfaces, attached, lineX[d]);
             }
         }
-        return half;
+        return new DomeHeights(candidates, line, lineX);
     }
 
-    /** Where each half's top is sought ({@link #domeTopCandidates}), in words: {right, left}; null for no half. */
+    /** Where each half's top is sought ({@link #domeHeights}), in words: {right, left}; null for no half. */
     public static String[] domeTopSites(DiaphragmScene s, double radiusM) {
         double[][] tops = s.domeTops();
         String[] site = new String[2];
@@ -61,8 +60,9 @@ public final class MeasuringSites {
                 site[d] = ownTop(s.surfaces(), tops, d)
                         ? String.format(java.util.Locale.ROOT, "local top, within %.0f mm of (%.1f, %.1f) mm",
                                 1e3 * radiusM, 1e3 * tops[d][0], 1e3 * tops[d][1])
-                        : String.format(java.util.Locale.ROOT, "midclavicular line, x = %.1f +/- %.0f mm",
-                                1e3 * midclavicularX(s.surfaces(), d), 1e3 * STRIP_HALF_WIDTH_M);
+                        : String.format(java.util.Locale.ROOT,
+                                "midclavicular line, the upper surface's highest point in the plane x = %.1f mm",
+                                1e3 * midclavicularX(s.surfaces(), d));
             }
         }
         return site;

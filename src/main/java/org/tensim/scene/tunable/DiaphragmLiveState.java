@@ -26,8 +26,8 @@ public final class DiaphragmLiveState implements LiveState {
     public static final byte IN_CONTACT = 1;
 
     private final int nodes;
-    /** The candidates for each dome's top (right, left), node ids. */
-    private final int[][] candidates = new int[2][];
+    /** How each dome's top (right, left) is read. */
+    private final org.tensim.scene.diaphragm.DomeHeights domeHeights;
     private final double[] restTop = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
     private final int[] markers;
     private final double[] restMarker = new double[3];
@@ -56,11 +56,9 @@ public final class DiaphragmLiveState implements LiveState {
      */
     public DiaphragmLiveState(DiaphragmScene scene, double[] rest) {
         this.nodes = scene.diaphragmNodes();
-        int[] half = MeasuringSites.domeTopCandidates(scene, MeasuringSites.DOME_TOP_RADIUS_M);
+        this.domeHeights = MeasuringSites.domeHeights(scene, MeasuringSites.DOME_TOP_RADIUS_M);
         for (int d = 0; d < 2; d++) {
-            int dome = d + 1;
-            candidates[d] = java.util.stream.IntStream.range(0, nodes).filter(v -> half[v] == dome).toArray();
-            restTop[d] = top(rest, candidates[d]);
+            restTop[d] = domeHeights.top(rest, d);
         }
         this.markers = MeasuringSites.cartilageMarkerNodes(scene);
         mean(rest, restMarker);
@@ -88,15 +86,6 @@ public final class DiaphragmLiveState implements LiveState {
         if (contact) {
             legend.add(new Legend("touching a bone now", DiaphragmViewScene.IN_CONTACT_COLOUR));
         }
-    }
-
-    /** The highest z of the nodes, m (-infinity for none). */
-    private static double top(double[] x, int[] nodes) {
-        double top = Double.NEGATIVE_INFINITY;
-        for (int v : nodes) {
-            top = Math.max(top, x[3 * v + 2]);
-        }
-        return top;
     }
 
     private int add(String label, String unit, String key) {
@@ -138,8 +127,8 @@ public final class DiaphragmLiveState implements LiveState {
     @Override
     public void measure(Simulation sim, byte[] marks, double[] out) {
         SystemState s = sim.state();
-        out[right] = 1e3 * (restTop[0] - top(s.x, candidates[0]));
-        out[left] = 1e3 * (restTop[1] - top(s.x, candidates[1]));
+        out[right] = 1e3 * (restTop[0] - domeHeights.top(s.x, 0));
+        out[left] = 1e3 * (restTop[1] - domeHeights.top(s.x, 1));
         if (cranial >= 0) {
             double z = 0;
             double y = 0;

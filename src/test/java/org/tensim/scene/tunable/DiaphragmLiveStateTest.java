@@ -71,10 +71,12 @@ class DiaphragmLiveStateTest {
         assertEquals(0, out[right], 1e-9);
         assertEquals(0, out[left], 1e-9);
         assertEquals(100 * s.tendonAreaFraction(), out[live.readout("Tendon share of upper surface")], 1e-9);
-        // Lower every right-dome candidate by 4 mm and the left by 1 mm: the tops fall by as much.
-        int[] half = org.tensim.scene.diaphragm.MeasuringSites.domeTopCandidates(s, org.tensim.scene.diaphragm.MeasuringSites.DOME_TOP_RADIUS_M);
-        for (int i = 0; i < half.length; i++) {
-            sim.state().x[3 * i + 2] -= half[i] == 1 ? 0.004 : half[i] == 2 ? 0.001 : 0;
+        // Lower the right half of the diaphragm by 4 mm and the left by 1 mm: the tops fall by as much, whether read
+        // at a local top or on a midclavicular line.
+        double[] bounds = s.surfaces().mesh().bounds();
+        double centre = 0.5 * (bounds[0] + bounds[3]);
+        for (int i = 0; i < s.diaphragmNodes(); i++) {
+            sim.state().x[3 * i + 2] -= sim.state().x[3 * i] < centre ? 0.004 : 0.001;
         }
         live.measure(sim, marks, out);
         assertEquals(4, out[right], 1e-9);
