@@ -28,7 +28,7 @@ import picocli.CommandLine.ParameterException;
 public final class DiaphragmResolutionCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
-            "resolution-pick.json");
+            "resolution-pick.json", "resolution-nodes.csv");
 
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;

@@ -217,6 +217,7 @@ public final class ResolutionStudy {
                         offsetThicknessM).surfaces(), s));
             }
         }
+        ResolutionAnalysis.nodesCsv(out.resolve("resolution-nodes.csv"), family);
         return report(List.of(family), s, out);
     }
 
