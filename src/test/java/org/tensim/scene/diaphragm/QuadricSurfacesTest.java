@@ -47,26 +47,6 @@ class QuadricSurfacesTest {
         return new TriangleMesh(m.coordinates(), java.util.Arrays.copyOf(t, n));
     }
 
-    private static boolean[] sides(TwoSurfaces s) {
-        boolean[] up = new boolean[s.mesh().vertexCount()];
-        for (int v = 0; v < up.length; v++) {
-            up[v] = s.isUpper(v);
-        }
-        return up;
-    }
-
-    private static double activeShare(TwoSurfaces s) {
-        double[] a = FibreInsertion.activation(s.mesh(), s, null, FibreInsertion.DEFAULT_LENGTH_M);
-        double[] area = SurfaceGeometry.vertexAreas(s.mesh());
-        double sum = 0;
-        double total = 0;
-        for (int v = 0; v < a.length; v++) {
-            sum += area[v] * a[v];
-            total += area[v];
-        }
-        return sum / total;
-    }
-
     @Test
     void aSheetKeepsItsThicknessItsRimAndItsArea() {
         TwoSurfaces sheet = TwoSurfaces.offset(FlatMeshes.square(0.1, 24), 0.003);
@@ -106,7 +86,7 @@ class QuadricSurfacesTest {
         System.out.printf(Locale.ROOT, "thickness %.3f of %.3f mm%n", coarse.thicknessM() * 1e3,
                 full.thicknessM() * 1e3);
         assertEquals(full.thicknessM(), coarse.thicknessM(), 0.03 * full.thicknessM(), "thickness");
-        TwoSurfaces own = TwoSurfaces.of(coarse.mesh(), sides(coarse));
+        TwoSurfaces own = TwoSurfaces.of(coarse.mesh(), DecimatedSurfacesTest.sides(coarse));
         Set<String> fullRim = new HashSet<>();
         boolean[] fr = full.ownRim();
         for (int v = 0; v < fr.length; v++) {
@@ -119,8 +99,8 @@ class QuadricSurfacesTest {
             assertTrue(!cr[v] || fullRim.contains(key(coarse.mesh(), v)), "coarse rim vertex " + v
                     + " is not one of the full mesh's rim vertices");
         }
-        double f = activeShare(full);
-        double c = activeShare(own);
+        double f = DecimatedSurfacesTest.activeShare(full);
+        double c = DecimatedSurfacesTest.activeShare(own);
         System.out.printf(Locale.ROOT, "active share: full %.3f, quadric on its own rim %.3f%n", f, c);
         assertEquals(f, c, 0.03 * f, "the coarse muscle's active share on its own rim");
     }
