@@ -227,7 +227,7 @@ public final class ResolutionStudy {
         Arrays.sort(sorted);
         List<Run> runs = new ArrayList<>();
         for (int i = sorted.length - 1; i >= 0; i--) { // coarse first
-            String label = (d == Decimation.CLUSTERING ? "cells " : "quadric, edge ") + sorted[i] + " mm";
+            String label = (d == Decimation.CLUSTERING ? "cells " : "quadric edge ") + sorted[i] + " mm";
             runs.add(simulate(name, label, d.coarsen(split, sorted[i] * 1e-3), s));
         }
         return runs;
