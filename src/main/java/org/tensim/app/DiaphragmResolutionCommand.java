@@ -117,8 +117,8 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                 run.file(n);
             }
             Map<String, Object> r = ownMesh
-                    ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm, decimation, refine,
-                            rs, folder)
+                    ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm,
+                            decimation, refine, rs, folder)
                     : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder)
                     : ResolutionStudy.run(rs, folder, noPick ? null : ResolutionPick.FILE);
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
