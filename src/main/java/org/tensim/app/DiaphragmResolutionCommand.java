@@ -10,6 +10,7 @@ import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
+import org.tensim.scene.diaphragm.Decimation;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.tuning.DiaphragmOptions;
@@ -27,7 +28,7 @@ import picocli.CommandLine.ParameterException;
 public final class DiaphragmResolutionCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
-            "resolution-pick.json");
+            "resolution-pick.json", "resolution-nodes.csv");
 
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -52,9 +53,14 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
     double tolerance = ResolutionStudy.TOLERANCE;
 
     @Option(names = "--cells", paramLabel = "MM", split = ",",
-            description = "with --mesh: vertex-clustering cell sizes, mm (default: 4, 2.8 and 2 times the mesh's"
-                    + " mean edge length)")
+            description = "with --mesh: vertex-clustering cell sizes or, with --decimation quadric, target edge"
+                    + " lengths, mm (default: 4, 2.8 and 2 times the mesh's mean edge length)")
     double[] cellsMm;
+
+    @Option(names = "--decimation", paramLabel = "KIND", converter = DecimationConverter.class,
+            description = "with --mesh: clustering (--cells are cube sizes) or quadric (edge collapse by quadric"
+                    + " error, --cells are target edge lengths) (default: clustering)")
+    Decimation decimation = Decimation.CLUSTERING;
 
     @Option(names = "--refine", paramLabel = "N",
             description = "with --mesh: also the mesh refined 1..N times by midpoint subdivision"
@@ -84,6 +90,10 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             throw usage("--cage surfaces cannot go with the resolution study yet: its generated models are held by the"
                     + " band on the cage's segments (use --thorax with --mesh for bone surfaces)");
         }
+        if (decimation != Decimation.CLUSTERING && !ownMesh) {
+            throw usage("--decimation " + decimation.name().toLowerCase(java.util.Locale.ROOT) + " needs --mesh: the"
+                    + " generated double domes are generated at each resolution, not decimated");
+        }
         if (s.cage().thorax() != null && !ownMesh) {
             throw usage("the resolution study with --thorax needs --mesh: the diaphragm registered to that thorax");
         }
@@ -107,12 +117,24 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                 run.file(n);
             }
             Map<String, Object> r = ownMesh
-                    ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm, refine,
-                            rs, folder)
+                    ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm,
+                            decimation, refine, rs, folder)
                     : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder)
                     : ResolutionStudy.run(rs, folder, noPick ? null : ResolutionPick.FILE);
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
         });
+    }
+
+    /** {@code --decimation}: {@link Decimation#parse}, its message naming the value and the choices. */
+    static final class DecimationConverter implements picocli.CommandLine.ITypeConverter<Decimation> {
+        @Override
+        public Decimation convert(String value) {
+            try {
+                return Decimation.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
     }
 
     private ParameterException usage(String message) {

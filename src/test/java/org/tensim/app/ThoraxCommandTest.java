@@ -107,8 +107,8 @@ class ThoraxCommandTest {
         Path mesh = coarseMesh();
         Path out = dir.resolve("study");
         String[] r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
-                THORAX.toString(), "--integrator", "bdf2", "--dt", "0.01", "--cells", "12", "--seconds", "0.3",
-                "--out", out.toString());
+                THORAX.toString(), "--integrator", "bdf2", "--dt", "0.01", "--decimation", "quadric", "--cells", "12",
+                "--seconds", "0.3", "--out", out.toString());
         assertEquals("0", r[0], r[2]);
         Map<String, Object> s = Json.readMap(out.resolve("resolution.json"));
         assertEquals(THORAX.toString(), s.get("thorax"));
@@ -120,12 +120,20 @@ class ThoraxCommandTest {
             // every model in the thorax breathes at the step given, not RK2's stable step
             assertEquals(0.01, ((Number) row.get("dt_s")).doubleValue(), 1e-12, row.toString());
         }
+        assertEquals("quadric edge 12.0 mm", ((Map<?, ?>) models.get(0)).get("model"));
+        assertTrue(Files.readAllLines(out.resolve("resolution-nodes.csv")).get(0).endsWith(
+                ",difference_mm quadric edge 12.0 mm"), "the nodes file's columns");
         r = run("diaphragm", "resolution-study", "--thorax", THORAX.toString(), "--out",
                 dir.resolve("no-mesh").toString());
         assertTrue(r[2].contains("the resolution study with --thorax needs --mesh"), r[2]);
         r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--labels", mesh.toString(), "--out",
                 dir.resolve("labels").toString());
         assertTrue(r[2].contains("--labels cannot go with the resolution study"), r[2]);
+        r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--decimation", "octree", "--out",
+                dir.resolve("octree").toString());
+        assertTrue(r[2].contains("decimation 'octree': expected clustering or quadric"), r[2]);
+        r = run("diaphragm", "resolution-study", "--decimation", "quadric", "--out", dir.resolve("quadric").toString());
+        assertTrue(r[2].contains("--decimation quadric needs --mesh"), r[2]);
     }
 
     @Test

@@ -24,6 +24,29 @@ final class FieldTransfer {
      */
     static double relativeRms(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] coarseRest,
             double[] coarseEnd, int[] coarseTriangles) {
+        double[] diff = differences(fineRest, fineEnd, fineUpper, coarseRest, coarseEnd, coarseTriangles);
+        double num = 0;
+        double den = 0;
+        for (int i = 0; i < fineUpper.length; i++) {
+            if (!fineUpper[i]) {
+                continue;
+            }
+            for (int a = 0; a < 3; a++) {
+                double uf = fineEnd[3 * i + a] - fineRest[3 * i + a];
+                num += diff[3 * i + a] * diff[3 * i + a];
+                den += uf * uf;
+            }
+        }
+        return Math.sqrt(num / den);
+    }
+
+    /**
+     * Per fine node (3 each, m): the coarse displacement interpolated where the node lies minus the fine one,
+     * on the upper nodes; 0 elsewhere. What {@link #relativeRms} sums, for finding where the error sits.
+     */
+    static double[] differences(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] coarseRest,
+            double[] coarseEnd, int[] coarseTriangles) {
+        double[] diff = new double[fineRest.length];
         int nt = coarseTriangles.length / 3;
         double[] box = new double[6 * nt];
         for (int t = 0; t < nt; t++) {
@@ -39,8 +62,6 @@ final class FieldTransfer {
                 box[6 * t + 3 + a] = hi;
             }
         }
-        double num = 0;
-        double den = 0;
         double[] p = new double[3];
         double[] w = new double[3];
         double[] best = new double[3];
@@ -75,11 +96,9 @@ final class FieldTransfer {
                     int v = coarseTriangles[3 * bt + k];
                     uc += best[k] * (coarseEnd[3 * v + a] - coarseRest[3 * v + a]);
                 }
-                double uf = fineEnd[3 * i + a] - fineRest[3 * i + a];
-                num += (uc - uf) * (uc - uf);
-                den += uf * uf;
+                diff[3 * i + a] = uc - (fineEnd[3 * i + a] - fineRest[3 * i + a]);
             }
         }
-        return Math.sqrt(num / den);
+        return diff;
     }
 }

@@ -120,6 +120,47 @@ final class ResolutionAnalysis {
         }
     }
 
+    /**
+     * Where the error sits: per upper node of the family's finest model, its rest position (mm), its
+     * displacement's magnitude (mm) and, per coarser model with triangles, the magnitude of the difference
+     * {@link FieldTransfer#differences} sums (mm).
+     */
+    static void nodesCsv(Path file, List<ResolutionStudy.Run> family) throws IOException {
+        ResolutionStudy.Run fine = family.get(family.size() - 1);
+        List<String> cols = new ArrayList<>(List.of("x_mm", "y_mm", "z_mm", "displacement_mm"));
+        List<double[]> diffs = new ArrayList<>();
+        for (ResolutionStudy.Run c : family.subList(0, family.size() - 1)) {
+            if (c.upperTriangles() != null) {
+                cols.add("difference_mm " + c.label());
+                diffs.add(FieldTransfer.differences(fine.rest(), fine.end(), fine.upper(), c.rest(), c.end(),
+                        c.upperTriangles()));
+            }
+        }
+        try (CsvWriter csv = new CsvWriter(file, cols, 1000)) {
+            double[] row = new double[cols.size()];
+            for (int i = 0; i < fine.upper().length; i++) {
+                if (!fine.upper()[i]) {
+                    continue;
+                }
+                double u = 0;
+                for (int a = 0; a < 3; a++) {
+                    row[a] = 1e3 * fine.rest()[3 * i + a];
+                    u += sq(fine.end()[3 * i + a] - fine.rest()[3 * i + a]);
+                }
+                row[3] = 1e3 * Math.sqrt(u);
+                for (int k = 0; k < diffs.size(); k++) {
+                    double[] d = diffs.get(k);
+                    row[4 + k] = 1e3 * Math.sqrt(sq(d[3 * i]) + sq(d[3 * i + 1]) + sq(d[3 * i + 2]));
+                }
+                csv.row(row);
+            }
+        }
+    }
+
+    private static double sq(double x) {
+        return x * x;
+    }
+
     /** Error against element size, log-log, one series per family, with the tolerance. */
     static void chart(Path png, List<Map<String, Object>> rows, double tolerance) throws IOException {
         XYChart c = Charts.lineChart("Resolution study: error against the finest model of each family",

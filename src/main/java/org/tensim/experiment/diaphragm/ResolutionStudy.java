@@ -30,6 +30,7 @@ import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
+import org.tensim.scene.diaphragm.Decimation;
 import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
@@ -45,8 +46,8 @@ import org.tensim.solver.Simulation;
  * the default 43 rings) and the BodyParts3D diaphragm simplified by vertex clustering, faces
  * kept apart, with BodyParts3D's rib boxes (reference: its finest simplification; only when that
  * mesh is present). With a
- * mesh ({@link #runMesh}), that mesh decimated by vertex clustering at the given cell sizes
- * ({@link TwoSurfaces#decimated}: faces apart, the muscle's free rim the given mesh's), as given, and
+ * mesh ({@link #runMesh}), that mesh decimated at the given sizes ({@link Decimation}: vertex clustering
+ * or quadric-error edge collapse, faces apart, the muscle's free rim the given mesh's), as given, and
  * refined by midpoint subdivision; the finest is the reference.
  */
 public final class ResolutionStudy {
@@ -140,7 +141,7 @@ public final class ResolutionStudy {
             // the mesh with the rib boxes of the same anatomy when they are there
             Setup bp = Files.isRegularFile(DiaphragmSetup.BODYPARTS3D_BOXES) ? s.withBoxes(
                     DiaphragmSetup.boxes(DiaphragmSetup.BODYPARTS3D_BOXES)) : s;
-            families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, bp));
+            families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, Decimation.CLUSTERING, bp));
         }
         Map<String, Object> summary = report(families, s, out);
         List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric);
@@ -191,11 +192,12 @@ public final class ResolutionStudy {
     }
 
     /**
-     * The study on a given mesh: decimated at {@code cellsMm} (empty: 4, 2.8 and 2 times its mean
-     * edge length), as given, and refined {@code refineLevels} times by midpoint subdivision.
+     * The study on a given mesh: decimated by {@code decimation} at {@code cellsMm} (clustering cells or target
+     * edge lengths; empty: 4, 2.8 and 2 times its mean edge length), as given, and refined {@code refineLevels}
+     * times by midpoint subdivision.
      */
     public static Map<String, Object> runMesh(Path meshFile, MeshUnits units, MeshCleaner.Options cleaning,
-            double offsetThicknessM, double[] cellsMm, int refineLevels, Setup s, Path out)
+            double offsetThicknessM, double[] cellsMm, Decimation decimation, int refineLevels, Setup s, Path out)
             throws IOException, MeshFormatException {
         Files.createDirectories(out);
         TriangleMesh given = MeshLoader.load(meshFile, units, cleaning).mesh();
@@ -206,7 +208,7 @@ public final class ResolutionStudy {
             double h = meanEdge(given) * 1e3;
             cells = Arrays.stream(CELL_FACTORS).map(f -> Math.round(f * h * 10) / 10.0).toArray();
         }
-        List<Run> family = decimated(name, surfaces, cells, s);
+        List<Run> family = decimated(name, surfaces, cells, decimation, s);
         family.add(simulate(name, "as given", surfaces, s));
         if (refineLevels > 0) {
             for (int level = 1; level <= refineLevels; level++) {
@@ -215,16 +217,18 @@ public final class ResolutionStudy {
                         offsetThicknessM).surfaces(), s));
             }
         }
+        ResolutionAnalysis.nodesCsv(out.resolve("resolution-nodes.csv"), family);
         return report(List.of(family), s, out);
     }
 
-    /** The models decimated from {@code split} at each cell size ({@link TwoSurfaces#decimated}), coarse first. */
-    private static List<Run> decimated(String name, TwoSurfaces split, double[] cellsMm, Setup s) {
+    /** The models decimated from {@code split} at each size ({@link Decimation#coarsen}), coarse first. */
+    private static List<Run> decimated(String name, TwoSurfaces split, double[] cellsMm, Decimation d, Setup s) {
         double[] sorted = cellsMm.clone();
         Arrays.sort(sorted);
         List<Run> runs = new ArrayList<>();
         for (int i = sorted.length - 1; i >= 0; i--) { // coarse first
-            runs.add(simulate(name, "cells " + sorted[i] + " mm", split.decimated(sorted[i] * 1e-3), s));
+            String label = (d == Decimation.CLUSTERING ? "cells " : "quadric edge ") + sorted[i] + " mm";
+            runs.add(simulate(name, label, d.coarsen(split, sorted[i] * 1e-3), s));
         }
         return runs;
     }

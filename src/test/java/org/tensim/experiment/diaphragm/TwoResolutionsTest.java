@@ -70,6 +70,31 @@ class TwoResolutionsTest {
         assertTrue(nearest > 0.05, "the nearest coarse node is half an edge away: error " + nearest);
     }
 
+    /** The per-node file places the error: a coarse field 1 mm off the fine one everywhere reads 1 mm at every node. */
+    @Test
+    void theNodesFileGivesEachFineNodesDifference(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        TriangleMesh coarse = FlatMeshes.square(0.1, 6);
+        TriangleMesh fine = MidpointSubdivision.refine(coarse, 1);
+        ResolutionStudy.Run rc = linear(coarse, true);
+        for (int v = 0; v < coarse.vertexCount(); v++) {
+            rc.end()[3 * v + 2] -= 0.001;
+        }
+        ResolutionStudy.Run rf = linear(fine, true);
+        java.nio.file.Path csv = dir.resolve("nodes.csv");
+        ResolutionAnalysis.nodesCsv(csv, java.util.List.of(rc, rf));
+        java.util.List<String> lines = java.nio.file.Files.readAllLines(csv);
+        assertEquals(fine.vertexCount() + 1, lines.size(), "a header and one row per upper node");
+        for (String line : lines.subList(1, lines.size())) {
+            String[] c = line.split(",");
+            double x = Double.parseDouble(c[0]) * 1e-3;
+            double y = Double.parseDouble(c[1]) * 1e-3;
+            double u = Math.sqrt(0.01 * x * 0.01 * x + 0.03 * y * 0.03 * y + 0.02 * x * 0.02 * x);
+            assertEquals(u * 1e3, Double.parseDouble(c[3]), 1e-6, line);
+            assertEquals(1.0, Double.parseDouble(c[4]), 1e-6, line);
+        }
+    }
+
     /** A run of the whole mesh as upper surface, end field u = (0.01 x - 0.02 z, 0.03 y, 0.02 x) m. */
     private static ResolutionStudy.Run linear(TriangleMesh m, boolean withTriangles) {
         double[] rest = m.coordinates();

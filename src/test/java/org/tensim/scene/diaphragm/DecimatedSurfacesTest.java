@@ -44,7 +44,7 @@ class DecimatedSurfacesTest {
     }
 
     /** The area-weighted mean of the fibres' activation over the insertion at the rim (origins left out). */
-    private static double activeShare(TwoSurfaces s) {
+    static double activeShare(TwoSurfaces s) {
         double[] a = FibreInsertion.activation(s.mesh(), s, null, FibreInsertion.DEFAULT_LENGTH_M);
         double[] area = SurfaceGeometry.vertexAreas(s.mesh());
         double sum = 0;
@@ -56,7 +56,7 @@ class DecimatedSurfacesTest {
         return sum / total;
     }
 
-    private static boolean[] sides(TwoSurfaces s) {
+    static boolean[] sides(TwoSurfaces s) {
         boolean[] up = new boolean[s.mesh().vertexCount()];
         for (int v = 0; v < up.length; v++) {
             up[v] = s.isUpper(v);

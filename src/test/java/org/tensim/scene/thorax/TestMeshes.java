@@ -7,12 +7,12 @@ import java.util.Map;
 import org.tensim.io.mesh.TriangleMesh;
 
 /** Closed test surfaces with known signed distances, wound counter-clockwise seen from outside. */
-final class TestMeshes {
+public final class TestMeshes {
     private TestMeshes() {
     }
 
     /** An icosahedron subdivided {@code levels} times, vertices on the sphere of radius r about c, m. */
-    static TriangleMesh icosphere(double[] c, double r, int levels) {
+    public static TriangleMesh icosphere(double[] c, double r, int levels) {
         double p = (1 + Math.sqrt(5)) / 2;
         List<double[]> v = new ArrayList<>(List.of(new double[] {-1, p, 0}, new double[] {1, p, 0},
                 new double[] {-1, -p, 0}, new double[] {1, -p, 0}, new double[] {0, -1, p}, new double[] {0, 1, p},
