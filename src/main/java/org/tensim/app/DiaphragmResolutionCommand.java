@@ -10,6 +10,7 @@ import org.tensim.experiment.diaphragm.ResolutionStudy;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
+import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.Decimation;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
@@ -125,12 +126,15 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
         });
     }
 
-    /** {@code --decimation}: {@link Decimation#parse}, its message naming the value and the choices. */
+    /**
+     * {@code --decimation}: the model names' one parser ({@link BoundaryConditions#parse}), its message naming the
+     * value and the choices.
+     */
     static final class DecimationConverter implements picocli.CommandLine.ITypeConverter<Decimation> {
         @Override
         public Decimation convert(String value) {
             try {
-                return Decimation.parse(value);
+                return BoundaryConditions.parse(Decimation.class, value);
             } catch (IllegalArgumentException e) {
                 throw new picocli.CommandLine.TypeConversionException(e.getMessage());
             }

@@ -131,7 +131,7 @@ class ThoraxCommandTest {
         assertTrue(r[2].contains("--labels cannot go with the resolution study"), r[2]);
         r = run("diaphragm", "resolution-study", "--mesh", mesh.toString(), "--decimation", "octree", "--out",
                 dir.resolve("octree").toString());
-        assertTrue(r[2].contains("decimation 'octree': expected clustering or quadric"), r[2]);
+        assertTrue(r[2].contains("unknown Decimation model 'octree'; expected one of clustering, quadric"), r[2]);
         r = run("diaphragm", "resolution-study", "--decimation", "quadric", "--out", dir.resolve("quadric").toString());
         assertTrue(r[2].contains("--decimation quadric needs --mesh"), r[2]);
     }

@@ -46,14 +46,4 @@ public enum Decimation {
         }
         return TwoSurfaces.of(r.mesh(), up).withRimOf(s);
     }
-
-    /** The option's value: {@code clustering} or {@code quadric}, any case. */
-    public static Decimation parse(String s) {
-        for (Decimation d : values()) {
-            if (d.name().equalsIgnoreCase(s)) {
-                return d;
-            }
-        }
-        throw new IllegalArgumentException("decimation '" + s + "': expected clustering or quadric");
-    }
 }
