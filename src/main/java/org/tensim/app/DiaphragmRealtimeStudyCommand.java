@@ -20,7 +20,7 @@ import picocli.CommandLine.ParameterException;
 @Command(name = "realtime-study", mixinStandardHelpOptions = true,
         description = {"The generated double dome at 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler and bdf2",
             "at several steps, one inspiration each: error against the paper's configuration against the real-time",
-            "factor, and the fastest setting within 5 % of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md."})
+            "factor, and the fastest setting within 5 %% of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md."})
 public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");

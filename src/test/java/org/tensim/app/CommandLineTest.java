@@ -1,9 +1,17 @@
 package org.tensim.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
 import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
@@ -52,6 +60,29 @@ class CommandLineTest {
         String[] unknown = run("bench", "--scene", "diaphragm", "--compare", "bdf2,bdf3");
         assertTrue(!"0".equals(unknown[0]), "refused");
         assertTrue(unknown[2].contains("unknown integrator 'bdf3'"), unknown[2]);
+    }
+
+    @Test
+    void everyCommandsHelpIsFormattedWithoutAWarning() {
+        PrintStream saved = System.err;
+        ByteArrayOutputStream warnings = new ByteArrayOutputStream();
+        List<String> names = new ArrayList<>();
+        try {
+            System.setErr(new PrintStream(warnings, true, StandardCharsets.UTF_8));
+            Deque<CommandLine> todo = new ArrayDeque<>(List.of(Main.commandLine()));
+            while (!todo.isEmpty()) {
+                CommandLine c = todo.pop();
+                names.add(c.getCommandSpec().qualifiedName());
+                String usage = c.getUsageMessage(CommandLine.Help.Ansi.OFF);
+                assertFalse(usage.contains("%n"), c.getCommandSpec().qualifiedName() + ": unformatted help\n" + usage);
+                todo.addAll(c.getSubcommands().values());
+            }
+        } finally {
+            System.setErr(saved);
+        }
+        String w = warnings.toString(StandardCharsets.UTF_8);
+        assertFalse(w.contains("picocli WARN"), "a help text picocli cannot format (a lone '%' must be '%%'):\n" + w);
+        assertTrue(names.size() > 10, "walked the whole command tree: " + names);
     }
 
     @Test
