@@ -25,6 +25,12 @@ import org.tensim.model.Check;
  * round-off of a free fall, whose E stays near 0, is not either). A stable scheme
  * under bounded loads does not multiply its energy by 100 within 100 steps;
  * one beyond its critical step does, long before the numbers overflow.</li>
+ * <li>every {@link #energyCheckInterval()} steps, when the scene sets one
+ * ({@link #setDisplacementLimit}), no node farther than that limit from where it started
+ * ({@code |x_i - x0_i| <= limit}, m): a scene whose motion is bounded by its physics (a breathing
+ * diaphragm) can go astray slowly, its energy growing by less than the growth limit between
+ * checks and no node ever fast, until it is far outside anything the model means; this catches
+ * such a slow runaway. Off (infinite) by default: a falling or flying body has no such bound.</li>
  * </ul>
  * Allocation-free except when it throws.
  */
@@ -47,6 +53,7 @@ final class DivergenceMonitor {
     static final double DEFAULT_RUNAWAY_LIMIT = 10;
     private double runawayLimit = DEFAULT_RUNAWAY_LIMIT;
     private double sceneSize = Double.NaN;
+    private double displacementLimit = Double.POSITIVE_INFINITY;
 
     double runawayLimit() {
         return runawayLimit;
@@ -58,6 +65,18 @@ final class DivergenceMonitor {
                     + " the check off), got " + sizesPerStep);
         }
         runawayLimit = sizesPerStep;
+    }
+
+    double displacementLimit() {
+        return displacementLimit;
+    }
+
+    void setDisplacementLimit(double metres) {
+        if (!(metres > 0)) {
+            throw new IllegalArgumentException("displacement limit must be > 0 m (or Infinity to turn the check"
+                    + " off), got " + metres);
+        }
+        displacementLimit = metres;
     }
 
     double energyGrowthLimit() {
@@ -100,6 +119,9 @@ final class DivergenceMonitor {
             if (!(Math.abs(v[k]) * invV + (x[k] - x[k]) <= 1)) {
                 checkCoordinate(s, k, step, t, speedLimit, criticalStep);
             }
+        }
+        if (displacementLimit != Double.POSITIVE_INFINITY && step % interval == 0) {
+            checkDisplacements(s, step, t, criticalStep);
         }
         if (growthLimit == Double.POSITIVE_INFINITY) {
             return;
@@ -148,6 +170,27 @@ final class DivergenceMonitor {
                 + v[3 * node + 1] + ", " + v[3 * node + 2] + ") m/s, faster than " + speedLimit + " m/s ("
                 + runawayLimit + " scene sizes of " + sceneSize + " m per step); " + advice(criticalStep),
                 criticalStep.getAsDouble());
+    }
+
+    /** Every node within {@link #displacementLimit} of its starting position {@code x0}. */
+    private void checkDisplacements(SystemState s, long step, double t,
+            java.util.function.DoubleSupplier criticalStep) {
+        final double[] x = s.x;
+        final double[] x0 = s.x0;
+        final double limit2 = displacementLimit * displacementLimit;
+        for (int i = 0; i < s.nodeCount; i++) {
+            double dx = x[3 * i] - x0[3 * i];
+            double dy = x[3 * i + 1] - x0[3 * i + 1];
+            double dz = x[3 * i + 2] - x0[3 * i + 2];
+            if (dx * dx + dy * dy + dz * dz > limit2) {
+                throw new SimulationDivergedException(step, t, i, "went astray: it is "
+                        + Math.sqrt(dx * dx + dy * dy + dz * dz) + " m from where it started (" + x0[3 * i] + ", "
+                        + x0[3 * i + 1] + ", " + x0[3 * i + 2] + ") m, farther than the scene's bound of "
+                        + displacementLimit + " m (velocity " + Math.sqrt(speed2(s.v, i)) + " m/s); a slow"
+                        + " runaway, which neither the energy nor the speed check caught; " + advice(criticalStep)
+                        + ", or solve each step more exactly", criticalStep.getAsDouble());
+            }
+        }
     }
 
     /** The scene size, from the state the run starts with. */

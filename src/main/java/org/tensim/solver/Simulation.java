@@ -34,7 +34,8 @@ import org.tensim.solver.stability.TimeStepPolicy;
  * <li>Divergence: a non-finite position or velocity, a runaway node (checked every
  * step, {@link #setRunawayLimit}), or the kinetic + spring
  * energy growing more than {@link SolverSettings#energyGrowthLimit} times between checks made
- * every {@link SolverSettings#energyCheckInterval} steps, throws
+ * every {@link SolverSettings#energyCheckInterval} steps, or (where the scene bounds its motion,
+ * {@link #setDisplacementLimit}) a node farther than that from where it started, throws
  * {@link SimulationDivergedException} naming the step, the time, the worst node
  * and the critical step estimate.</li>
  * <li>Rigid-link projection: a projection that stops at its iteration cap above
@@ -189,6 +190,21 @@ public final class Simulation {
 
     public double runawayLimit() {
         return monitor.runawayLimit();
+    }
+
+    /**
+     * How far (m) a node may move from where it started before the run is stopped as diverged,
+     * checked every {@link SolverSettings#energyCheckInterval()} steps: a bound a scene's physics
+     * sets on its motion, which catches a slow runaway that neither the energy growth nor the speed
+     * check sees. Default {@link Double#POSITIVE_INFINITY} (off).
+     */
+    public Simulation setDisplacementLimit(double metres) {
+        monitor.setDisplacementLimit(metres);
+        return this;
+    }
+
+    public double displacementLimit() {
+        return monitor.displacementLimit();
     }
 
     /** The state's critical time step estimate ({@link SystemState#criticalTimeStep()}). */

@@ -153,4 +153,38 @@ class DivergenceTest {
             assertEquals(p.steps(), sim.steps());
         }
     }
+
+    /**
+     * A slow runaway: a free node drifting at a constant 0.015 m/s keeps its energy and is never fast, so
+     * neither the energy nor the speed check stops it; a displacement limit of 1 m does, at the first check
+     * after it is crossed (the check runs every energy-check interval, 100 steps of 1 s here: 1.5 m at step
+     * 100), naming the node and its distance. Without a limit the same run goes on.
+     */
+    @Test
+    void aSlowRunawayIsStoppedByTheScenesDisplacementLimit() {
+        for (boolean limited : new boolean[] {false, true}) {
+            org.tensim.model.Topology t = new org.tensim.model.Topology();
+            t.addNode(0, 0, 0, 1);
+            t.addNode(1, 0, 0, 1);
+            SystemState s = SystemState.compile(t);
+            Simulation sim = new Simulation(s, Integrators.create("symplectic-euler"));
+            sim.setWarningSink(m -> { });
+            s.v[3] = 0.015;
+            if (!limited) {
+                sim.runUntil(300, 1);
+                assertTrue(s.x[3] > 4, "no check stops a slow drift by default: " + s.x[3]);
+                continue;
+            }
+            sim.setDisplacementLimit(1);
+            SimulationDivergedException e = assertThrows(SimulationDivergedException.class, () -> sim.runUntil(300, 1));
+            assertEquals(1, e.node());
+            assertEquals(0, e.step() % sim.settings().energyCheckInterval(), "stopped at a check: " + e.step());
+            assertTrue(s.x[3] > 1 && s.x[3] < 1 + 0.015 * sim.settings().energyCheckInterval() + 1e-9,
+                    "at the first check after the bound was crossed: " + s.x[3]);
+            assertTrue(e.getMessage().contains("went astray") && e.getMessage().contains("bound of 1.0 m"),
+                    e.getMessage());
+        }
+        assertThrows(IllegalArgumentException.class, () -> Simulation.of(new org.tensim.model.Topology())
+                .setDisplacementLimit(0));
+    }
 }

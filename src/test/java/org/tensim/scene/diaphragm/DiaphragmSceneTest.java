@@ -138,4 +138,11 @@ class DiaphragmSceneTest {
         double h = s.recommendedTimeStep();
         assertTrue(h * s.omegaMaxBound() > 0.5 && h * s.omegaMaxBound() < 2.5, "w h = " + h * s.omegaMaxBound());
     }
+
+    /** The scene's runs are stopped as diverged when a node goes 0.15 m from rest (DivergenceTest: how). */
+    @Test
+    void theScenesSimulationsBoundTheMotion() throws Exception {
+        assertEquals(DiaphragmScene.MAX_DISPLACEMENT_M, SceneFixture.coarse(16, 1, 2000).newSimulation()
+                .displacementLimit());
+    }
 }
