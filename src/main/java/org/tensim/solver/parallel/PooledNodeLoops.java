@@ -55,6 +55,11 @@ public final class PooledNodeLoops implements NodeLoops {
         dispatch(tasks, b);
     }
 
+    @Override
+    public int threads() {
+        return pool.size();
+    }
+
     private void dispatch(int n, Body b) {
         body = b;
         nodes = n;

@@ -2,6 +2,7 @@ package org.tensim.solver.prefactored;
 
 import org.tensim.solver.ConjugateGradient;
 import org.tensim.solver.ForceModel;
+import org.tensim.solver.NodeLoops;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.links.LinkTangent;
 
@@ -34,9 +35,12 @@ final class NewtonKrylov {
     private final double[] dv;
     private final ConjugateGradient cg;
     private SparseCholesky preconditioner;
+    private NodeLoops loops = NodeLoops.SERIAL; // the force model's, during a solve
     private final double[] work;
     private final double[] scratch = new double[6];
     double lastRelativeResidual;
+    /** Whether the solves with the factor are shared among the force model's threads. */
+    boolean sharedKernels = true;
     long products;
     /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
     final long[] partNanos = new long[Bdf2Part.values().length];
@@ -95,7 +99,7 @@ final class NewtonKrylov {
             }
             jacobian.linearise(t1, xIt, beta, model.nodeLoops());
             partNanos[Bdf2Part.LINEARISE.ordinal()] += System.nanoTime() - t2;
-            conjugateGradient(precond, krylovIterations, krylovTolerance);
+            conjugateGradient(model, precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {
                 for (int c = 0; c < 3; c++) {
                     vIt[3 * nodes[j] + c] += dv[3 * j + c];
@@ -136,7 +140,7 @@ final class NewtonKrylov {
      * in the preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that weighs light
      * and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
      */
-    private void conjugateGradient(SparseCholesky precond, int maxIterations, double tolerance) {
+    private void conjugateGradient(ForceModel model, SparseCholesky precond, int maxIterations, double tolerance) {
         final int nf3 = g.length;
         for (int k = 0; k < nf3; k++) {
             dv[k] = 0;
@@ -144,6 +148,7 @@ final class NewtonKrylov {
         }
         links.projectDual(r);
         preconditioner = precond;
+        loops = sharedKernels ? model.nodeLoops() : NodeLoops.SERIAL;
         cg.solve(system, dv, r, 0, tolerance, maxIterations, ConjugateGradient.Stop.PRECONDITIONED);
         lastRelativeResidual = cg.relativeResidual();
     }
@@ -166,7 +171,7 @@ final class NewtonKrylov {
         public void precondition(double[] rv, double[] zv) {
             System.arraycopy(rv, 0, zv, 0, rv.length);
             long t0 = System.nanoTime();
-            preconditioner.solve3(zv, work);
+            preconditioner.solve3(zv, work, loops);
             links.project(zv);
             partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
         }

@@ -65,6 +65,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
     private final double krylovTolerance = KRYLOV_TOLERANCE;
     private Executor executor;
+    private boolean sharedKernels = true;
 
     private SystemState s;
     private PrefactoredMatrix matrix;
@@ -128,6 +129,24 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
         return this;
+    }
+
+    /**
+     * Whether the preconditioner's solves are shared among the force model's threads when it has two or more
+     * (default true; the same bits either way). Off, they run on the calling thread alone: the form before they
+     * were shared, kept for before/after measurements in one run ({@code tensim bench --compare bdf2:serial,bdf2}).
+     */
+    public PrefactoredBdf2 setSharedKernels(boolean shared) {
+        sharedKernels = shared;
+        if (newton != null) {
+            newton.sharedKernels = shared;
+        }
+        return this;
+    }
+
+    /** Whether the preconditioner's solves are shared among the force model's threads. */
+    public boolean sharedKernels() {
+        return sharedKernels;
     }
 
     /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
@@ -309,6 +328,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         int nf3 = 3 * matrix.freeCount();
         newton = new NewtonKrylov(st, matrix.freeIndex, matrix.freeNodes);
+        newton.sharedKernels = sharedKernels;
         xOld1 = new double[nf3];
         xOld2 = new double[nf3];
         vOld1 = new double[nf3];
