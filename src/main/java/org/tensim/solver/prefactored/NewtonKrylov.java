@@ -39,7 +39,7 @@ final class NewtonKrylov {
     private final double[] work;
     private final double[] scratch = new double[6];
     double lastRelativeResidual;
-    /** Whether the solves with the factor are shared among the force model's threads. */
+    /** Whether the solves with the factor and the springs' products are shared among the force model's threads. */
     boolean sharedKernels = true;
     long products;
     /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
@@ -75,6 +75,7 @@ final class NewtonKrylov {
     void solve(ForceModel model, SparseCholesky precond, double t1, double beta, int newtonIterations,
             int krylovIterations, double krylovTolerance) {
         final int n3 = xIt.length;
+        jacobian.sharedKernels = sharedKernels;
         System.arraycopy(s.x, 0, xIt, 0, n3);
         System.arraycopy(s.v, 0, vIt, 0, n3);
         s.applyMotions(t1, xIt, vIt, scratch);

@@ -132,9 +132,10 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     }
 
     /**
-     * Whether the preconditioner's solves are shared among the force model's threads when it has two or more
-     * (default true; the same bits either way). Off, they run on the calling thread alone: the form before they
-     * were shared, kept for before/after measurements in one run ({@code tensim bench --compare bdf2:serial,bdf2}).
+     * Whether the preconditioner's solves and the springs' part of the Jacobian products are shared among the
+     * force model's threads when it has two or more (default true; the same bits either way). Off, they run on
+     * the calling thread alone: the form before they were shared, kept for before/after measurements in one run
+     * ({@code tensim bench --compare bdf2:serial,bdf2}).
      */
     public PrefactoredBdf2 setSharedKernels(boolean shared) {
         sharedKernels = shared;
@@ -144,7 +145,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         return this;
     }
 
-    /** Whether the preconditioner's solves are shared among the force model's threads. */
+    /** Whether the preconditioner's solves and the springs' products are shared among the force model's threads. */
     public boolean sharedKernels() {
         return sharedKernels;
     }

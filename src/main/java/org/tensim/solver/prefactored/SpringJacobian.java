@@ -31,6 +31,11 @@ import org.tensim.solver.SystemState;
  * step), so stiff contact costs CG iterations but not accuracy of the product.
  */
 final class SpringJacobian {
+    /**
+     * Springs from which the springs' part of a product is shared among the threads: below, a dispatch costs
+     * more than half the loop (the force pass's threshold, {@code ParallelSpringPass.MIN_PARALLEL_SPRINGS}).
+     */
+    static final int MIN_SHARED_SPRINGS = 4096;
     private final SystemState s;
     private final int[] nodes;
     private final int[] endA; // per spring: 3 x compact index of end a, -1 when not free
@@ -113,45 +118,70 @@ final class SpringJacobian {
         }
     }
 
+    /**
+     * Whether the springs' part of the product is shared among the threads of the linearisation's loops (when
+     * it has two or more; the same bits either way).
+     */
+    boolean sharedKernels = true;
+    private OwnedSprings owned; // for owned.parts() threads, made at the first shared product
+    private final NodeLoops.Body ownedRange = this::ownedParts;
+    private double[] pIn; // during a shared product only
+    private double[] pOut;
+
     /** out = J p (compact vectors). */
     void multiply(double[] p, double[] out) {
-        final double[] m = s.mass;
-        final double dt = diagonalTerm;
-        for (int j = 0; j < nodes.length; j++) {
-            final double mj = m[nodes[j]] + dt;
-            out[3 * j] = mj * p[3 * j];
-            out[3 * j + 1] = mj * p[3 * j + 1];
-            out[3 * j + 2] = mj * p[3 * j + 2];
-        }
-        final int[] ea = endA;
-        final int[] eb = endB;
-        final double[] u = dir;
-        for (int i = 0; i < ea.length; i++) {
-            final int a = ea[i];
-            final int b = eb[i];
-            if (a < 0 && b < 0) {
-                continue;
+        final int threads = loops.threads();
+        if (sharedKernels && threads >= 2 && endA.length >= MIN_SHARED_SPRINGS) {
+            if (owned == null || owned.parts() != threads) {
+                owned = new OwnedSprings(endA, endB, restX(), threads); // once per thread count
             }
-            final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
-            final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
-            final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
-            final double ux = u[3 * i];
-            final double uy = u[3 * i + 1];
-            final double uz = u[3 * i + 2];
-            final double beta = coef[2 * i + 1];
-            final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
-            final double ax = ur * ux + beta * rx;
-            final double ay = ur * uy + beta * ry;
-            final double az = ur * uz + beta * rz;
-            if (a >= 0) {
-                out[a] -= ax;
-                out[a + 1] -= ay;
-                out[a + 2] -= az;
+            pIn = p;
+            pOut = out;
+            try {
+                loops.runTasks(threads, ownedRange);
+            } finally {
+                pIn = null;
+                pOut = null;
             }
-            if (b >= 0) {
-                out[b] += ax;
-                out[b + 1] += ay;
-                out[b + 2] += az;
+        } else {
+            final double[] m = s.mass;
+            final double dt = diagonalTerm;
+            for (int j = 0; j < nodes.length; j++) {
+                final double mj = m[nodes[j]] + dt;
+                out[3 * j] = mj * p[3 * j];
+                out[3 * j + 1] = mj * p[3 * j + 1];
+                out[3 * j + 2] = mj * p[3 * j + 2];
+            }
+            final int[] ea = endA;
+            final int[] eb = endB;
+            final double[] u = dir;
+            for (int i = 0; i < ea.length; i++) {
+                final int a = ea[i];
+                final int b = eb[i];
+                if (a < 0 && b < 0) {
+                    continue;
+                }
+                final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
+                final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
+                final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
+                final double ux = u[3 * i];
+                final double uy = u[3 * i + 1];
+                final double uz = u[3 * i + 2];
+                final double beta = coef[2 * i + 1];
+                final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
+                final double ax = ur * ux + beta * rx;
+                final double ay = ur * uy + beta * ry;
+                final double az = ur * uz + beta * rz;
+                if (a >= 0) {
+                    out[a] -= ax;
+                    out[a + 1] -= ay;
+                    out[a + 2] -= az;
+                }
+                if (b >= 0) {
+                    out[b] += ax;
+                    out[b + 1] += ay;
+                    out[b + 2] += az;
+                }
             }
         }
         if (triangles != null) {
@@ -160,5 +190,67 @@ final class SpringJacobian {
         s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
         s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
         s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
+    }
+
+    /**
+     * The diagonal and springs' terms of the parts [from, to) of {@link #owned}: the one-thread loop's operations
+     * on each owned node, in its order (see {@link OwnedSprings}).
+     */
+    private void ownedParts(int from, int to) {
+        final double[] p = pIn;
+        final double[] out = pOut;
+        final double[] m = s.mass;
+        final double dt = diagonalTerm;
+        final int[] ea = endA;
+        final int[] eb = endB;
+        final double[] u = dir;
+        for (int k = from; k < to; k++) {
+            for (int j : owned.nodes[k]) {
+                final double mj = m[nodes[j]] + dt;
+                out[3 * j] = mj * p[3 * j];
+                out[3 * j + 1] = mj * p[3 * j + 1];
+                out[3 * j + 2] = mj * p[3 * j + 2];
+            }
+            for (int code : owned.springs[k]) {
+                final int i = code >>> 2;
+                final int a = ea[i];
+                final int b = eb[i];
+                final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
+                final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
+                final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
+                final double ux = u[3 * i];
+                final double uy = u[3 * i + 1];
+                final double uz = u[3 * i + 2];
+                final double beta = coef[2 * i + 1];
+                final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
+                final double ax = ur * ux + beta * rx;
+                final double ay = ur * uy + beta * ry;
+                final double az = ur * uz + beta * rz;
+                if ((code & 1) != 0) {
+                    out[a] -= ax;
+                    out[a + 1] -= ay;
+                    out[a + 2] -= az;
+                }
+                if ((code & 2) != 0) {
+                    out[b] += ax;
+                    out[b + 1] += ay;
+                    out[b + 2] += az;
+                }
+            }
+        }
+    }
+
+    /** The free nodes' rest x (compact index), m: where {@link OwnedSprings} cuts. */
+    private double[] restX() {
+        double[] x = new double[nodes.length];
+        for (int j = 0; j < nodes.length; j++) {
+            x[j] = s.x0[3 * nodes[j]];
+        }
+        return x;
+    }
+
+    /** The parts of the last shared product, or null (for tests). */
+    OwnedSprings owned() {
+        return owned;
     }
 }
