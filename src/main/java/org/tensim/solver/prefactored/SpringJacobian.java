@@ -123,7 +123,9 @@ final class SpringJacobian {
      * it has two or more; the same bits either way).
      */
     boolean sharedKernels = true;
-    private OwnedSprings owned; // for owned.parts() threads, made at the first shared product
+    /** Parts of the shared springs' product per thread. */
+    static final int PARTS_PER_THREAD = 4;
+    private OwnedSprings owned; // made at the first shared product
     private final NodeLoops.Body ownedRange = this::ownedParts;
     private double[] pIn; // during a shared product only
     private double[] pOut;
@@ -132,13 +134,15 @@ final class SpringJacobian {
     void multiply(double[] p, double[] out) {
         final int threads = loops.threads();
         if (sharedKernels && threads >= 2 && endA.length >= MIN_SHARED_SPRINGS) {
-            if (owned == null || owned.parts() != threads) {
-                owned = new OwnedSprings(endA, endB, restX(), threads); // once per thread count
+            if (owned == null) {
+                // Parts claimed by the threads as they come: several per thread, so that a thread whose core is
+                // taken by another process leaves its parts to the others.
+                owned = new OwnedSprings(endA, endB, restX(), PARTS_PER_THREAD * threads);
             }
             pIn = p;
             pOut = out;
             try {
-                loops.runTasks(threads, ownedRange);
+                loops.runTasks(owned.parts(), ownedRange);
             } finally {
                 pIn = null;
                 pOut = null;

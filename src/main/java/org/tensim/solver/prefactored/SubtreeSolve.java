@@ -15,26 +15,37 @@ import org.tensim.solver.NodeLoops;
  * subtrees therefore do not touch each other's rows; they both touch the top's rows. So:
  *
  * <ol>
- *   <li>forward, each group on its thread: its columns in increasing order, each updating only the rows of
- *       its own subtree (the column's rows below the top; its rows in the top come last, rows being sorted);
- *   <li>forward, the caller: each top row in increasing order, as a row: {@code y_r = (b_r - sum_j L_rj y_j)
- *       / L_rr} over its columns j in increasing order, those of the subtrees included. The column loop
- *       subtracts the same products from row r in the same order (the columns' order), so the bits are the
- *       same;
+ *   <li>forward, the groups on the threads: each group's columns in increasing order, each updating only the
+ *       rows of its own subtree (the column's rows below the top; its rows in the top come last, rows being
+ *       sorted);
+ *   <li>forward, the top rows' prefixes on the threads, in tasks of rows: each top row's right-hand side less
+ *       its terms in the groups' columns that come before its first term in a top column, in the columns'
+ *       order (the rows are independent of each other here);
+ *   <li>forward, the caller: each top row in increasing order, as a row: the rest of its terms in the columns'
+ *       order, then the division by its diagonal. The column loop subtracts the same products from row r in
+ *       the same order (the columns'), so the bits are the same;
  *   <li>backward, the caller: the top's columns from the last, each reading only its ancestors (the top);
- *   <li>backward, each group on its thread: its columns from the last, reading its subtree's rows and the
+ *   <li>backward, the groups on the threads: their columns from the last, reading their subtree's rows and the
  *       top's, which are final.
  * </ol>
  *
- * Two dispatches per solve; the permutation's scatter and gather are split the same way. Which subtrees:
- * from the roots, the heaviest subtree of the frontier (work = entries of L) is moved to the top and its
- * children become frontier subtrees, and the frontier is dealt into two groups, the heaviest first to the
- * lighter group; of these steps, until the top alone weighs more than the best so far, the one with the least
- * {@code max(group) + top} is kept. A column that the factor's solves pair with its parent ({@link SparseCholesky}: two columns of a
- * supernode at a time) is moved to the top with it, so that no pair straddles a subtree and the top.
+ * Three dispatches per solve, whose tasks go to the threads as they come ({@link NodeLoops#runTasks}); the
+ * permutation's scatter and gather are split the same way. Which subtrees: from the roots, the heaviest
+ * subtree of the frontier (work = entries of L) is moved to the top and its children become frontier
+ * subtrees, and the frontier is dealt into two groups, the heaviest first to the lighter group; of these
+ * steps, until the top alone weighs more than the best so far, the one with the least
+ * {@code max(group) + top} is kept. A column that the factor's solves pair with its parent
+ * ({@link SparseCholesky}: two columns of a supernode at a time) is moved to the top with it, so that no pair
+ * straddles a subtree and the top. On the default diaphragm's factor (635,941 entries): groups of 223,702 and
+ * 185,135 entries, a top of 404 columns and 75,742 entries, and 151,362 entries of the groups' columns in top
+ * rows, 115,170 of them in the rows' prefixes.
  * Arrays allocated once; a solve allocates nothing.
  */
 final class SubtreeSolve {
+    /** Tasks of the cut's prefixes (claimed by the threads as they come: a busy core takes fewer). */
+    static final int CUT_TASKS = 8;
+    /** Entries below which a task of the cut's prefixes is not worth its claim. */
+    static final int MIN_CUT_TASK_ENTRIES = 4096;
     /** Groups of subtrees, one per thread of a two-thread solve. */
     static final int GROUPS = 2;
 
@@ -51,6 +62,11 @@ final class SubtreeSolve {
     private final int[] rowStart; // entries of top row t: [rowStart[t], rowStart[t + 1])
     private final int[] rowColumn; // 3 x column of the entry
     private final int[] rowEntry; // index of the entry in li / lx
+    /** Per top row: the end of its entries before its first in a top column (the cut's prefix). */
+    private final int[] prefixEnd;
+    /** Top rows of the cut's tasks: task i has the rows [cutTaskStart[i], cutTaskStart[i + 1]). */
+    private final int[] cutTaskStart;
+    private final int cutTasks;
     private final int topWork;
     private final int[] groupWork = new int[GROUPS];
     private final int cutEntries;
@@ -58,6 +74,7 @@ final class SubtreeSolve {
 
     private final NodeLoops.Body forward = this::forwardGroups;
     private final NodeLoops.Body backward = this::backwardGroups;
+    private final NodeLoops.Body cut = this::cutRows;
     private double[] rhs; // during a solve only
     private double[] x;
 
@@ -118,7 +135,7 @@ final class SubtreeSolve {
         int[] bestFrontier = null;
         while (!frontier.isEmpty() && topSum < bestCost) {
             long[] load = deal(frontier, sub, null);
-            long cost = Math.max(load[0], load[1]) + topSum;
+            long cost = cost(load) + topSum;
             if (cost < bestCost) {
                 bestCost = cost;
                 bestTop = top.clone();
@@ -230,6 +247,31 @@ final class SubtreeSolve {
             tw += lp[j + 1] - lp[j];
         }
         topWork = tw;
+        // The cut's prefix of each top row: its entries before its first in a top column, all in the groups'
+        // columns; the rows' prefixes are independent of each other, and split into tasks of about equal entries.
+        prefixEnd = new int[tops];
+        long prefixEntries = 0;
+        for (int t = 0; t < tops; t++) {
+            int q = rowStart[t];
+            while (q < rowStart[t + 1] && !top[rowColumn[q] / 3]) {
+                q++;
+            }
+            prefixEnd[t] = q;
+            prefixEntries += q - rowStart[t];
+        }
+        cutTasks = (int) Math.max(1, Math.min(tops, Math.min(CUT_TASKS, prefixEntries / MIN_CUT_TASK_ENTRIES)));
+        cutTaskStart = new int[cutTasks + 1];
+        long acc = 0;
+        int task = 1;
+        for (int t = 0; t < tops && task < cutTasks; t++) {
+            acc += prefixEnd[t] - rowStart[t];
+            if (acc * cutTasks >= task * prefixEntries) {
+                cutTaskStart[task++] = t + 1;
+            }
+        }
+        while (task <= cutTasks) {
+            cutTaskStart[task++] = tops;
+        }
     }
 
     /**
@@ -251,13 +293,32 @@ final class SubtreeSolve {
         return moved;
     }
 
+    /**
+     * The groups' time on two threads that claim them as they come (entries of L): at least half their work,
+     * and at least the largest group.
+     */
+    private static long cost(long[] load) {
+        long sum = 0;
+        long max = 0;
+        for (long l : load) {
+            sum += l;
+            max = Math.max(max, l);
+        }
+        return Math.max(max, (sum + 1) / 2);
+    }
+
     /** Deals the subtrees to two groups, heaviest first to the lighter; returns the groups' work. */
     private static long[] deal(List<Integer> roots, long[] sub, int[] groupOf) {
         Integer[] order = roots.toArray(new Integer[0]);
         Arrays.sort(order, (a, b) -> Long.compare(sub[b], sub[a]));
         long[] load = new long[GROUPS];
         for (int f : order) {
-            int g = load[0] <= load[1] ? 0 : 1;
+            int g = 0;
+            for (int h = 1; h < load.length; h++) {
+                if (load[h] < load[g]) {
+                    g = h;
+                }
+            }
             load[g] += sub[f];
             if (groupOf != null) {
                 groupOf[f] = g;
@@ -269,6 +330,15 @@ final class SubtreeSolve {
     /** Entries of L in each group's columns and rows (diagonals included), for the docs' profile and tests. */
     int[] groupEntries() {
         return groupWork.clone();
+    }
+
+    /** Entries of the cut's prefixes (solved by the threads between the groups and the top). */
+    int prefixEntries() {
+        int sum = 0;
+        for (int t = 0; t < prefixEnd.length; t++) {
+            sum += prefixEnd[t] - rowStart[t];
+        }
+        return sum;
     }
 
     /** Entries of L in the top's columns. */
@@ -299,17 +369,12 @@ final class SubtreeSolve {
         x = work;
         try {
             loops.runTasks(GROUPS, forward);
-            final int[] pm = perm;
-            for (int j : topColumns) {
-                final int k = 3 * pm[j];
-                work[3 * j] = b[k];
-                work[3 * j + 1] = b[k + 1];
-                work[3 * j + 2] = b[k + 2];
-            }
+            loops.runTasks(cutTasks, cut);
             topForward(work);
             for (int i = topBlocks.length - 1; i >= 0; i--) {
                 upperBlock(work, topBlocks[i]);
             }
+            final int[] pm = perm;
             for (int j : topColumns) {
                 final int k = 3 * pm[j];
                 b[k] = work[3 * j];
@@ -320,6 +385,37 @@ final class SubtreeSolve {
         } finally {
             rhs = null;
             x = null;
+        }
+    }
+
+    /**
+     * The top rows of the cut's tasks [from, to): each row's right-hand side less its prefix's terms, in the
+     * column order (what the column loop has subtracted from the row when it reaches the row's first top
+     * column).
+     */
+    private void cutRows(int from, int to) {
+        final double[] b = rhs;
+        final double[] w = x;
+        final int[] pm = perm;
+        final double[] v = lx;
+        final int[] rc = rowColumn;
+        final int[] re = rowEntry;
+        for (int t = cutTaskStart[from]; t < cutTaskStart[to]; t++) {
+            final int r = topColumns[t];
+            final int k = 3 * pm[r];
+            double s0 = b[k];
+            double s1 = b[k + 1];
+            double s2 = b[k + 2];
+            for (int q = rowStart[t], end = prefixEnd[t]; q < end; q++) {
+                final int c = rc[q];
+                final double l = v[re[q]];
+                s0 -= l * w[c];
+                s1 -= l * w[c + 1];
+                s2 -= l * w[c + 2];
+            }
+            w[3 * r] = s0;
+            w[3 * r + 1] = s1;
+            w[3 * r + 2] = s2;
         }
     }
 
@@ -410,7 +506,7 @@ final class SubtreeSolve {
         }
     }
 
-    /** The forward solve of the top's rows, each as a row (see the class comment). */
+    /** The forward solve of the top's rows, each as a row (see the class comment), from its prefix on. */
     private void topForward(double[] x) {
         final int[] p = lp;
         final double[] v = lx;
@@ -421,7 +517,7 @@ final class SubtreeSolve {
             double s0 = x[3 * r];
             double s1 = x[3 * r + 1];
             double s2 = x[3 * r + 2];
-            for (int q = rowStart[t], end = rowStart[t + 1]; q < end; q++) {
+            for (int q = prefixEnd[t], end = rowStart[t + 1]; q < end; q++) {
                 final int c = rc[q];
                 final double l = v[re[q]];
                 s0 -= l * x[c];

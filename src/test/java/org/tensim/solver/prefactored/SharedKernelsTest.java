@@ -61,9 +61,10 @@ class SharedKernelsTest {
                 double[] out = new double[p.length];
                 shared.multiply(p, out);
                 assertNotNull(shared.owned(), "the product was shared");
-                assertEquals(threads, shared.owned().parts());
-                assertTrue(shared.owned().springTerms() < 1.1 * s.springCount(),
-                        "few springs computed twice: " + shared.owned().springTerms() + " for " + s.springCount());
+                assertEquals(SpringJacobian.PARTS_PER_THREAD * threads, shared.owned().parts());
+ // 12 nodes along x cut into up to 12 parts: a fifth of the springs computed twice at most
+                assertTrue(shared.owned().springTerms() < 1.25 * s.springCount(),
+                        "springs computed twice: " + shared.owned().springTerms() + " for " + s.springCount());
                 assertArrayEquals(reference, out, threads + " threads");
             }
         }
