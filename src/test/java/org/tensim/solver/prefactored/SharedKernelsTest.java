@@ -62,8 +62,8 @@ class SharedKernelsTest {
                 shared.multiply(p, out);
                 assertNotNull(shared.owned(), "the product was shared");
                 assertEquals(SpringJacobian.PARTS_PER_THREAD * threads, shared.owned().parts());
- // 12 nodes along x cut into up to 12 parts: a fifth of the springs computed twice at most
-                assertTrue(shared.owned().springTerms() < 1.25 * s.springCount(),
+                // 12 planes of nodes along x cut into 8 or 12 parts: the springs across a cut computed twice
+                assertTrue(shared.owned().springTerms() < 1.5 * s.springCount(),
                         "springs computed twice: " + shared.owned().springTerms() + " for " + s.springCount());
                 assertArrayEquals(reference, out, threads + " threads");
             }
