@@ -32,10 +32,13 @@ import org.tensim.solver.SystemState;
  */
 final class SpringJacobian {
     /**
-     * Springs from which the springs' part of a product is shared among the threads: below, a dispatch costs
-     * more than half the loop (the force pass's threshold, {@code ParallelSpringPass.MIN_PARALLEL_SPRINGS}).
+     * Fibres and shear elements from which their part of a product is shared among the threads: below, a
+     * dispatch costs more than half the loops (the triangles' threshold,
+     * {@link PartitionedTriangleTangent#MIN_PARALLEL_ELEMENTS}). The springs' loop stays on the calling thread:
+     * it is about 0.2 ms of a 3.7 ms product on the default diaphragm, less than a dispatch costs when the
+     * other core is busy (docs/performance.md).
      */
-    static final int MIN_SHARED_SPRINGS = 4096;
+    static final int MIN_SHARED_ELEMENTS = 2048;
     private final SystemState s;
     private final int[] nodes;
     private final int[] endA; // per spring: 3 x compact index of end a, -1 when not free
@@ -119,132 +122,122 @@ final class SpringJacobian {
     }
 
     /**
-     * Whether the springs' part of the product is shared among the threads of the linearisation's loops (when
-     * it has two or more; the same bits either way).
+     * Whether the fibres' and shear elements' part of the product is shared among the threads of the
+     * linearisation's loops (when it has two or more; the same bits either way).
      */
     boolean sharedKernels = true;
-    /** Parts of the shared springs' product per thread. */
+    /** Parts of the shared product per thread. */
     static final int PARTS_PER_THREAD = 4;
-    private OwnedSprings owned; // made at the first shared product
-    private final NodeLoops.Body ownedRange = this::ownedParts;
+    private NodeParts parts; // made at the first shared product
+    private FibreShare[] shares;
+    private final NodeLoops.Body sharedRange = this::sharedParts;
     private double[] pIn; // during a shared product only
     private double[] pOut;
 
+    /** One part's fibres and shear elements. */
+    private static final class FibreShare {
+        final int[] fibres;
+        final org.tensim.solver.ShearElements.Part shears;
+
+        FibreShare(int[] fibres, org.tensim.solver.ShearElements.Part shears) {
+            this.fibres = fibres;
+            this.shears = shears;
+        }
+    }
+
     /** out = J p (compact vectors). */
     void multiply(double[] p, double[] out) {
-        final int threads = loops.threads();
-        if (sharedKernels && threads >= 2 && endA.length >= MIN_SHARED_SPRINGS) {
-            if (owned == null) {
-                // Parts claimed by the threads as they come: several per thread, so that a thread whose core is
-                // taken by another process leaves its parts to the others.
-                owned = new OwnedSprings(endA, endB, restX(), PARTS_PER_THREAD * threads);
+        final double[] m = s.mass;
+        final double dt = diagonalTerm;
+        for (int j = 0; j < nodes.length; j++) {
+            final double mj = m[nodes[j]] + dt;
+            out[3 * j] = mj * p[3 * j];
+            out[3 * j + 1] = mj * p[3 * j + 1];
+            out[3 * j + 2] = mj * p[3 * j + 2];
+        }
+        final int[] ea = endA;
+        final int[] eb = endB;
+        final double[] u = dir;
+        for (int i = 0; i < ea.length; i++) {
+            final int a = ea[i];
+            final int b = eb[i];
+            if (a < 0 && b < 0) {
+                continue;
             }
-            pIn = p;
-            pOut = out;
-            try {
-                loops.runTasks(owned.parts(), ownedRange);
-            } finally {
-                pIn = null;
-                pOut = null;
+            final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
+            final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
+            final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
+            final double ux = u[3 * i];
+            final double uy = u[3 * i + 1];
+            final double uz = u[3 * i + 2];
+            final double beta = coef[2 * i + 1];
+            final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
+            final double ax = ur * ux + beta * rx;
+            final double ay = ur * uy + beta * ry;
+            final double az = ur * uz + beta * rz;
+            if (a >= 0) {
+                out[a] -= ax;
+                out[a + 1] -= ay;
+                out[a + 2] -= az;
             }
-        } else {
-            final double[] m = s.mass;
-            final double dt = diagonalTerm;
-            for (int j = 0; j < nodes.length; j++) {
-                final double mj = m[nodes[j]] + dt;
-                out[3 * j] = mj * p[3 * j];
-                out[3 * j + 1] = mj * p[3 * j + 1];
-                out[3 * j + 2] = mj * p[3 * j + 2];
-            }
-            final int[] ea = endA;
-            final int[] eb = endB;
-            final double[] u = dir;
-            for (int i = 0; i < ea.length; i++) {
-                final int a = ea[i];
-                final int b = eb[i];
-                if (a < 0 && b < 0) {
-                    continue;
-                }
-                final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
-                final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
-                final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
-                final double ux = u[3 * i];
-                final double uy = u[3 * i + 1];
-                final double uz = u[3 * i + 2];
-                final double beta = coef[2 * i + 1];
-                final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
-                final double ax = ur * ux + beta * rx;
-                final double ay = ur * uy + beta * ry;
-                final double az = ur * uz + beta * rz;
-                if (a >= 0) {
-                    out[a] -= ax;
-                    out[a + 1] -= ay;
-                    out[a + 2] -= az;
-                }
-                if (b >= 0) {
-                    out[b] += ax;
-                    out[b + 1] += ay;
-                    out[b + 2] += az;
-                }
+            if (b >= 0) {
+                out[b] += ax;
+                out[b + 1] += ay;
+                out[b + 2] += az;
             }
         }
         if (triangles != null) {
             triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
         }
-        s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
-        s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
-        s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
-    }
-
-    /**
-     * The diagonal and springs' terms of the parts [from, to) of {@link #owned}: the one-thread loop's operations
-     * on each owned node, in its order (see {@link OwnedSprings}).
-     */
-    private void ownedParts(int from, int to) {
-        final double[] p = pIn;
-        final double[] out = pOut;
-        final double[] m = s.mass;
-        final double dt = diagonalTerm;
-        final int[] ea = endA;
-        final int[] eb = endB;
-        final double[] u = dir;
-        for (int k = from; k < to; k++) {
-            for (int j : owned.nodes[k]) {
-                final double mj = m[nodes[j]] + dt;
-                out[3 * j] = mj * p[3 * j];
-                out[3 * j + 1] = mj * p[3 * j + 1];
-                out[3 * j + 2] = mj * p[3 * j + 2];
+        final int threads = loops.threads();
+        if (sharedKernels && threads >= 2 && s.contacts.count() == 0
+                && s.fibres.count() + s.shears.count() >= MIN_SHARED_ELEMENTS) {
+            if (parts == null || parts.parts() != PARTS_PER_THREAD * threads) {
+                share(PARTS_PER_THREAD * threads); // once per thread count
             }
-            for (int code : owned.springs[k]) {
-                final int i = code >>> 2;
-                final int a = ea[i];
-                final int b = eb[i];
-                final double rx = (b >= 0 ? p[b] : 0) - (a >= 0 ? p[a] : 0);
-                final double ry = (b >= 0 ? p[b + 1] : 0) - (a >= 0 ? p[a + 1] : 0);
-                final double rz = (b >= 0 ? p[b + 2] : 0) - (a >= 0 ? p[a + 2] : 0);
-                final double ux = u[3 * i];
-                final double uy = u[3 * i + 1];
-                final double uz = u[3 * i + 2];
-                final double beta = coef[2 * i + 1];
-                final double ur = coef[2 * i] * (ux * rx + uy * ry + uz * rz);
-                final double ax = ur * ux + beta * rx;
-                final double ay = ur * uy + beta * ry;
-                final double az = ur * uz + beta * rz;
-                if ((code & 1) != 0) {
-                    out[a] -= ax;
-                    out[a + 1] -= ay;
-                    out[a + 2] -= az;
-                }
-                if ((code & 2) != 0) {
-                    out[b] += ax;
-                    out[b + 1] += ay;
-                    out[b + 2] += az;
-                }
+            pIn = p;
+            pOut = out;
+            try {
+                loops.runTasks(parts.parts(), sharedRange);
+            } finally {
+                pIn = null;
+                pOut = null;
             }
+        } else {
+            s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
+            s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
+            s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
     }
 
-    /** The free nodes' rest x (compact index), m: where {@link OwnedSprings} cuts. */
+    /**
+     * Cuts the free nodes into {@code count} parts of equal node counts, parts claimed by the threads
+     * as they come: several per thread, so that a thread whose core another process takes leaves its parts to
+     * the others.
+     */
+    private void share(int count) {
+        long[] work = new long[nodes.length];
+        java.util.Arrays.fill(work, 1); // equal node counts: the parts are claimed as they come, which evens them
+        parts = new NodeParts(restX(), work, count);
+        shares = new FibreShare[count];
+        for (int k = 0; k < count; k++) {
+            shares[k] = new FibreShare(s.fibres.ownedFibres(triangleOffset, parts.owner, k),
+                    s.shears.part(triangleOffset, parts.owner, k));
+        }
+    }
+
+    /**
+     * The fibres' and shear elements' terms of the parts [from, to): the one-thread loops' operations on each
+     * owned node, in their order (see {@link NodeParts}).
+     */
+    private void sharedParts(int from, int to) {
+        for (int k = from; k < to; k++) {
+            s.fibres.multiplyAdd(shares[k].fibres, pIn, pOut, triangleOffset, triangleWeight);
+            s.shears.multiplyAdd(shares[k].shears, pIn, pOut, triangleOffset, triangleWeight, triangleDampingWeight);
+        }
+    }
+
+    /** The free nodes' rest x (compact index), m: where {@link NodeParts} cuts. */
     private double[] restX() {
         double[] x = new double[nodes.length];
         for (int j = 0; j < nodes.length; j++) {
@@ -254,7 +247,7 @@ final class SpringJacobian {
     }
 
     /** The parts of the last shared product, or null (for tests). */
-    OwnedSprings owned() {
-        return owned;
+    NodeParts parts() {
+        return parts;
     }
 }

@@ -39,8 +39,8 @@ class PrefactoredAllocationTest {
     }
 
     /**
-     * A diaphragm large enough for the springs' products and the solves to be shared among the threads
-     * ({@link OwnedSprings}, {@link SubtreeSolve}).
+     * A diaphragm large enough for the fibres' and shear elements' products and the solves to be shared among
+     * the threads ({@link NodeParts}, {@link SubtreeSolve}).
      */
     @Test
     void bdf2StepWithSharedKernelsAllocatesNothing() throws Exception {
@@ -48,7 +48,8 @@ class PrefactoredAllocationTest {
                 new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
         PrefactoredBdf2 bdf2 = new PrefactoredBdf2();
         sim.setIntegrator(bdf2);
-        assertTrue(sim.state().springCount() >= SpringJacobian.MIN_SHARED_SPRINGS, "springs shared");
+        assertTrue(sim.state().fibres.count() + sim.state().shears.count() >= SpringJacobian.MIN_SHARED_ELEMENTS,
+                "fibres and shear elements shared");
         assertNoAllocation(sim, 2, 0.025, 200);
         assertTrue(bdf2.factorNonZeros() >= SparseCholesky.MIN_SPLIT_ENTRIES, "solves shared");
     }

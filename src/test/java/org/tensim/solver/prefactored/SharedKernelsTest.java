@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tensim.scene.LatticeScene;
 import org.tensim.scene.diaphragm.BreathingCycle;
 import org.tensim.scene.diaphragm.DiaphragmControls;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
@@ -20,16 +19,22 @@ import org.tensim.solver.parallel.PooledNodeLoops;
 import org.tensim.solver.parallel.WorkerPool;
 
 /**
- * What bdf2 shares among the threads beyond the force model's loops (the springs' part of the Jacobian
- * products, {@link OwnedSprings}, and the preconditioner's solves, {@link SubtreeSolve}) gives the one-thread
- * bits: a product on 1, 2 and 3 threads, and whole steps of a diaphragm on 1 and 2 threads, with the shared
- * kernels and without.
+ * What bdf2 shares among the threads beyond the force model's loops (the fibres' and shear elements' part of
+ * the Jacobian products, by {@link NodeParts}, and the preconditioner's solves, {@link SubtreeSolve}) gives the
+ * one-thread bits: a product on 1, 2 and 3 threads, and whole steps of a diaphragm on 1 and 2 threads, with the
+ * shared kernels and without.
  */
 class SharedKernelsTest {
+    private static Simulation diaphragm() throws Exception {
+        return DiaphragmSetup.generated(28, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
+    }
+
     @Test
-    void springProductHasTheSameBitsOnOneTwoAndThreeThreads() {
-        SystemState s = SystemState.compile(LatticeScene.build(12, 0.1, 1, 1000, 0.5, true));
-        assertTrue(s.springCount() >= SpringJacobian.MIN_SHARED_SPRINGS, s.springCount() + " springs");
+    void productHasTheSameBitsOnOneTwoAndThreeThreads() throws Exception {
+        SystemState s = diaphragm().state();
+        assertTrue(s.fibres.count() + s.shears.count() >= SpringJacobian.MIN_SHARED_ELEMENTS,
+                s.fibres.count() + " fibres, " + s.shears.count() + " shear elements");
         Random rnd = new Random(3);
         int[] freeIndex = new int[s.nodeCount];
         int free = 0;
@@ -44,27 +49,24 @@ class SharedKernelsTest {
         }
         double[] x = new double[s.x0.length];
         for (int k = 0; k < x.length; k++) {
-            x[k] = s.x0[k] * (1 + 0.05 * rnd.nextGaussian()); // some springs stretched, some compressed
+            x[k] = s.x0[k] + 1e-3 * rnd.nextGaussian(); // some elements stretched, some compressed
         }
         double[] p = new double[3 * free];
         for (int k = 0; k < p.length; k++) {
             p[k] = rnd.nextGaussian();
         }
         SpringJacobian serial = new SpringJacobian(s, freeIndex, freeNodes);
-        serial.linearise(0, x, 0.02, NodeLoops.SERIAL);
+        serial.linearise(0.7, x, 0.02, NodeLoops.SERIAL);
         double[] reference = new double[p.length];
         serial.multiply(p, reference);
         for (int threads = 2; threads <= 3; threads++) {
-            try (WorkerPool pool = new WorkerPool(threads, "spring-product-test")) {
+            try (WorkerPool pool = new WorkerPool(threads, "product-test")) {
                 SpringJacobian shared = new SpringJacobian(s, freeIndex, freeNodes);
-                shared.linearise(0, x, 0.02, new PooledNodeLoops(pool, 1));
+                shared.linearise(0.7, x, 0.02, new PooledNodeLoops(pool, 1));
                 double[] out = new double[p.length];
                 shared.multiply(p, out);
-                assertNotNull(shared.owned(), "the product was shared");
-                assertEquals(SpringJacobian.PARTS_PER_THREAD * threads, shared.owned().parts());
-                // 12 planes of nodes along x cut into 8 or 12 parts: the springs across a cut computed twice
-                assertTrue(shared.owned().springTerms() < 1.5 * s.springCount(),
-                        "springs computed twice: " + shared.owned().springTerms() + " for " + s.springCount());
+                assertNotNull(shared.parts(), "the product was shared");
+                assertEquals(SpringJacobian.PARTS_PER_THREAD * threads, shared.parts().parts());
                 assertArrayEquals(reference, out, threads + " threads");
             }
         }
@@ -72,8 +74,7 @@ class SharedKernelsTest {
 
     /** Positions after {@code steps} bdf2 steps at 25 ms of a 28-ring diaphragm. */
     private static double[] run(int threads, boolean shared, int steps) throws Exception {
-        Simulation sim = DiaphragmSetup.generated(28, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
-                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
+        Simulation sim = diaphragm();
         PrefactoredBdf2 bdf2 = new PrefactoredBdf2().setSharedKernels(shared);
         sim.setIntegrator(bdf2);
         try (Parallelism p = Parallelism.install(sim, threads)) {
@@ -82,8 +83,8 @@ class SharedKernelsTest {
             }
         }
         assertTrue(bdf2.factorNonZeros() >= SparseCholesky.MIN_SPLIT_ENTRIES, bdf2.factorNonZeros() + " entries");
-        assertTrue(sim.state().springCount() >= SpringJacobian.MIN_SHARED_SPRINGS,
-                sim.state().springCount() + " springs");
+        assertTrue(sim.state().fibres.count() + sim.state().shears.count() >= SpringJacobian.MIN_SHARED_ELEMENTS,
+                "fibres and shear elements shared");
         return sim.state().x.clone();
     }
 
