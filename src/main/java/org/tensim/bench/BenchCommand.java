@@ -78,8 +78,9 @@ public final class BenchCommand implements Callable<Integer> {
                 + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (default 20) on "
                 + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
                 + "time and load), then the median ratios and how far apart the two ended; a name may end in "
-                + "':serial' (bdf2 with its solves on the calling thread) and in '@T' (its own thread count, e.g. "
-                + "bdf2@1,bdf2@2)"})
+                + "':serial' or ':shared' (bdf2 with its solves and products' fibres and shear elements on the "
+                + "calling thread, or always shared among the threads; by default shared while measured faster) and "
+                + "in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)"})
     List<String> compare;
 
     @Override

@@ -15,6 +15,7 @@ import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.parallel.Parallelism;
 import org.tensim.solver.prefactored.Bdf2Part;
+import org.tensim.solver.prefactored.KernelSharing;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
@@ -208,20 +209,25 @@ final class InterleavedComparison {
     }
 
     /**
-     * The integrator of a side's name: a name of the catalogue, optionally followed by {@value #SERIAL} (a
-     * {@code bdf2} whose solves stay on the calling thread, {@link PrefactoredBdf2#setSharedKernels}) and by
-     * {@code @T} (its own thread count).
+     * The integrator of a side's name: a name of the catalogue, optionally followed by {@value #SERIAL} or
+     * {@value #SHARED} (a {@code bdf2} whose solves and products' fibres and shear elements stay on the calling
+     * thread, or are always shared: {@link PrefactoredBdf2#setKernelSharing}; by default shared while measured
+     * faster) and by {@code @T} (its own thread count).
      */
     static Integrator create(String side) {
         String n = side.replaceFirst("@\\d+$", "");
-        boolean serial = n.endsWith(SERIAL);
-        Integrator in = org.tensim.solver.integrators.Integrators.create(
-                serial ? n.substring(0, n.length() - SERIAL.length()) : n);
-        if (serial) {
+        KernelSharing sharing = n.endsWith(SERIAL) ? KernelSharing.NEVER
+                : n.endsWith(SHARED) ? KernelSharing.ALWAYS : null;
+        if (sharing != null) {
+            n = n.substring(0, n.lastIndexOf(':'));
+        }
+        Integrator in = org.tensim.solver.integrators.Integrators.create(n);
+        if (sharing != null) {
             if (!(in instanceof PrefactoredBdf2 b)) {
-                throw new IllegalArgumentException(SERIAL + " applies to the bdf2 family, not to " + side);
+                throw new IllegalArgumentException(SERIAL + " and " + SHARED + " apply to the bdf2 family, not to "
+                        + side);
             }
-            b.setSharedKernels(false);
+            b.setKernelSharing(sharing);
         }
         return in;
     }
@@ -232,8 +238,10 @@ final class InterleavedComparison {
         return m.find() ? Integer.parseInt(m.group(1)) : threads;
     }
 
-    /** Suffix of a side's name whose bdf2 keeps its solves on the calling thread. */
+    /** Suffix of a side's name whose bdf2 keeps its solves and products on the calling thread. */
     static final String SERIAL = ":serial";
+    /** Suffix of a side's name whose bdf2 always shares its solves and products among the threads. */
+    static final String SHARED = ":shared";
 
     private static double round(double v) {
         return Math.round(v * 1e4) / 1e4;

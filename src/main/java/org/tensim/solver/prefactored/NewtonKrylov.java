@@ -39,8 +39,10 @@ final class NewtonKrylov {
     private final double[] work;
     private final double[] scratch = new double[6];
     double lastRelativeResidual;
-    /** Whether the solves with the factor and the springs' products are shared among the force model's threads. */
-    boolean sharedKernels = true;
+    /** When the solves and the products' fibres and shear elements are shared among the force model's threads. */
+    private KernelSharing sharing = KernelSharing.MEASURED;
+    private SharingChoice solveSharing = new SharingChoice(sharing);
+    private SharingChoice productSharing = new SharingChoice(sharing);
     long products;
     /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
     final long[] partNanos = new long[Bdf2Part.values().length];
@@ -75,7 +77,6 @@ final class NewtonKrylov {
     void solve(ForceModel model, SparseCholesky precond, double t1, double beta, int newtonIterations,
             int krylovIterations, double krylovTolerance) {
         final int n3 = xIt.length;
-        jacobian.sharedKernels = sharedKernels;
         System.arraycopy(s.x, 0, xIt, 0, n3);
         System.arraycopy(s.v, 0, vIt, 0, n3);
         s.applyMotions(t1, xIt, vIt, scratch);
@@ -149,7 +150,7 @@ final class NewtonKrylov {
         }
         links.projectDual(r);
         preconditioner = precond;
-        loops = sharedKernels ? model.nodeLoops() : NodeLoops.SERIAL;
+        loops = model.nodeLoops();
         cg.solve(system, dv, r, 0, tolerance, maxIterations, ConjugateGradient.Stop.PRECONDITIONED);
         lastRelativeResidual = cg.relativeResidual();
     }
@@ -162,21 +163,37 @@ final class NewtonKrylov {
         @Override
         public void multiply(double[] pv, double[] out) {
             products++;
+            final boolean shared = loops.threads() >= 2 && productSharing.share();
+            jacobian.sharedKernels = shared;
             long t0 = System.nanoTime();
             jacobian.multiply(pv, out);
+            long t1 = System.nanoTime();
             links.projectDual(out);
-            partNanos[Bdf2Part.PRODUCTS.ordinal()] += System.nanoTime() - t0;
+            long t2 = System.nanoTime();
+            productSharing.record(shared, t1 - t0);
+            partNanos[Bdf2Part.PRODUCTS.ordinal()] += t2 - t0;
         }
 
         @Override
         public void precondition(double[] rv, double[] zv) {
             System.arraycopy(rv, 0, zv, 0, rv.length);
+            final boolean shared = loops.threads() >= 2 && solveSharing.share();
             long t0 = System.nanoTime();
-            preconditioner.solve3(zv, work, loops);
+            preconditioner.solve3(zv, work, shared ? loops : NodeLoops.SERIAL);
+            long t1 = System.nanoTime();
             links.project(zv);
-            partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
+            long t2 = System.nanoTime();
+            solveSharing.record(shared, t1 - t0);
+            partNanos[Bdf2Part.SOLVES.ordinal()] += t2 - t0;
         }
     };
+
+    /** Sets when the solves and the products' fibres and shear elements are shared (their measures start anew). */
+    void setSharing(KernelSharing policy) {
+        sharing = policy;
+        solveSharing = new SharingChoice(policy);
+        productSharing = new SharingChoice(policy);
+    }
 
     private void scatter(double[] compact, double[] full) {
         for (int j = 0; j < nodes.length; j++) {

@@ -65,7 +65,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
     private final double krylovTolerance = KRYLOV_TOLERANCE;
     private Executor executor;
-    private boolean sharedKernels = true;
+    private KernelSharing sharing = KernelSharing.MEASURED;
 
     private SystemState s;
     private PrefactoredMatrix matrix;
@@ -132,22 +132,22 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     }
 
     /**
-     * Whether the preconditioner's solves and the springs' part of the Jacobian products are shared among the
-     * force model's threads when it has two or more (default true; the same bits either way). Off, they run on
-     * the calling thread alone: the form before they were shared, kept for before/after measurements in one run
-     * ({@code tensim bench --compare bdf2:serial,bdf2}).
+     * When the preconditioner's solves and the fibres' and shear elements' part of the Jacobian products are
+     * shared among the force model's threads, if it has two or more (default {@link KernelSharing#MEASURED}; the
+     * same bits in every case). {@link KernelSharing#NEVER} is the form before they were shared, kept for
+     * before/after measurements in one run ({@code tensim bench --compare bdf2:serial,bdf2}).
      */
-    public PrefactoredBdf2 setSharedKernels(boolean shared) {
-        sharedKernels = shared;
+    public PrefactoredBdf2 setKernelSharing(KernelSharing policy) {
+        sharing = java.util.Objects.requireNonNull(policy, "kernel sharing");
         if (newton != null) {
-            newton.sharedKernels = shared;
+            newton.setSharing(policy);
         }
         return this;
     }
 
-    /** Whether the preconditioner's solves and the springs' products are shared among the force model's threads. */
-    public boolean sharedKernels() {
-        return sharedKernels;
+    /** When the solves and the products' fibres and shear elements are shared among the force model's threads. */
+    public KernelSharing kernelSharing() {
+        return sharing;
     }
 
     /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
@@ -329,7 +329,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         int nf3 = 3 * matrix.freeCount();
         newton = new NewtonKrylov(st, matrix.freeIndex, matrix.freeNodes);
-        newton.sharedKernels = sharedKernels;
+        newton.setSharing(sharing);
         xOld1 = new double[nf3];
         xOld2 = new double[nf3];
         vOld1 = new double[nf3];

@@ -73,9 +73,9 @@ class SharedKernelsTest {
     }
 
     /** Positions after {@code steps} bdf2 steps at 25 ms of a 28-ring diaphragm. */
-    private static double[] run(int threads, boolean shared, int steps) throws Exception {
+    private static double[] run(int threads, KernelSharing shared, int steps) throws Exception {
         Simulation sim = diaphragm();
-        PrefactoredBdf2 bdf2 = new PrefactoredBdf2().setSharedKernels(shared);
+        PrefactoredBdf2 bdf2 = new PrefactoredBdf2().setKernelSharing(shared);
         sim.setIntegrator(bdf2);
         try (Parallelism p = Parallelism.install(sim, threads)) {
             for (int i = 0; i < steps; i++) {
@@ -90,8 +90,9 @@ class SharedKernelsTest {
 
     @Test
     void bdf2StepsHaveTheSameBitsOnOneAndTwoThreads() throws Exception {
-        double[] one = run(1, true, 12);
-        assertArrayEquals(one, run(2, true, 12), "2 threads, shared kernels");
-        assertArrayEquals(one, run(2, false, 12), "2 threads, kernels on the calling thread");
+        double[] one = run(1, KernelSharing.ALWAYS, 12);
+        assertArrayEquals(one, run(2, KernelSharing.ALWAYS, 12), "2 threads, shared kernels");
+        assertArrayEquals(one, run(2, KernelSharing.NEVER, 12), "2 threads, kernels on the calling thread");
+        assertArrayEquals(one, run(2, KernelSharing.MEASURED, 12), "2 threads, shared while measured faster");
     }
 }
