@@ -11,8 +11,9 @@ public enum KernelSharing {
     /** On the threads whenever the force model has two or more. */
     ALWAYS,
     /**
-     * On the threads while that is measured to be faster ({@link SharingChoice}): on a machine whose other core
-     * is taken by another process, a shared kernel waits for the busy core and costs more than on one thread.
+     * On the threads while that is measured to be faster ({@link SharingChoice}), the triangles' part of the
+     * products with them (shared in the other two): on a machine whose other core is taken by another process, a
+     * shared kernel waits for the busy core and costs more than on one thread.
      */
     MEASURED
 }

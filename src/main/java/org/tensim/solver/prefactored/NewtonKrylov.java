@@ -165,6 +165,9 @@ final class NewtonKrylov {
             products++;
             final boolean shared = loops.threads() >= 2 && productSharing.share();
             jacobian.sharedKernels = shared;
+            // The triangles' slabs were shared before the rest: the one-thread form of the products (NEVER) keeps
+            // them so; the measured choice takes the whole product to the calling thread when that is faster.
+            jacobian.sharedTriangles = shared || sharing != KernelSharing.MEASURED;
             long t0 = System.nanoTime();
             jacobian.multiply(pv, out);
             long t1 = System.nanoTime();

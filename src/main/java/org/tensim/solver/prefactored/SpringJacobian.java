@@ -126,6 +126,11 @@ final class SpringJacobian {
      * linearisation's loops (when it has two or more; the same bits either way).
      */
     boolean sharedKernels = true;
+    /**
+     * Whether the triangles' slabs go to the threads of the linearisation's loops (the same bits either way):
+     * false keeps them on the calling thread, where a product measured faster so (see {@link SharingChoice}).
+     */
+    boolean sharedTriangles = true;
     /** Parts of the shared product per thread. */
     static final int PARTS_PER_THREAD = 4;
     private NodeParts parts; // made at the first shared product
@@ -187,7 +192,8 @@ final class SpringJacobian {
             }
         }
         if (triangles != null) {
-            triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
+            triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight,
+                    sharedTriangles ? loops : NodeLoops.SERIAL);
         }
         final int threads = loops.threads();
         if (sharedKernels && threads >= 2 && s.contacts.count() == 0
