@@ -60,7 +60,7 @@ public final class PooledNodeLoops implements NodeLoops {
         }
         taskBody = b;
         try {
-            pool.runClaimed(tasks, task, b); // timed per body: each is its own kind of call
+            pool.runClaimed(tasks, task);
         } finally {
             taskBody = null;
         }
@@ -75,7 +75,7 @@ public final class PooledNodeLoops implements NodeLoops {
         body = b;
         nodes = n;
         try {
-            pool.run(slice, b);
+            pool.run(slice);
         } finally {
             body = null;
         }

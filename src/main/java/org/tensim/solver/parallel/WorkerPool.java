@@ -53,19 +53,19 @@ public final class WorkerPool implements AutoCloseable {
     private volatile Claimable claimed;
     private int claimJobs;
 
-    /** Call sites whose calls {@link #setMeasured} times; beyond, calls are shared. */
-    public static final int MAX_SITES = 64;
-    /** One call of a site in this many runs the form that is not the faster, to measure it again. */
-    public static final int PROBE_PERIOD = 16;
+    /** Calls of {@link #run} and {@link #runClaimed} per window of the measured choice ({@link #setMeasured}). */
+    public static final int WINDOW_CALLS = 256;
+    /** One window in this many runs the form that is not the faster, to measure it again. */
+    public static final int PROBE_WINDOWS = 8;
     private static final double WEIGHT = 0.25;
     private boolean measured;
-    private final Object[] siteKey = new Object[MAX_SITES];
-    private final double[] siteShared = new double[MAX_SITES]; // ns per call, moving average
-    private final double[] siteCaller = new double[MAX_SITES];
-    private final long[] siteCalls = new long[MAX_SITES];
-    private int sites;
-    private long callerCalls;
-    private long measuredCalls;
+    private boolean callerOnly;
+    private long windowNanos;
+    private int windowCalls;
+    private long windows;
+    private double sharedNanos = Double.NaN; // per call, moving average over windows
+    private double callerNanos = Double.NaN;
+    private long callerWindows;
 
     /** Per-worker state, padded so that two workers' flags never share a cache line. */
     private static final class Slot {
@@ -126,14 +126,6 @@ public final class WorkerPool implements AutoCloseable {
      * @throws RuntimeException      or Error: the first failure of a worker, rethrown
      */
     public void run(Task t) {
-        run(t, t);
-    }
-
-    /**
-     * As {@link #run(Task)}, timed as call site {@code site} when the pool is measured ({@link #setMeasured}):
-     * a caller that runs varying work through one task object names each kind of call by its own key.
-     */
-    public void run(Task t, Object site) {
         if (closed) {
             throw new IllegalStateException("worker pool is closed");
         }
@@ -141,84 +133,73 @@ public final class WorkerPool implements AutoCloseable {
             t.run(0);
             return;
         }
-        final int i = measured ? site(site) : -1;
-        if (i < 0) {
+        if (!measured) {
             runShared(t);
             return;
         }
-        final boolean caller = onCaller(i);
         final long t0 = System.nanoTime();
-        if (caller) {
+        if (callerOnly) {
             for (int w = 0; w < size; w++) {
                 t.run(w);
             }
         } else {
             runShared(t);
         }
-        record(i, caller, System.nanoTime() - t0);
+        account(System.nanoTime() - t0);
     }
 
     /**
-     * Whether the pool times its calls, site by site, and runs a site's calls on the caller alone while that is
-     * faster (default off). The caller then runs every worker's share in turn ({@code t.run(w)} for each w, the
-     * tasks of {@link #runClaimed} in order): the same work on the same data, so the same results as shared, on
-     * one thread. Per site (a task object, or the key given), each form's wall time per call is a moving
-     * average; the faster is used and the other tried once every {@link #PROBE_PERIOD} calls. Why: on a
-     * machine whose other core another process holds, a shared call waits for the worker, and a step on two
-     * threads is slower than on one.
+     * Whether the pool measures its calls and runs them all on the caller while that is faster (default off).
+     * The caller then runs every worker's share in turn ({@code t.run(w)} for each w, the tasks of
+     * {@link #runClaimed} in order): the same work on the same data, so the same results as shared, on one
+     * thread. The choice: the calls' wall time is summed over windows of {@link #WINDOW_CALLS} calls, each
+     * window in one form; each form's time per call is a moving average of its windows; the faster is used and
+     * the other tried once every {@link #PROBE_WINDOWS} windows. A window spans several steps, so that both
+     * forms see the same mix of calls. Why: on a machine whose other core another process holds, a shared call
+     * waits for the worker, and a step on two threads is slower than on one.
      */
     public void setMeasured(boolean on) {
         measured = on;
+        callerOnly = false;
+        windowNanos = 0;
+        windowCalls = 0;
     }
 
-    /** Calls measured so far ({@link #setMeasured}), and of them those run on the caller alone. */
-    public long measuredCalls() {
-        return measuredCalls;
+    /** Whether the calls run on the caller alone at present (always false unless {@link #setMeasured}). */
+    public boolean callerOnly() {
+        return callerOnly;
     }
 
-    /** Measured calls run on the caller alone so far. */
-    public long callerCalls() {
-        return callerCalls;
+    /** Windows of the measured choice run on the caller alone so far. */
+    public long callerWindows() {
+        return callerWindows;
     }
 
-    /** The index of a call site, added at its first call; -1 when the table is full. */
-    private int site(Object key) {
-        for (int i = 0; i < sites; i++) {
-            if (siteKey[i] == key) {
-                return i;
-            }
+    /** Windows of the measured choice so far. */
+    public long windows() {
+        return windows;
+    }
+
+    private void account(long nanos) {
+        windowNanos += nanos;
+        if (++windowCalls < WINDOW_CALLS) {
+            return;
         }
-        if (sites == MAX_SITES) {
-            return -1;
-        }
-        siteKey[sites] = key;
-        siteShared[sites] = Double.NaN;
-        siteCaller[sites] = Double.NaN;
-        return sites++;
-    }
-
-    /** Whether site i's next call runs on the caller alone. */
-    private boolean onCaller(int i) {
-        final long n = ++siteCalls[i];
-        final boolean caller;
-        if (Double.isNaN(siteShared[i])) {
-            caller = false;
-        } else if (Double.isNaN(siteCaller[i])) {
-            caller = true;
+        final double perCall = (double) windowNanos / windowCalls;
+        if (callerOnly) {
+            callerNanos = Double.isNaN(callerNanos) ? perCall : callerNanos + WEIGHT * (perCall - callerNanos);
+            callerWindows++;
         } else {
-            final boolean faster = siteCaller[i] < siteShared[i];
-            caller = n % PROBE_PERIOD == 0 ? !faster : faster;
+            sharedNanos = Double.isNaN(sharedNanos) ? perCall : sharedNanos + WEIGHT * (perCall - sharedNanos);
         }
-        measuredCalls++;
-        callerCalls += caller ? 1 : 0;
-        return caller;
-    }
-
-    private void record(int i, boolean caller, long nanos) {
-        if (caller) {
-            siteCaller[i] = Double.isNaN(siteCaller[i]) ? nanos : siteCaller[i] + WEIGHT * (nanos - siteCaller[i]);
+        windows++;
+        windowNanos = 0;
+        windowCalls = 0;
+        if (Double.isNaN(callerNanos)) {
+            callerOnly = true;
         } else {
-            siteShared[i] = Double.isNaN(siteShared[i]) ? nanos : siteShared[i] + WEIGHT * (nanos - siteShared[i]);
+            final boolean faster = callerNanos < sharedNanos;
+            callerOnly = windows % PROBE_WINDOWS == 0 ? !faster : faster;
         }
     }
 
@@ -272,11 +253,6 @@ public final class WorkerPool implements AutoCloseable {
      * @param tasks number of tasks, in [0, 65535]
      */
     public void runClaimed(int tasks, Claimable body) {
-        runClaimed(tasks, body, body);
-    }
-
-    /** As {@link #runClaimed(int, Claimable)}, timed as call site {@code site} (see {@link #run(Task, Object)}). */
-    public void runClaimed(int tasks, Claimable body, Object site) {
         if (closed) {
             throw new IllegalStateException("worker pool is closed");
         }
@@ -289,21 +265,19 @@ public final class WorkerPool implements AutoCloseable {
             }
             return;
         }
-        final int i = measured ? site(site) : -1;
-        if (i < 0) {
+        if (!measured) {
             runClaimedShared(tasks, body);
             return;
         }
-        final boolean caller = onCaller(i);
         final long t0 = System.nanoTime();
-        if (caller) {
+        if (callerOnly) {
             for (int k = 0; k < tasks; k++) {
                 body.run(k);
             }
         } else {
             runClaimedShared(tasks, body);
         }
-        record(i, caller, System.nanoTime() - t0);
+        account(System.nanoTime() - t0);
     }
 
     private void runClaimedShared(int tasks, Claimable body) {
