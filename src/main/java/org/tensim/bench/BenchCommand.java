@@ -79,8 +79,8 @@ public final class BenchCommand implements Callable<Integer> {
                 + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
                 + "time and load), then the median ratios and how far apart the two ended; a name may end in "
                 + "':serial' or ':shared' (bdf2 with its solves and products' fibres and shear elements on the "
-                + "calling thread, or always shared among the threads, and the pool sharing every call; by default "
-                + "both shared while measured faster) and in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)"})
+                + "calling thread, or always shared among the threads; by default shared while measured faster) and "
+                + "in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)"})
     List<String> compare;
 
     @Override

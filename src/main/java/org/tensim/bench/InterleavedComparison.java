@@ -88,9 +88,6 @@ final class InterleavedComparison {
                 sim.setIntegrator(in);
                 int t = threadsOf(n, threads);
                 Parallelism p = t > 1 ? Parallelism.install(sim, t) : null;
-                if (p != null && (n.contains(SERIAL) || n.contains(SHARED))) {
-                    p.pool().setMeasured(false); // the pool always shares, as before the measured choice
-                }
                 sides.add(new Side(n, sim, in, dt, p));
             }
             for (int i = 0; i < warmUpSteps; i++) {
@@ -215,8 +212,7 @@ final class InterleavedComparison {
      * The integrator of a side's name: a name of the catalogue, optionally followed by {@value #SERIAL} or
      * {@value #SHARED} (a {@code bdf2} whose solves and products' fibres and shear elements stay on the calling
      * thread, or are always shared: {@link PrefactoredBdf2#setKernelSharing}; by default shared while measured
-     * faster; with either suffix the pool shares every call, as before {@code WorkerPool.setMeasured}) and by
-     * {@code @T} (its own thread count).
+     * faster) and by {@code @T} (its own thread count).
      */
     static Integrator create(String side) {
         String n = side.replaceFirst("@\\d+$", "");

@@ -18,10 +18,7 @@ import org.tensim.solver.SystemState;
  *   }
  * </pre>
  *
- * With the default thresholds the pool measures itself and runs a step's calls on the calling thread alone
- * while that is faster ({@link WorkerPool#setMeasured}: on a machine whose other core another process holds).
- *
- * <p>Results do not depend on the thread count (bit for bit); see the spring pass and
+ * Results do not depend on the thread count (bit for bit); see the spring pass and
  * the link sweeps for how they may differ from the built-in loops (summation and
  * sweep order). Node loops give the built-in loops' bits.
  */
@@ -38,10 +35,6 @@ public final class Parallelism implements AutoCloseable {
         this.pool = new WorkerPool(threads, "tensim-step");
         SystemState s = sim.state();
         boolean defaults = minWork <= 0;
-        // With the default thresholds the pool runs its calls on the caller alone while that is measured faster
-        // (the same results: WorkerPool.setMeasured); with a threshold given (tests of thread-count independence)
-        // it always shares, so that the threads run at the same time.
-        pool.setMeasured(defaults);
         this.springs = new ParallelSpringPass(s, pool, order,
                 defaults ? ParallelSpringPass.MIN_PARALLEL_SPRINGS : minWork);
         this.links = s.linkCount() == 0 ? null

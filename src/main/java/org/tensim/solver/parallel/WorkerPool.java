@@ -53,20 +53,6 @@ public final class WorkerPool implements AutoCloseable {
     private volatile Claimable claimed;
     private int claimJobs;
 
-    /** Calls of {@link #run} and {@link #runClaimed} per window of the measured choice ({@link #setMeasured}). */
-    public static final int WINDOW_CALLS = 256;
-    /** One window in this many runs the form that is not the faster, to measure it again. */
-    public static final int PROBE_WINDOWS = 8;
-    private static final double WEIGHT = 0.25;
-    private boolean measured;
-    private boolean callerOnly;
-    private long windowNanos;
-    private int windowCalls;
-    private long windows;
-    private double sharedNanos = Double.NaN; // per call, moving average over windows
-    private double callerNanos = Double.NaN;
-    private long callerWindows;
-
     /** Per-worker state, padded so that two workers' flags never share a cache line. */
     private static final class Slot {
         @SuppressWarnings("unused")
@@ -133,78 +119,6 @@ public final class WorkerPool implements AutoCloseable {
             t.run(0);
             return;
         }
-        if (!measured) {
-            runShared(t);
-            return;
-        }
-        final long t0 = System.nanoTime();
-        if (callerOnly) {
-            for (int w = 0; w < size; w++) {
-                t.run(w);
-            }
-        } else {
-            runShared(t);
-        }
-        account(System.nanoTime() - t0);
-    }
-
-    /**
-     * Whether the pool measures its calls and runs them all on the caller while that is faster (default off).
-     * The caller then runs every worker's share in turn ({@code t.run(w)} for each w, the tasks of
-     * {@link #runClaimed} in order): the same work on the same data, so the same results as shared, on one
-     * thread. The choice: the calls' wall time is summed over windows of {@link #WINDOW_CALLS} calls, each
-     * window in one form; each form's time per call is a moving average of its windows; the faster is used and
-     * the other tried once every {@link #PROBE_WINDOWS} windows. A window spans several steps, so that both
-     * forms see the same mix of calls. Why: on a machine whose other core another process holds, a shared call
-     * waits for the worker, and a step on two threads is slower than on one.
-     */
-    public void setMeasured(boolean on) {
-        measured = on;
-        callerOnly = false;
-        windowNanos = 0;
-        windowCalls = 0;
-    }
-
-    /** Whether the calls run on the caller alone at present (always false unless {@link #setMeasured}). */
-    public boolean callerOnly() {
-        return callerOnly;
-    }
-
-    /** Windows of the measured choice run on the caller alone so far. */
-    public long callerWindows() {
-        return callerWindows;
-    }
-
-    /** Windows of the measured choice so far. */
-    public long windows() {
-        return windows;
-    }
-
-    private void account(long nanos) {
-        windowNanos += nanos;
-        if (++windowCalls < WINDOW_CALLS) {
-            return;
-        }
-        final double perCall = (double) windowNanos / windowCalls;
-        if (callerOnly) {
-            callerNanos = Double.isNaN(callerNanos) ? perCall : callerNanos + WEIGHT * (perCall - callerNanos);
-            callerWindows++;
-        } else {
-            sharedNanos = Double.isNaN(sharedNanos) ? perCall : sharedNanos + WEIGHT * (perCall - sharedNanos);
-        }
-        windows++;
-        windowNanos = 0;
-        windowCalls = 0;
-        if (Double.isNaN(callerNanos)) {
-            callerOnly = true;
-        } else {
-            final boolean faster = callerNanos < sharedNanos;
-            callerOnly = windows % PROBE_WINDOWS == 0 ? !faster : faster;
-        }
-    }
-
-    /** {@link #run} on every worker at once. */
-    private void runShared(Task t) {
         task = t;
         final int e = epoch + 1;
         epoch = e; // volatile write: publishes the task and everything written before
@@ -265,22 +179,6 @@ public final class WorkerPool implements AutoCloseable {
             }
             return;
         }
-        if (!measured) {
-            runClaimedShared(tasks, body);
-            return;
-        }
-        final long t0 = System.nanoTime();
-        if (callerOnly) {
-            for (int k = 0; k < tasks; k++) {
-                body.run(k);
-            }
-        } else {
-            runClaimedShared(tasks, body);
-        }
-        account(System.nanoTime() - t0);
-    }
-
-    private void runClaimedShared(int tasks, Claimable body) {
         claimed = body;
         finished.set(0);
         final long job = (long) (++claimJobs & 0x7FFFFFFF) << 32;

@@ -2,7 +2,6 @@ package org.tensim.solver.parallel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
-import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.atomic.AtomicIntegerArray;
 import org.junit.jupiter.api.Test;
@@ -10,8 +9,7 @@ import org.tensim.testsupport.AllocationCounter;
 
 /**
  * {@link WorkerPool#runClaimed}: every task of every job runs exactly once, on whichever thread claims it,
- * jobs interleaved with {@link WorkerPool#run}; a failure is rethrown to the caller; no allocation per job. And
- * {@link WorkerPool#setMeasured}: both forms run every share once.
+ * jobs interleaved with {@link WorkerPool#run}; a failure is rethrown to the caller; no allocation per job.
  */
 class ClaimedTasksTest {
     @Test
@@ -66,38 +64,9 @@ class ClaimedTasksTest {
         }
     }
 
-    /**
-     * Measured, the pool tries the caller alone after its first window and runs every share exactly once in
-     * either form (the caller runs each worker's share in turn).
-     */
-    @Test
-    void aMeasuredPoolRunsEveryShareOnceInBothForms() {
-        try (WorkerPool pool = new WorkerPool(2, "claim-test")) {
-            pool.setMeasured(true);
-            AtomicIntegerArray claimedRuns = new AtomicIntegerArray(5);
-            int[] shares = new int[2];
-            int calls = 10 * WorkerPool.WINDOW_CALLS;
-            boolean sawCaller = false;
-            for (int i = 0; i < calls / 2; i++) {
-                pool.runClaimed(5, claimedRuns::incrementAndGet);
-                pool.run(w -> shares[w]++);
-                sawCaller |= pool.callerOnly();
-            }
-            assertEquals(true, sawCaller, "the caller alone tried");
-            assertEquals(10, pool.windows());
-            assertTrue(pool.callerWindows() >= 1);
-            for (int k = 0; k < 5; k++) {
-                assertEquals(calls / 2, claimedRuns.get(k), "task " + k);
-            }
-            assertEquals(calls / 2, shares[0]);
-            assertEquals(calls / 2, shares[1]);
-        }
-    }
-
     @Test
     void aJobAllocatesNothing() {
         try (WorkerPool pool = new WorkerPool(2, "claim-test")) {
-            pool.setMeasured(true);
             double[] out = new double[8];
             WorkerPool.Claimable body = k -> out[k] += k;
             for (int i = 0; i < 20_000; i++) {

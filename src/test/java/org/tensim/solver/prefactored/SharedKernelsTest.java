@@ -78,7 +78,6 @@ class SharedKernelsTest {
         PrefactoredBdf2 bdf2 = new PrefactoredBdf2().setKernelSharing(shared);
         sim.setIntegrator(bdf2);
         try (Parallelism p = Parallelism.install(sim, threads)) {
-            p.pool().setMeasured(false); // the threads at work at the same time throughout
             for (int i = 0; i < steps; i++) {
                 sim.step(0.025);
             }
