@@ -77,7 +77,10 @@ public final class BenchCommand implements Callable<Integer> {
             description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
                 + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (default 20) on "
                 + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
-                + "time and load), then the median ratios and how far apart the two ended"})
+                + "time and load), then the median ratios and how far apart the two ended; a name may end in "
+                + "':serial' or ':shared' (bdf2 with its solves and products' fibres and shear elements on the "
+                + "calling thread, or always shared among the threads; by default shared while measured faster) and "
+                + "in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)"})
     List<String> compare;
 
     @Override
@@ -113,7 +116,7 @@ public final class BenchCommand implements Callable<Integer> {
                 throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--compare takes two "
                         + "integrator names, with --scene diaphragm; got " + compare + " on " + scene);
             }
-            compare.forEach(Integrators::create);
+            compare.forEach(InterleavedComparison::create);
             int k = steps > 0 ? steps : 20;
             InterleavedComparison.run(DiaphragmBenchScene::build, compare, threads.get(0), step, k,
                     repeats, k, m -> System.out.println(Json.line(m)));

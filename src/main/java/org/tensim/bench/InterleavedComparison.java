@@ -15,6 +15,7 @@ import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.parallel.Parallelism;
 import org.tensim.solver.prefactored.Bdf2Part;
+import org.tensim.solver.prefactored.KernelSharing;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
@@ -79,13 +80,14 @@ final class InterleavedComparison {
             double dt = 0;
             for (String n : names) {
                 DiaphragmScene d = scenes.build();
-                Integrator in = org.tensim.solver.integrators.Integrators.create(n);
+                Integrator in = create(n);
                 if (dt == 0) {
                     dt = d.timeStep(in, dtS).seconds();
                 }
                 Simulation sim = d.newSimulation();
                 sim.setIntegrator(in);
-                Parallelism p = threads > 1 ? Parallelism.install(sim, threads) : null;
+                int t = threadsOf(n, threads);
+                Parallelism p = t > 1 ? Parallelism.install(sim, t) : null;
                 sides.add(new Side(n, sim, in, dt, p));
             }
             for (int i = 0; i < warmUpSteps; i++) {
@@ -148,7 +150,7 @@ final class InterleavedComparison {
             sum.put("compare", names.get(0) + " / " + names.get(1));
             sum.put("utc", LocalTime.now(ZoneOffset.UTC).format(CLOCK));
             sum.put("nodes", sides.get(0).sim.state().nodeCount);
-            sum.put("threads", threads);
+            sum.put("threads", names.stream().map(n -> threadsOf(n, threads)).toList());
             sum.put("dt_s", sides.get(0).dt);
             sum.put("steps_per_round", steps);
             sum.put("rounds", rounds);
@@ -205,6 +207,41 @@ final class InterleavedComparison {
             }
         }
     }
+
+    /**
+     * The integrator of a side's name: a name of the catalogue, optionally followed by {@value #SERIAL} or
+     * {@value #SHARED} (a {@code bdf2} whose solves and products' fibres and shear elements stay on the calling
+     * thread, or are always shared: {@link PrefactoredBdf2#setKernelSharing}; by default shared while measured
+     * faster) and by {@code @T} (its own thread count).
+     */
+    static Integrator create(String side) {
+        String n = side.replaceFirst("@\\d+$", "");
+        KernelSharing sharing = n.endsWith(SERIAL) ? KernelSharing.NEVER
+                : n.endsWith(SHARED) ? KernelSharing.ALWAYS : null;
+        if (sharing != null) {
+            n = n.substring(0, n.lastIndexOf(':'));
+        }
+        Integrator in = org.tensim.solver.integrators.Integrators.create(n);
+        if (sharing != null) {
+            if (!(in instanceof PrefactoredBdf2 b)) {
+                throw new IllegalArgumentException(SERIAL + " and " + SHARED + " apply to the bdf2 family, not to "
+                        + side);
+            }
+            b.setKernelSharing(sharing);
+        }
+        return in;
+    }
+
+    /** The thread count of a side: its {@code @T}, else {@code threads}. */
+    static int threadsOf(String side, int threads) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("@(\\d+)$").matcher(side);
+        return m.find() ? Integer.parseInt(m.group(1)) : threads;
+    }
+
+    /** Suffix of a side's name whose bdf2 keeps its solves and products on the calling thread. */
+    static final String SERIAL = ":serial";
+    /** Suffix of a side's name whose bdf2 always shares its solves and products among the threads. */
+    static final String SHARED = ":shared";
 
     private static double round(double v) {
         return Math.round(v * 1e4) / 1e4;

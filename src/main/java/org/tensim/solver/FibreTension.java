@@ -144,45 +144,92 @@ public final class FibreTension {
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
         for (int e = 0; e < volume.length; e++) {
-            final double sc = scale[e] * weight;
-            final double sa = axial[e] * weight;
-            if (sc == 0 && sa == 0) {
-                continue;
-            }
-            final int o = 3 * e;
-            final double g0 = -(coef[2 * e] + coef[2 * e + 1]);
-            final double g1 = coef[2 * e];
-            final double g2 = coef[2 * e + 1];
-            double wx = 0;
-            double wy = 0;
-            double wz = 0;
+            fibre(e, ALL_NODES, z, y, offset, weight);
+        }
+    }
+
+    /** The six node slots of a fibre (corner k's two nodes at bits 2k and 2k + 1), all set. */
+    private static final int ALL_NODES = 0x3F;
+
+    /**
+     * The fibres that part {@code part} of a partition of the nodes must go through for its nodes' share of
+     * {@link #multiplyAdd(int[], double[], double[], int[], double)}: those with a node it owns, in increasing
+     * order, each as {@code 64 e + slots}, bit 2k + end of slots set when the part owns that node of corner k.
+     *
+     * @param offset as in {@link #multiplyAdd(double[], double[], int[], double)}
+     * @param owner  per node of the compact vectors (offset / 3): its part
+     */
+    public int[] ownedFibres(int[] offset, int[] owner, int part) {
+        int[] codes = new int[volume.length];
+        int n = 0;
+        for (int e = 0; e < volume.length; e++) {
+            int slots = 0;
             for (int k = 0; k < 3; k++) {
-                final double g = 0.5 * (k == 0 ? g0 : k == 1 ? g1 : g2);
                 for (int end = 0; end < 2; end++) {
-                    final int i = offset[(end == 0 ? p3[o + k] : q3[o + k]) / 3];
-                    if (i >= 0) {
-                        wx += g * z[i];
-                        wy += g * z[i + 1];
-                        wz += g * z[i + 2];
+                    final int i = offset[(end == 0 ? p3[3 * e + k] : q3[3 * e + k]) / 3];
+                    if (i >= 0 && owner[i / 3] == part) {
+                        slots |= 1 << (2 * k + end);
                     }
                 }
             }
-            final double ux = dir[o];
-            final double uy = dir[o + 1];
-            final double uz = dir[o + 2];
-            final double uw = ux * wx + uy * wy + uz * wz;
-            final double px = sc * (wx - uw * ux) + sa * uw * ux;
-            final double py = sc * (wy - uw * uy) + sa * uw * uy;
-            final double pz = sc * (wz - uw * uz) + sa * uw * uz;
-            for (int k = 0; k < 3; k++) {
-                final double g = 0.5 * (k == 0 ? g0 : k == 1 ? g1 : g2);
-                for (int end = 0; end < 2; end++) {
-                    final int i = offset[(end == 0 ? p3[o + k] : q3[o + k]) / 3];
-                    if (i >= 0) {
-                        y[i] += g * px;
-                        y[i + 1] += g * py;
-                        y[i + 2] += g * pz;
-                    }
+            if (slots != 0) {
+                codes[n++] = 64 * e + slots;
+            }
+        }
+        return java.util.Arrays.copyOf(codes, n);
+    }
+
+    /**
+     * The share of {@link #multiplyAdd(double[], double[], int[], double)} of the nodes of one part (codes of
+     * {@link #ownedFibres}): each of them receives the same terms in the same order as there (owner computes; a
+     * fibre shared by two parts is computed by both, each keeping its own nodes).
+     */
+    public void multiplyAdd(int[] codes, double[] z, double[] y, int[] offset, double weight) {
+        for (int c : codes) {
+            fibre(c >>> 6, c & ALL_NODES, z, y, offset, weight);
+        }
+    }
+
+    /** y += weight K_e z at the node slots set in {@code slots} (bit 2k + end: corner k's node p or q). */
+    private void fibre(int e, int slots, double[] z, double[] y, int[] offset, double weight) {
+        final double sc = scale[e] * weight;
+        final double sa = axial[e] * weight;
+        if (sc == 0 && sa == 0) {
+            return;
+        }
+        final int o = 3 * e;
+        final double g0 = -(coef[2 * e] + coef[2 * e + 1]);
+        final double g1 = coef[2 * e];
+        final double g2 = coef[2 * e + 1];
+        double wx = 0;
+        double wy = 0;
+        double wz = 0;
+        for (int k = 0; k < 3; k++) {
+            final double g = 0.5 * (k == 0 ? g0 : k == 1 ? g1 : g2);
+            for (int end = 0; end < 2; end++) {
+                final int i = offset[(end == 0 ? p3[o + k] : q3[o + k]) / 3];
+                if (i >= 0) {
+                    wx += g * z[i];
+                    wy += g * z[i + 1];
+                    wz += g * z[i + 2];
+                }
+            }
+        }
+        final double ux = dir[o];
+        final double uy = dir[o + 1];
+        final double uz = dir[o + 2];
+        final double uw = ux * wx + uy * wy + uz * wz;
+        final double px = sc * (wx - uw * ux) + sa * uw * ux;
+        final double py = sc * (wy - uw * uy) + sa * uw * uy;
+        final double pz = sc * (wz - uw * uz) + sa * uw * uz;
+        for (int k = 0; k < 3; k++) {
+            final double g = 0.5 * (k == 0 ? g0 : k == 1 ? g1 : g2);
+            for (int end = 0; end < 2; end++) {
+                final int i = offset[(end == 0 ? p3[o + k] : q3[o + k]) / 3];
+                if (i >= 0 && (slots & 1 << (2 * k + end)) != 0) {
+                    y[i] += g * px;
+                    y[i + 1] += g * py;
+                    y[i + 2] += g * pz;
                 }
             }
         }

@@ -37,4 +37,12 @@ public interface NodeLoops {
     default void runTasks(int tasks, Body body) {
         body.run(0, tasks);
     }
+
+    /**
+     * Threads that share the work of {@link #run} and {@link #runTasks} (the calling thread included): 1 for
+     * the serial runner. Lets a caller keep a serial form of a loop where splitting it costs extra work.
+     */
+    default int threads() {
+        return 1;
+    }
 }

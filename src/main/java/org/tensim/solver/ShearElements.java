@@ -302,6 +302,58 @@ public final class ShearElements {
         product.multiplyAdd(this, z, y, offset, weight, dampingWeight);
     }
 
+    /**
+     * One part's share of the product for a partition of the nodes ({@link #part}), with its own scratch: a
+     * thread each.
+     */
+    public static final class Part {
+        final int[] codes;
+        final ShearProduct product = new ShearProduct();
+
+        private Part(int[] codes) {
+            this.codes = codes;
+        }
+
+        /** Elements the part goes through (those computed by two parts count in both). */
+        public int elements() {
+            return codes.length;
+        }
+    }
+
+    /**
+     * The share of part {@code part} of a partition of the nodes: the elements with a node it owns, in
+     * increasing order, and which of their nodes it owns.
+     *
+     * @param offset as in {@link #multiplyAdd(double[], double[], int[], double, double)} (not null)
+     * @param owner  per node of the compact vectors (offset / 3): its part
+     */
+    public Part part(int[] offset, int[] owner, int part) {
+        int[] codes = new int[count()];
+        int n = 0;
+        for (int e = 0; e < count(); e++) {
+            int slots = 0;
+            for (int a = 0; a < 6; a++) {
+                final int i = offset[node[6 * e + a]];
+                if (i >= 0 && owner[i / 3] == part) {
+                    slots |= 1 << a;
+                }
+            }
+            if (slots != 0) {
+                codes[n++] = 64 * e + slots;
+            }
+        }
+        return new Part(java.util.Arrays.copyOf(codes, n));
+    }
+
+    /**
+     * The share of {@link #multiplyAdd(double[], double[], int[], double, double)} of one part's nodes: each
+     * of them receives the same terms in the same order as there (owner computes: an element shared by two
+     * parts is computed by both, each keeping its own nodes). Parts may run at the same time.
+     */
+    public void multiplyAdd(Part part, double[] z, double[] y, int[] offset, double weight, double dampingWeight) {
+        part.product.multiplyAdd(this, part.codes, z, y, offset, weight, dampingWeight);
+    }
+
     /** diag += weight times the diagonal of {@code sum_kl K_kl grad g_k grad g_l^T} as linearised (full layout). */
     public void addDiagonal(double[] diag, double weight) {
         addDiagonal(diag, weight, 0);

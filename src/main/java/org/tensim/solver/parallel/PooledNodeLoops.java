@@ -22,6 +22,8 @@ public final class PooledNodeLoops implements NodeLoops {
     private final int minParallel;
     private final WorkerPool.Task slice = this::slice;
     private Body body;
+    private Body taskBody; // during runTasks only
+    private final WorkerPool.Claimable task = k -> taskBody.run(k, k + 1);
     private int nodes;
 
     /**
@@ -45,14 +47,28 @@ public final class PooledNodeLoops implements NodeLoops {
         dispatch(n, b);
     }
 
-    /** Worker w of T runs the tasks {@code [tasks w / T, tasks (w + 1) / T)}, however few they are. */
+    /**
+     * The tasks go to whichever thread claims them first ({@link WorkerPool#runClaimed}), however few they are:
+     * on a machine whose other core is busy with another process the caller does not wait for a worker that
+     * has not started, it runs the tasks itself.
+     */
     @Override
     public void runTasks(int tasks, Body b) {
         if (pool.size() == 1 || tasks < 2) {
             b.run(0, tasks);
             return;
         }
-        dispatch(tasks, b);
+        taskBody = b;
+        try {
+            pool.runClaimed(tasks, task);
+        } finally {
+            taskBody = null;
+        }
+    }
+
+    @Override
+    public int threads() {
+        return pool.size();
     }
 
     private void dispatch(int n, Body b) {

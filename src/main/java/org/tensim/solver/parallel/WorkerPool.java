@@ -1,5 +1,7 @@
 package org.tensim.solver.parallel;
 
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -23,6 +25,12 @@ public final class WorkerPool implements AutoCloseable {
         void run(int worker);
     }
 
+    /** Independent tasks of {@link #runClaimed}: {@code run(k)} does task k, whichever thread calls it. */
+    @FunctionalInterface
+    public interface Claimable {
+        void run(int task);
+    }
+
     /** Spins of {@link Thread#onSpinWait()} before a worker parks (tens of microseconds). */
     private static final int SPINS_BEFORE_PARK = 1 << 12;
     /** Spins of the caller before it starts yielding its core while waiting. */
@@ -35,6 +43,15 @@ public final class WorkerPool implements AutoCloseable {
     private volatile int epoch;
     private volatile boolean closed;
     private volatile Throwable failure;
+    /**
+     * The claimed job: its number (bits 32-63), its task count (bits 16-31) and the next task to claim (bits
+     * 0-15), in one word so that a claim (a compare-and-set) succeeds only on the job it read.
+     */
+    private final AtomicLong claim = new AtomicLong();
+    /** Tasks of the claimed job finished. */
+    private final AtomicInteger finished = new AtomicInteger();
+    private volatile Claimable claimed;
+    private int claimJobs;
 
     /** Per-worker state, padded so that two workers' flags never share a cache line. */
     private static final class Slot {
@@ -140,26 +157,118 @@ public final class WorkerPool implements AutoCloseable {
         }
     }
 
+    /**
+     * Runs the tasks {@code [0, tasks)} on whichever workers come first, the caller included, and returns when
+     * all are done. Unlike {@link #run}, the caller does not wait for a worker that has not started (its core
+     * taken by another process): it claims the tasks that are left itself, and waits only for tasks that
+     * another worker has claimed. Tasks must be independent (they write disjoint data), so that who runs which
+     * does not change the result. Visibility as {@link #run}.
+     *
+     * @param tasks number of tasks, in [0, 65535]
+     */
+    public void runClaimed(int tasks, Claimable body) {
+        if (closed) {
+            throw new IllegalStateException("worker pool is closed");
+        }
+        if (tasks < 0 || tasks > 0xFFFF) {
+            throw new IllegalArgumentException("tasks must be in [0, 65535], got " + tasks);
+        }
+        if (size == 1 || tasks < 2) {
+            for (int k = 0; k < tasks; k++) {
+                body.run(k);
+            }
+            return;
+        }
+        claimed = body;
+        finished.set(0);
+        final long job = (long) (++claimJobs & 0x7FFFFFFF) << 32;
+        claim.set(job | (long) tasks << 16); // volatile write: publishes the job and everything written before
+        for (int w = 1; w < size; w++) {
+            if (slots[w].parked) {
+                LockSupport.unpark(threads[w]);
+            }
+        }
+        Throwable own = null;
+        try {
+            claimTasks(job);
+        } catch (Throwable ex) {
+            own = ex;
+        }
+        int spins = 0;
+        while (finished.get() != tasks) {
+            if (++spins < SPINS_BEFORE_YIELD) {
+                Thread.onSpinWait();
+            } else {
+                Thread.yield();
+            }
+        }
+        claimed = null;
+        Throwable f = own != null ? own : failure;
+        if (f != null) {
+            failure = null;
+            if (f instanceof RuntimeException) {
+                throw (RuntimeException) f;
+            }
+            if (f instanceof Error) {
+                throw (Error) f;
+            }
+            throw new IllegalStateException(f);
+        }
+    }
+
+    /**
+     * Claims and runs tasks of the job {@code job} (its number in the high bits) until none is left. A claim
+     * that succeeds is on that job, which cannot end before the claimed task is finished: the body read after
+     * it is the job's.
+     */
+    private void claimTasks(long job) {
+        while (true) {
+            final long c = claim.get();
+            final int k = (int) (c & 0xFFFF);
+            if ((c & ~0xFFFFFFFFL) != job || k >= (int) ((c >>> 16) & 0xFFFF)) {
+                return;
+            }
+            if (claim.compareAndSet(c, c + 1)) {
+                try {
+                    claimed.run(k);
+                } catch (Throwable ex) {
+                    failure = ex;
+                } finally {
+                    finished.incrementAndGet();
+                }
+            }
+        }
+    }
+
     private void loop(int w) {
         final Slot s = slots[w];
         int seen = 0;
+        long seenJob = 0;
         while (true) {
             int spins = 0;
-            while (epoch == seen) {
+            while (epoch == seen && (claim.get() & ~0xFFFFFFFFL) == seenJob) {
                 if (closed) {
                     return;
                 }
                 if (++spins < SPINS_BEFORE_PARK) {
                     Thread.onSpinWait();
                 } else {
-                    // Dekker-style handshake with run(): parked is written before epoch is
-                    // re-read, and run() writes epoch before it reads parked.
+                    // Dekker-style handshake with run() and runClaimed(): parked is written before epoch and
+                    // claim are re-read, and they write epoch or claim before they read parked.
                     s.parked = true;
-                    if (epoch == seen && !closed) {
+                    if (epoch == seen && (claim.get() & ~0xFFFFFFFFL) == seenJob && !closed) {
                         LockSupport.park(this);
                     }
                     s.parked = false;
                 }
+            }
+            final long job = claim.get() & ~0xFFFFFFFFL;
+            if (job != seenJob) {
+                seenJob = job;
+                claimTasks(job);
+            }
+            if (epoch == seen) {
+                continue;
             }
             seen = epoch;
             try {

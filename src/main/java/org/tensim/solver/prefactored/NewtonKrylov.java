@@ -2,6 +2,7 @@ package org.tensim.solver.prefactored;
 
 import org.tensim.solver.ConjugateGradient;
 import org.tensim.solver.ForceModel;
+import org.tensim.solver.NodeLoops;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.links.LinkTangent;
 
@@ -34,9 +35,14 @@ final class NewtonKrylov {
     private final double[] dv;
     private final ConjugateGradient cg;
     private SparseCholesky preconditioner;
+    private NodeLoops loops = NodeLoops.SERIAL; // the force model's, during a solve
     private final double[] work;
     private final double[] scratch = new double[6];
     double lastRelativeResidual;
+    /** When the solves and the products' fibres and shear elements are shared among the force model's threads. */
+    private KernelSharing sharing = KernelSharing.MEASURED;
+    private SharingChoice solveSharing = new SharingChoice(sharing);
+    private SharingChoice productSharing = new SharingChoice(sharing);
     long products;
     /** Wall time per part of the solve since construction, ns, indexed by {@link Bdf2Part#ordinal()}. */
     final long[] partNanos = new long[Bdf2Part.values().length];
@@ -95,7 +101,7 @@ final class NewtonKrylov {
             }
             jacobian.linearise(t1, xIt, beta, model.nodeLoops());
             partNanos[Bdf2Part.LINEARISE.ordinal()] += System.nanoTime() - t2;
-            conjugateGradient(precond, krylovIterations, krylovTolerance);
+            conjugateGradient(model, precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {
                 for (int c = 0; c < 3; c++) {
                     vIt[3 * nodes[j] + c] += dv[3 * j + c];
@@ -136,7 +142,7 @@ final class NewtonKrylov {
      * in the preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that weighs light
      * and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
      */
-    private void conjugateGradient(SparseCholesky precond, int maxIterations, double tolerance) {
+    private void conjugateGradient(ForceModel model, SparseCholesky precond, int maxIterations, double tolerance) {
         final int nf3 = g.length;
         for (int k = 0; k < nf3; k++) {
             dv[k] = 0;
@@ -144,6 +150,7 @@ final class NewtonKrylov {
         }
         links.projectDual(r);
         preconditioner = precond;
+        loops = model.nodeLoops();
         cg.solve(system, dv, r, 0, tolerance, maxIterations, ConjugateGradient.Stop.PRECONDITIONED);
         lastRelativeResidual = cg.relativeResidual();
     }
@@ -156,21 +163,40 @@ final class NewtonKrylov {
         @Override
         public void multiply(double[] pv, double[] out) {
             products++;
+            final boolean shared = loops.threads() >= 2 && productSharing.share();
+            jacobian.sharedKernels = shared;
+            // The triangles' slabs were shared before the rest: the one-thread form of the products (NEVER) keeps
+            // them so; the measured choice takes the whole product to the calling thread when that is faster.
+            jacobian.sharedTriangles = shared || sharing != KernelSharing.MEASURED;
             long t0 = System.nanoTime();
             jacobian.multiply(pv, out);
+            long t1 = System.nanoTime();
             links.projectDual(out);
-            partNanos[Bdf2Part.PRODUCTS.ordinal()] += System.nanoTime() - t0;
+            long t2 = System.nanoTime();
+            productSharing.record(shared, t1 - t0);
+            partNanos[Bdf2Part.PRODUCTS.ordinal()] += t2 - t0;
         }
 
         @Override
         public void precondition(double[] rv, double[] zv) {
             System.arraycopy(rv, 0, zv, 0, rv.length);
+            final boolean shared = loops.threads() >= 2 && solveSharing.share();
             long t0 = System.nanoTime();
-            preconditioner.solve3(zv, work);
+            preconditioner.solve3(zv, work, shared ? loops : NodeLoops.SERIAL);
+            long t1 = System.nanoTime();
             links.project(zv);
-            partNanos[Bdf2Part.SOLVES.ordinal()] += System.nanoTime() - t0;
+            long t2 = System.nanoTime();
+            solveSharing.record(shared, t1 - t0);
+            partNanos[Bdf2Part.SOLVES.ordinal()] += t2 - t0;
         }
     };
+
+    /** Sets when the solves and the products' fibres and shear elements are shared (their measures start anew). */
+    void setSharing(KernelSharing policy) {
+        sharing = policy;
+        solveSharing = new SharingChoice(policy);
+        productSharing = new SharingChoice(policy);
+    }
 
     private void scatter(double[] compact, double[] full) {
         for (int j = 0; j < nodes.length; j++) {

@@ -65,6 +65,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
     private final double krylovTolerance = KRYLOV_TOLERANCE;
     private Executor executor;
+    private KernelSharing sharing = KernelSharing.MEASURED;
 
     private SystemState s;
     private PrefactoredMatrix matrix;
@@ -128,6 +129,25 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public PrefactoredBdf2 setKrylovIterations(int n) {
         krylovIterations = Check.atLeast("BDF2 CG iterations per Newton iteration", n, 1);
         return this;
+    }
+
+    /**
+     * When the preconditioner's solves and the fibres' and shear elements' part of the Jacobian products are
+     * shared among the force model's threads, if it has two or more (default {@link KernelSharing#MEASURED}; the
+     * same bits in every case). {@link KernelSharing#NEVER} is the form before they were shared, kept for
+     * before/after measurements in one run ({@code tensim bench --compare bdf2:serial,bdf2}).
+     */
+    public PrefactoredBdf2 setKernelSharing(KernelSharing policy) {
+        sharing = java.util.Objects.requireNonNull(policy, "kernel sharing");
+        if (newton != null) {
+            newton.setSharing(policy);
+        }
+        return this;
+    }
+
+    /** When the solves and the products' fibres and shear elements are shared among the force model's threads. */
+    public KernelSharing kernelSharing() {
+        return sharing;
     }
 
     /** Where the background refactorisations run (default: one shared daemon thread); for tests. */
@@ -309,6 +329,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         int nf3 = 3 * matrix.freeCount();
         newton = new NewtonKrylov(st, matrix.freeIndex, matrix.freeNodes);
+        newton.setSharing(sharing);
         xOld1 = new double[nf3];
         xOld2 = new double[nf3];
         vOld1 = new double[nf3];

@@ -8,6 +8,7 @@ import edu.emory.mathcs.csparsej.tdouble.Dcs_compress;
 import edu.emory.mathcs.csparsej.tdouble.Dcs_dupl;
 import edu.emory.mathcs.csparsej.tdouble.Dcs_schol;
 import edu.emory.mathcs.csparsej.tdouble.Dcs_util;
+import org.tensim.solver.NodeLoops;
 
 /**
  * A sparse Cholesky factor {@code P A P^T = L L^T} of a symmetric positive definite
@@ -41,6 +42,14 @@ public final class SparseCholesky {
     private final double[] lx;
     private final int[] blockStart; // first column of each block of one or two columns; blockStart[blocks] = n
     private final int blocks;
+    /** The two-thread form of the solves, null below {@link #MIN_SPLIT_ENTRIES}. */
+    private final SubtreeSolve split;
+
+    /**
+     * Entries of L from which the solves are split between two threads: below, the two dispatches of a split
+     * solve (about a microsecond each, more when the second core is busy) cost more than half the solve.
+     */
+    public static final int MIN_SPLIT_ENTRIES = 20_000;
 
     /**
      * The symbolic analysis of a sparsity pattern, built from the matrix's entries in
@@ -83,6 +92,7 @@ public final class SparseCholesky {
         starts[b] = n;
         blocks = b;
         blockStart = java.util.Arrays.copyOf(starts, b + 1);
+        split = lp[n] < MIN_SPLIT_ENTRIES ? null : new SubtreeSolve(n, lp, li, lx, blockStart, blocks, pinv);
     }
 
     /**
@@ -184,6 +194,23 @@ public final class SparseCholesky {
             b[3 * k + 1] = work[o + 1];
             b[3 * k + 2] = work[o + 2];
         }
+    }
+
+    /**
+     * As {@link #solve3(double[], double[])}, with two subtrees of the elimination tree solved at the same time
+     * when {@code loops} has two threads or more ({@link SubtreeSolve}): the same bits as on one thread.
+     */
+    public void solve3(double[] b, double[] work, NodeLoops loops) {
+        if (split == null || loops.threads() < 2) {
+            solve3(b, work);
+        } else {
+            split.solve3(b, work, loops);
+        }
+    }
+
+    /** The two-thread form of the solves, or null for a factor below {@link #MIN_SPLIT_ENTRIES} (for tests). */
+    SubtreeSolve split() {
+        return split;
     }
 
     /** L y = b, three interleaved columns (the column-oriented loop of cs_lsolve), by blocks. */

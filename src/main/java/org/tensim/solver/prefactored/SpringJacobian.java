@@ -31,6 +31,14 @@ import org.tensim.solver.SystemState;
  * step), so stiff contact costs CG iterations but not accuracy of the product.
  */
 final class SpringJacobian {
+    /**
+     * Fibres and shear elements from which their part of a product is shared among the threads: below, a
+     * dispatch costs more than half the loops (the triangles' threshold,
+     * {@link PartitionedTriangleTangent#MIN_PARALLEL_ELEMENTS}). The springs' loop stays on the calling thread:
+     * it is about 0.2 ms of a 3.7 ms product on the default diaphragm, less than a dispatch costs when the
+     * other core is busy (docs/performance.md).
+     */
+    static final int MIN_SHARED_ELEMENTS = 2048;
     private final SystemState s;
     private final int[] nodes;
     private final int[] endA; // per spring: 3 x compact index of end a, -1 when not free
@@ -113,6 +121,35 @@ final class SpringJacobian {
         }
     }
 
+    /**
+     * Whether the fibres' and shear elements' part of the product is shared among the threads of the
+     * linearisation's loops (when it has two or more; the same bits either way).
+     */
+    boolean sharedKernels = true;
+    /**
+     * Whether the triangles' slabs go to the threads of the linearisation's loops (the same bits either way):
+     * false keeps them on the calling thread, where a product measured faster so (see {@link SharingChoice}).
+     */
+    boolean sharedTriangles = true;
+    /** Parts of the shared product per thread. */
+    static final int PARTS_PER_THREAD = 4;
+    private NodeParts parts; // made at the first shared product
+    private FibreShare[] shares;
+    private final NodeLoops.Body sharedRange = this::sharedParts;
+    private double[] pIn; // during a shared product only
+    private double[] pOut;
+
+    /** One part's fibres and shear elements. */
+    private static final class FibreShare {
+        final int[] fibres;
+        final org.tensim.solver.ShearElements.Part shears;
+
+        FibreShare(int[] fibres, org.tensim.solver.ShearElements.Part shears) {
+            this.fibres = fibres;
+            this.shears = shears;
+        }
+    }
+
     /** out = J p (compact vectors). */
     void multiply(double[] p, double[] out) {
         final double[] m = s.mass;
@@ -155,10 +192,68 @@ final class SpringJacobian {
             }
         }
         if (triangles != null) {
-            triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight, loops);
+            triangles.multiplyAdd(p, out, triangleWeight, triangleDampingWeight,
+                    sharedTriangles ? loops : NodeLoops.SERIAL);
         }
-        s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
-        s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
-        s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
+        final int threads = loops.threads();
+        if (sharedKernels && threads >= 2 && s.contacts.count() == 0
+                && s.fibres.count() + s.shears.count() >= MIN_SHARED_ELEMENTS) {
+            if (parts == null || parts.parts() != PARTS_PER_THREAD * threads) {
+                share(PARTS_PER_THREAD * threads); // once per thread count
+            }
+            pIn = p;
+            pOut = out;
+            try {
+                loops.runTasks(parts.parts(), sharedRange);
+            } finally {
+                pIn = null;
+                pOut = null;
+            }
+        } else {
+            s.fibres.multiplyAdd(p, out, triangleOffset, triangleWeight);
+            s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
+            s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
+        }
+    }
+
+    /**
+     * Cuts the free nodes into {@code count} parts of equal node counts, parts claimed by the threads
+     * as they come: several per thread, so that a thread whose core another process takes leaves its parts to
+     * the others.
+     */
+    private void share(int count) {
+        long[] work = new long[nodes.length];
+        java.util.Arrays.fill(work, 1); // equal node counts: the parts are claimed as they come, which evens them
+        parts = new NodeParts(restX(), work, count);
+        shares = new FibreShare[count];
+        for (int k = 0; k < count; k++) {
+            shares[k] = new FibreShare(s.fibres.ownedFibres(triangleOffset, parts.owner, k),
+                    s.shears.part(triangleOffset, parts.owner, k));
+        }
+    }
+
+    /**
+     * The fibres' and shear elements' terms of the parts [from, to): the one-thread loops' operations on each
+     * owned node, in their order (see {@link NodeParts}).
+     */
+    private void sharedParts(int from, int to) {
+        for (int k = from; k < to; k++) {
+            s.fibres.multiplyAdd(shares[k].fibres, pIn, pOut, triangleOffset, triangleWeight);
+            s.shears.multiplyAdd(shares[k].shears, pIn, pOut, triangleOffset, triangleWeight, triangleDampingWeight);
+        }
+    }
+
+    /** The free nodes' rest x (compact index), m: where {@link NodeParts} cuts. */
+    private double[] restX() {
+        double[] x = new double[nodes.length];
+        for (int j = 0; j < nodes.length; j++) {
+            x[j] = s.x0[3 * nodes[j]];
+        }
+        return x;
+    }
+
+    /** The parts of the last shared product, or null (for tests). */
+    NodeParts parts() {
+        return parts;
     }
 }

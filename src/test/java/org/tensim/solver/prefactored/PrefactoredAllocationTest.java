@@ -1,7 +1,9 @@
 package org.tensim.solver.prefactored;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.tensim.scene.LatticeScene;
@@ -34,6 +36,22 @@ class PrefactoredAllocationTest {
                 new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
         sim.setIntegrator(new PrefactoredBdf2());
         assertNoAllocation(sim, threads, 0.02, 500);
+    }
+
+    /**
+     * A diaphragm large enough for the fibres' and shear elements' products and the solves to be shared among
+     * the threads ({@link NodeParts}, {@link SubtreeSolve}).
+     */
+    @Test
+    void bdf2StepWithSharedKernelsAllocatesNothing() throws Exception {
+        Simulation sim = DiaphragmSetup.generated(28, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
+        PrefactoredBdf2 bdf2 = new PrefactoredBdf2();
+        sim.setIntegrator(bdf2);
+        assertTrue(sim.state().fibres.count() + sim.state().shears.count() >= SpringJacobian.MIN_SHARED_ELEMENTS,
+                "fibres and shear elements shared");
+        assertNoAllocation(sim, 2, 0.025, 200);
+        assertTrue(bdf2.factorNonZeros() >= SparseCholesky.MIN_SPLIT_ENTRIES, "solves shared");
     }
 
     private static void assertNoAllocation(Simulation sim, int threads, double dt, int warmUp) {
