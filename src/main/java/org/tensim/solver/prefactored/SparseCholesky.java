@@ -215,111 +215,122 @@ public final class SparseCholesky {
 
     /** L y = b, three interleaved columns (the column-oriented loop of cs_lsolve), by blocks. */
     private void lowerSolve(double[] x) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final double[] v = lx;
         final int[] bs = blockStart;
         for (int b = 0; b < blocks; b++) {
             final int j = bs[b];
-            final int d = p[j];
-            final double inv = 1 / v[d];
-            final double x0 = x[3 * j] * inv;
-            final double x1 = x[3 * j + 1] * inv;
-            final double x2 = x[3 * j + 2] * inv;
-            x[3 * j] = x0;
-            x[3 * j + 1] = x1;
-            x[3 * j + 2] = x2;
-            if (bs[b + 1] == j + 1) {
-                for (int q = d + 1, end = p[j + 1]; q < end; q++) {
-                    final int r = 3 * ix[q];
-                    final double l = v[q];
-                    x[r] -= l * x0;
-                    x[r + 1] -= l * x1;
-                    x[r + 2] -= l * x2;
-                }
-                continue;
-            }
-            // Columns j and j + 1: row j + 1 first, then the rows they share.
-            final int e = p[j + 1];
-            final double l = v[d + 1];
-            final double inv1 = 1 / v[e];
-            final double y0 = (x[3 * j + 3] - l * x0) * inv1;
-            final double y1 = (x[3 * j + 4] - l * x1) * inv1;
-            final double y2 = (x[3 * j + 5] - l * x2) * inv1;
-            x[3 * j + 3] = y0;
-            x[3 * j + 4] = y1;
-            x[3 * j + 5] = y2;
-            for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
+            lowerBlock(lp, li, lx, bs, x, b, lp[bs[b + 1] == j + 1 ? j + 1 : j + 2]);
+        }
+    }
+
+    /**
+     * The forward solve of block blk (one column, or two of a supernode: row j + 1 first, then the rows they
+     * share), three interleaved right-hand sides in x, its updates stopped at entry {@code end} of its last
+     * column (the column's end for the whole solve; {@link SubtreeSolve} stops earlier, where the top's rows
+     * begin). The one kernel of both solvers, so that they give the same bits.
+     */
+    static void lowerBlock(int[] p, int[] ix, double[] v, int[] bs, double[] x, int blk, int end) {
+        final int j = bs[blk];
+        final int d = p[j];
+        final double inv = 1 / v[d];
+        final double x0 = x[3 * j] * inv;
+        final double x1 = x[3 * j + 1] * inv;
+        final double x2 = x[3 * j + 2] * inv;
+        x[3 * j] = x0;
+        x[3 * j + 1] = x1;
+        x[3 * j + 2] = x2;
+        if (bs[blk + 1] == j + 1) {
+            for (int q = d + 1; q < end; q++) {
                 final int r = 3 * ix[q];
-                final double la = v[qa];
-                final double lb = v[q];
-                x[r] = x[r] - la * x0 - lb * y0;
-                x[r + 1] = x[r + 1] - la * x1 - lb * y1;
-                x[r + 2] = x[r + 2] - la * x2 - lb * y2;
+                final double l = v[q];
+                x[r] -= l * x0;
+                x[r + 1] -= l * x1;
+                x[r + 2] -= l * x2;
             }
+            return;
+        }
+        final int e = p[j + 1];
+        final double l = v[d + 1];
+        final double inv1 = 1 / v[e];
+        final double y0 = (x[3 * j + 3] - l * x0) * inv1;
+        final double y1 = (x[3 * j + 4] - l * x1) * inv1;
+        final double y2 = (x[3 * j + 5] - l * x2) * inv1;
+        x[3 * j + 3] = y0;
+        x[3 * j + 4] = y1;
+        x[3 * j + 5] = y2;
+        for (int qa = d + 2, q = e + 1; q < end; qa++, q++) {
+            final int r = 3 * ix[q];
+            final double la = v[qa];
+            final double lb = v[q];
+            x[r] = x[r] - la * x0 - lb * y0;
+            x[r + 1] = x[r + 1] - la * x1 - lb * y1;
+            x[r + 2] = x[r + 2] - la * x2 - lb * y2;
         }
     }
 
     /** L^T x = y, three interleaved columns (the loop of cs_ltsolve), by blocks from the last. */
     private void upperSolve(double[] x) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final double[] v = lx;
-        final int[] bs = blockStart;
         for (int b = blocks - 1; b >= 0; b--) {
-            final int j = bs[b];
-            final int d = p[j];
-            if (bs[b + 1] == j + 1) {
-                double x0 = x[3 * j];
-                double x1 = x[3 * j + 1];
-                double x2 = x[3 * j + 2];
-                for (int q = d + 1, end = p[j + 1]; q < end; q++) {
-                    final int r = 3 * ix[q];
-                    final double l = v[q];
-                    x0 -= l * x[r];
-                    x1 -= l * x[r + 1];
-                    x2 -= l * x[r + 2];
-                }
-                final double inv = 1 / v[d];
-                x[3 * j] = x0 * inv;
-                x[3 * j + 1] = x1 * inv;
-                x[3 * j + 2] = x2 * inv;
-                continue;
-            }
-            // Columns j + 1 (complete over the shared rows) and j (the shared rows, then row j + 1).
-            final int e = p[j + 1];
-            double y0 = x[3 * j + 3];
-            double y1 = x[3 * j + 4];
-            double y2 = x[3 * j + 5];
-            double s0 = 0;
-            double s1 = 0;
-            double s2 = 0;
-            for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
-                final int r = 3 * ix[q];
-                final double la = v[qa];
-                final double lb = v[q];
-                final double r0 = x[r];
-                final double r1 = x[r + 1];
-                final double r2 = x[r + 2];
-                y0 -= lb * r0;
-                y1 -= lb * r1;
-                y2 -= lb * r2;
-                s0 += la * r0;
-                s1 += la * r1;
-                s2 += la * r2;
-            }
-            final double inv1 = 1 / v[e];
-            y0 *= inv1;
-            y1 *= inv1;
-            y2 *= inv1;
-            x[3 * j + 3] = y0;
-            x[3 * j + 4] = y1;
-            x[3 * j + 5] = y2;
-            final double l = v[d + 1];
-            final double inv = 1 / v[d];
-            x[3 * j] = (x[3 * j] - l * y0 - s0) * inv;
-            x[3 * j + 1] = (x[3 * j + 1] - l * y1 - s1) * inv;
-            x[3 * j + 2] = (x[3 * j + 2] - l * y2 - s2) * inv;
+            upperBlock(lp, li, lx, blockStart, x, b);
         }
+    }
+
+    /**
+     * The backward solve of block blk (one column, or two of a supernode: column j + 1 complete over the shared
+     * rows, then column j), three interleaved right-hand sides in x; the one kernel of this class's and
+     * {@link SubtreeSolve}'s backward solves.
+     */
+    static void upperBlock(int[] p, int[] ix, double[] v, int[] bs, double[] x, int blk) {
+        final int j = bs[blk];
+        final int d = p[j];
+        if (bs[blk + 1] == j + 1) {
+            double x0 = x[3 * j];
+            double x1 = x[3 * j + 1];
+            double x2 = x[3 * j + 2];
+            for (int q = d + 1, end = p[j + 1]; q < end; q++) {
+                final int r = 3 * ix[q];
+                final double l = v[q];
+                x0 -= l * x[r];
+                x1 -= l * x[r + 1];
+                x2 -= l * x[r + 2];
+            }
+            final double inv = 1 / v[d];
+            x[3 * j] = x0 * inv;
+            x[3 * j + 1] = x1 * inv;
+            x[3 * j + 2] = x2 * inv;
+            return;
+        }
+        final int e = p[j + 1];
+        double y0 = x[3 * j + 3];
+        double y1 = x[3 * j + 4];
+        double y2 = x[3 * j + 5];
+        double s0 = 0;
+        double s1 = 0;
+        double s2 = 0;
+        for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
+            final int r = 3 * ix[q];
+            final double la = v[qa];
+            final double lb = v[q];
+            final double r0 = x[r];
+            final double r1 = x[r + 1];
+            final double r2 = x[r + 2];
+            y0 -= lb * r0;
+            y1 -= lb * r1;
+            y2 -= lb * r2;
+            s0 += la * r0;
+            s1 += la * r1;
+            s2 += la * r2;
+        }
+        final double inv1 = 1 / v[e];
+        y0 *= inv1;
+        y1 *= inv1;
+        y2 *= inv1;
+        x[3 * j + 3] = y0;
+        x[3 * j + 4] = y1;
+        x[3 * j + 5] = y2;
+        final double l = v[d + 1];
+        final double inv = 1 / v[d];
+        x[3 * j] = (x[3 * j] - l * y0 - s0) * inv;
+        x[3 * j + 1] = (x[3 * j + 1] - l * y1 - s1) * inv;
+        x[3 * j + 2] = (x[3 * j + 2] - l * y2 - s2) * inv;
     }
 }

@@ -460,50 +460,9 @@ final class SubtreeSolve {
         }
     }
 
-    /**
-     * The forward solve of block blk (one or two columns) as {@link SparseCholesky}'s lower solve does it,
-     * its updates stopped at entry {@code end} of its last column (where the top's rows begin).
-     */
+    /** The forward solve of block blk, stopped at entry {@code end} of its last column ({@link SparseCholesky#lowerBlock}). */
     private void lowerBlock(double[] x, int blk, int end) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final double[] v = lx;
-        final int j = bs[blk];
-        final int d = p[j];
-        final double inv = 1 / v[d];
-        final double x0 = x[3 * j] * inv;
-        final double x1 = x[3 * j + 1] * inv;
-        final double x2 = x[3 * j + 2] * inv;
-        x[3 * j] = x0;
-        x[3 * j + 1] = x1;
-        x[3 * j + 2] = x2;
-        if (bs[blk + 1] == j + 1) {
-            for (int q = d + 1; q < end; q++) {
-                final int r = 3 * ix[q];
-                final double l = v[q];
-                x[r] -= l * x0;
-                x[r + 1] -= l * x1;
-                x[r + 2] -= l * x2;
-            }
-            return;
-        }
-        final int e = p[j + 1];
-        final double l = v[d + 1];
-        final double inv1 = 1 / v[e];
-        final double y0 = (x[3 * j + 3] - l * x0) * inv1;
-        final double y1 = (x[3 * j + 4] - l * x1) * inv1;
-        final double y2 = (x[3 * j + 5] - l * x2) * inv1;
-        x[3 * j + 3] = y0;
-        x[3 * j + 4] = y1;
-        x[3 * j + 5] = y2;
-        for (int qa = d + 2, q = e + 1; q < end; qa++, q++) {
-            final int r = 3 * ix[q];
-            final double la = v[qa];
-            final double lb = v[q];
-            x[r] = x[r] - la * x0 - lb * y0;
-            x[r + 1] = x[r + 1] - la * x1 - lb * y1;
-            x[r + 2] = x[r + 2] - la * x2 - lb * y2;
-        }
+        SparseCholesky.lowerBlock(lp, li, lx, bs, x, blk, end);
     }
 
     /** The forward solve of the top's rows, each as a row (see the class comment), from its prefix on. */
@@ -531,62 +490,8 @@ final class SubtreeSolve {
         }
     }
 
-    /** The backward solve of block blk, as {@link SparseCholesky}'s upper solve does it. */
+    /** The backward solve of block blk ({@link SparseCholesky#upperBlock}). */
     private void upperBlock(double[] x, int blk) {
-        final int[] p = lp;
-        final int[] ix = li;
-        final double[] v = lx;
-        final int j = bs[blk];
-        final int d = p[j];
-        if (bs[blk + 1] == j + 1) {
-            double x0 = x[3 * j];
-            double x1 = x[3 * j + 1];
-            double x2 = x[3 * j + 2];
-            for (int q = d + 1, end = p[j + 1]; q < end; q++) {
-                final int r = 3 * ix[q];
-                final double l = v[q];
-                x0 -= l * x[r];
-                x1 -= l * x[r + 1];
-                x2 -= l * x[r + 2];
-            }
-            final double inv = 1 / v[d];
-            x[3 * j] = x0 * inv;
-            x[3 * j + 1] = x1 * inv;
-            x[3 * j + 2] = x2 * inv;
-            return;
-        }
-        final int e = p[j + 1];
-        double y0 = x[3 * j + 3];
-        double y1 = x[3 * j + 4];
-        double y2 = x[3 * j + 5];
-        double s0 = 0;
-        double s1 = 0;
-        double s2 = 0;
-        for (int qa = d + 2, q = e + 1, end = p[j + 2]; q < end; qa++, q++) {
-            final int r = 3 * ix[q];
-            final double la = v[qa];
-            final double lb = v[q];
-            final double r0 = x[r];
-            final double r1 = x[r + 1];
-            final double r2 = x[r + 2];
-            y0 -= lb * r0;
-            y1 -= lb * r1;
-            y2 -= lb * r2;
-            s0 += la * r0;
-            s1 += la * r1;
-            s2 += la * r2;
-        }
-        final double inv1 = 1 / v[e];
-        y0 *= inv1;
-        y1 *= inv1;
-        y2 *= inv1;
-        x[3 * j + 3] = y0;
-        x[3 * j + 4] = y1;
-        x[3 * j + 5] = y2;
-        final double l = v[d + 1];
-        final double inv = 1 / v[d];
-        x[3 * j] = (x[3 * j] - l * y0 - s0) * inv;
-        x[3 * j + 1] = (x[3 * j + 1] - l * y1 - s1) * inv;
-        x[3 * j + 2] = (x[3 * j + 2] - l * y2 - s2) * inv;
+        SparseCholesky.upperBlock(lp, li, lx, bs, x, blk);
     }
 }
