@@ -144,17 +144,7 @@ public final class WorkerPool implements AutoCloseable {
                 }
             }
         }
-        Throwable f = own != null ? own : failure;
-        if (f != null) {
-            failure = null;
-            if (f instanceof RuntimeException) {
-                throw (RuntimeException) f;
-            }
-            if (f instanceof Error) {
-                throw (Error) f;
-            }
-            throw new IllegalStateException(f);
-        }
+        rethrow(own);
     }
 
     /**
@@ -203,17 +193,23 @@ public final class WorkerPool implements AutoCloseable {
             }
         }
         claimed = null;
+        rethrow(own);
+    }
+
+    /** Throws the caller's own failure, else the first worker's (and clears it), if any. */
+    private void rethrow(Throwable own) {
         Throwable f = own != null ? own : failure;
-        if (f != null) {
-            failure = null;
-            if (f instanceof RuntimeException) {
-                throw (RuntimeException) f;
-            }
-            if (f instanceof Error) {
-                throw (Error) f;
-            }
-            throw new IllegalStateException(f);
+        if (f == null) {
+            return;
         }
+        failure = null;
+        if (f instanceof RuntimeException) {
+            throw (RuntimeException) f;
+        }
+        if (f instanceof Error) {
+            throw (Error) f;
+        }
+        throw new IllegalStateException(f);
     }
 
     /**
