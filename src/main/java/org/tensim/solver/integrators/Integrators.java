@@ -7,7 +7,6 @@ import java.util.Map;
 import java.util.function.Supplier;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.MidpointRK2;
-import org.tensim.solver.prefactored.PreconditionerMatrix;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
@@ -67,11 +66,6 @@ public final class Integrators {
      * {@link PrefactoredBdf2#CONTACT_KRYLOV_ITERATIONS} CG iterations a step, at {@link #CONTACT_STEP_S}.
      */
     public static final String CONTACT = "bdf2-contact";
-    /**
-     * {@link #REAL_TIME} with Liu et al.'s isotropic matrix as its preconditioner
-     * ({@link PreconditionerMatrix#ISOTROPIC}), for before/after comparisons ({@code bench --compare}).
-     */
-    public static final String ISOTROPIC = "bdf2-isotropic";
     /** The step the thorax was measured stable and converged at with {@link #CONTACT}, s. */
     public static final double CONTACT_STEP_S = 0.005;
 
@@ -98,8 +92,6 @@ public final class Integrators {
         add(new IntegratorChoice(LARGE_STEP_ACCURATE, "bdf2, 2 Newton x 8 CG (large steps, within 2 % of RK2)",
                 () -> new PrefactoredBdf2().setNewtonIterations(LARGE_STEP_ACCURATE_NEWTON)
                         .setKrylovIterations(LARGE_STEP_ACCURATE_KRYLOV)));
-        add(new IntegratorChoice(ISOTROPIC, "bdf2 with the isotropic preconditioner (before the probed one)",
-                () -> new PrefactoredBdf2().setPreconditioner(PreconditionerMatrix.ISOTROPIC)));
         add(new IntegratorChoice(CONTACT, "bdf2, 3 Newton x 20 CG (contact with bone surfaces)",
                 () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
                         .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));

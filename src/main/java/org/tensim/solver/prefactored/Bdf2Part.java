@@ -15,10 +15,5 @@ public enum Bdf2Part {
     /** Jacobian-vector products of conjugate gradient, with the links' dual projection. */
     PRODUCTS,
     /** Preconditioner applications: three-column solves with the Cholesky factor, and the links' projection. */
-    SOLVES,
-    /**
-     * Products that read the Jacobian's entries for the preconditioner ({@link JacobianProbe}): all of them in the
-     * first step, then a few a step after a change of parameters or of the step.
-     */
-    PROBES
+    SOLVES
 }

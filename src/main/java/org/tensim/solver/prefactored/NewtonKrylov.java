@@ -34,9 +34,7 @@ final class NewtonKrylov {
     private final double[] r;
     private final double[] dv;
     private final ConjugateGradient cg;
-    private PrefactoredMatrix.Factor preconditioner;
-    /** The operator CG runs on, for reading a probed preconditioner: y = P^T J P v (v projected first). */
-    private final JacobianProbe.Operator probed = this::probeProduct;
+    private SparseCholesky preconditioner;
     private NodeLoops loops = NodeLoops.SERIAL; // the force model's, during a solve
     private final double[] work;
     private final double[] scratch = new double[6];
@@ -73,13 +71,11 @@ final class NewtonKrylov {
      * Solves g(v) = 0 from the guess, leaving the new positions and velocities in
      * {@link #xIt} and {@link #vIt}.
      *
-     * @param matrix      the preconditioner's matrix, asked for its factor after the first linearisation
-     * @param factorBeta  the weight the preconditioner is made for, s
-     * @param t1          time of the new state, s
-     * @param beta        weight of the new step, s
+     * @param t1    time of the new state, s
+     * @param beta  weight of the new step, s
      */
-    void solve(ForceModel model, PrefactoredMatrix matrix, double factorBeta, double t1, double beta,
-            int newtonIterations, int krylovIterations, double krylovTolerance) {
+    void solve(ForceModel model, SparseCholesky precond, double t1, double beta, int newtonIterations,
+            int krylovIterations, double krylovTolerance) {
         final int n3 = xIt.length;
         System.arraycopy(s.x, 0, xIt, 0, n3);
         System.arraycopy(s.v, 0, vIt, 0, n3);
@@ -104,20 +100,8 @@ final class NewtonKrylov {
                 break;
             }
             jacobian.linearise(t1, xIt, beta, model.nodeLoops());
-            long t3 = System.nanoTime();
-            partNanos[Bdf2Part.LINEARISE.ordinal()] += t3 - t2;
-            if (it == 0) {
-                if (beta != factorBeta && matrix.wantsProducts(factorBeta)) {
-                    // A start-up (backward Euler) step: the matrix is read at BDF2's weight, that of the steps after.
-                    jacobian.linearise(t1, xIt, factorBeta, model.nodeLoops());
-                    preconditioner = matrix.factorFor(factorBeta, probed);
-                    jacobian.linearise(t1, xIt, beta, model.nodeLoops());
-                } else {
-                    preconditioner = matrix.factorFor(factorBeta, probed);
-                }
-                partNanos[Bdf2Part.PROBES.ordinal()] += System.nanoTime() - t3;
-            }
-            conjugateGradient(model, krylovIterations, krylovTolerance);
+            partNanos[Bdf2Part.LINEARISE.ordinal()] += System.nanoTime() - t2;
+            conjugateGradient(model, precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {
                 for (int c = 0; c < 3; c++) {
                     vIt[3 * nodes[j] + c] += dv[3 * j + c];
@@ -158,13 +142,14 @@ final class NewtonKrylov {
      * in the preconditioner's inverse, sqrt(r^T P^-1 r), has fallen by {@code tolerance} (a norm that weighs light
      * and heavy nodes alike, unlike |r|), or after {@code maxIterations}.
      */
-    private void conjugateGradient(ForceModel model, int maxIterations, double tolerance) {
+    private void conjugateGradient(ForceModel model, SparseCholesky precond, int maxIterations, double tolerance) {
         final int nf3 = g.length;
         for (int k = 0; k < nf3; k++) {
             dv[k] = 0;
             r[k] = -g[k];
         }
         links.projectDual(r);
+        preconditioner = precond;
         loops = model.nodeLoops();
         cg.solve(system, dv, r, 0, tolerance, maxIterations, ConjugateGradient.Stop.PRECONDITIONED);
         lastRelativeResidual = cg.relativeResidual();
@@ -205,17 +190,6 @@ final class NewtonKrylov {
             partNanos[Bdf2Part.SOLVES.ordinal()] += t2 - t0;
         }
     };
-
-    /** The operator a probed preconditioner reads, at the last linearisation; for tests. */
-    JacobianProbe.Operator probeOperator() {
-        return probed;
-    }
-
-    private void probeProduct(double[] pv, double[] out) {
-        links.project(pv);
-        jacobian.multiply(pv, out);
-        links.projectDual(out);
-    }
 
     /** Sets when the solves and the products' fibres and shear elements are shared (their measures start anew). */
     void setSharing(KernelSharing policy) {

@@ -66,7 +66,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     private final double krylovTolerance = KRYLOV_TOLERANCE;
     private Executor executor;
     private KernelSharing sharing = KernelSharing.MEASURED;
-    private PreconditionerMatrix preconditioner = PreconditionerMatrix.PROBED;
 
     private SystemState s;
     private PrefactoredMatrix matrix;
@@ -144,41 +143,6 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
             newton.setSharing(policy);
         }
         return this;
-    }
-
-    /**
-     * Which matrix the preconditioner factors (default {@link PreconditionerMatrix#PROBED}; the isotropic one where
-     * contact acts or rigid links share nodes). Takes effect for the next state stepped.
-     */
-    public PrefactoredBdf2 setPreconditioner(PreconditionerMatrix m) {
-        preconditioner = java.util.Objects.requireNonNull(m, "preconditioner matrix");
-        s = null;
-        return this;
-    }
-
-    /** Whether the matrix in use is probed from the Jacobian (false before the first step). */
-    public boolean preconditionerProbed() {
-        return matrix != null && matrix.probed();
-    }
-
-    /** Probing products a full reading of the preconditioner's matrix takes (0 when it is isotropic). */
-    public int probeProducts() {
-        return matrix == null ? 0 : matrix.probeProducts();
-    }
-
-    /** Probed factorisations that were not positive definite and fell back to the isotropic matrix. */
-    public long probedFallbacks() {
-        return matrix == null ? 0 : matrix.probedFallbacks();
-    }
-
-    /** The preconditioner's matrix (null before the first step); for tests. */
-    PrefactoredMatrix matrix() {
-        return matrix;
-    }
-
-    /** The Newton-Krylov solver (null before the first step); for tests. */
-    NewtonKrylov newtonKrylov() {
-        return newton;
     }
 
     /** When the solves and the products' fibres and shear elements are shared among the force model's threads. */
@@ -267,6 +231,9 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
         boolean bdf2 = history >= 1;
         double beta = bdf2 ? 2 * h / 3 : h;
+        // The factor is that of BDF2's weight even for a start-up backward Euler step, for which it is a
+        // preconditioner like any other: one factor per step size, no refactorisation after the first step.
+        PrefactoredMatrix.Factor factor = matrix.factorFor(2 * h / 3);
 
         final int[] nodes = matrix.freeNodes;
         final double[] x = st.x;
@@ -301,9 +268,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
         }
 
         steps++;
-        // The factor is that of BDF2's weight even for a start-up backward Euler step, for which it is a
-        // preconditioner like any other: one factor per step size, no refactorisation after the first step.
-        newton.solve(model, matrix, 2 * h / 3, t + h, beta, newtonIterations, krylovIterations, krylovTolerance);
+        newton.solve(model, factor.cholesky, t + h, beta, newtonIterations, krylovIterations, krylovTolerance);
 
         final double[] xn = newton.xIt;
         final double[] vn = newton.vIt;
@@ -358,8 +323,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
             return;
         }
         s = st;
-        matrix = new PrefactoredMatrix(st,
-                preconditioner == PreconditionerMatrix.PROBED && PrefactoredMatrix.probeable(st));
+        matrix = new PrefactoredMatrix(st);
         if (executor != null) {
             matrix.setExecutor(executor);
         }
