@@ -11,8 +11,16 @@ package org.tensim.model;
  * @param motion   the body's pose over time ({@link RigidMotion#FIXED} for a body at rest)
  * @param boundsM  the surface's rest-frame bounding box {min x, min y, min z, max x, max y, max z}, m, for the
  *                 broad phase
+ * @param hard     whether nodes that went deeper than their gap are also put back on it after each step (the
+ *                 solver's contact projection, a bone); false for a penalty alone, whose penetration is the load
+ *                 over the stiffness (a compliant support such as the liver)
  */
-public record ContactBody(String name, SignedDistance surface, RigidMotion motion, double[] boundsM) {
+public record ContactBody(String name, SignedDistance surface, RigidMotion motion, double[] boundsM, boolean hard) {
+    /** A body held by the penalty alone ({@code hard} false). */
+    public ContactBody(String name, SignedDistance surface, RigidMotion motion, double[] boundsM) {
+        this(name, surface, motion, boundsM, false);
+    }
+
     public ContactBody {
         if (surface == null || motion == null) {
             throw new IllegalArgumentException("contact body '" + name + "' needs a surface and a motion");

@@ -48,17 +48,22 @@ public final class ContactForces {
     private final double[] normal; // tangent: n per pair (world)
     private final double[] active; // tangent: k per pair when in contact at the linearisation, else 0
     private final double[] scratch = new double[4]; // hot loop: n, then d
+    private final boolean[] hard; // per body: projected after each step
+    /** Node ids with a pair on a hard body, each once, ascending. */
+    private final int[] hardNodes;
 
     ContactForces(List<ContactBody> bodies, List<ContactPair> pairs) {
         int nb = bodies.size();
         surface = new SignedDistance[nb];
         motion = new RigidMotion[nb];
+        hard = new boolean[nb];
         rotation = new double[9 * nb];
         translation = new double[3 * nb];
         poseTime = new double[nb];
         for (int b = 0; b < nb; b++) {
             surface[b] = bodies.get(b).surface();
             motion[b] = bodies.get(b).motion();
+            hard[b] = bodies.get(b).hard();
             poseTime[b] = Double.NaN;
         }
         int n = pairs.size();
@@ -75,6 +80,44 @@ public final class ContactForces {
             stiffness[e] = p.stiffnessNPerM();
             gap[e] = p.gapM();
         }
+        hardNodes = java.util.stream.IntStream.range(0, n).filter(e -> hard[body[e]]).map(e -> node3[e] / 3)
+                .distinct().sorted().toArray();
+    }
+
+    /** Node ids with a pair on a hard body ({@link ContactBody#hard()}), each once, ascending. */
+    public int[] hardNodes() {
+        return hardNodes.clone();
+    }
+
+    /**
+     * Puts every node that went deeper than its gap into a hard body back on the gap, along the body's normal:
+     * {@code x_i += (g - d) m / |m|^2} with m the distance's gradient (to first order d then equals g; |m| = 1 for
+     * an exact distance), at time t (s) and positions x (m). Nodes of zero inverse mass (fixed, driven) are left
+     * where they are. The contact's projection stage, as {@link RigidLinkProjection} is the links': frictionless
+     * (only the normal component moves) and one-sided. Allocation-free, simulation thread.
+     *
+     * @return the largest correction made, m
+     */
+    public double project(double t, double[] x, double[] invMass) {
+        final double[] n = scratch;
+        double largest = 0;
+        for (int e = 0; e < node3.length; e++) {
+            final int i = node3[e];
+            if (!hard[body[e]] || invMass[i / 3] == 0) {
+                continue;
+            }
+            final double p = gap[e] - distance(e, t, x, n);
+            final double m2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+            if (p <= 0 || m2 == 0) {
+                continue;
+            }
+            final double s = p / m2;
+            x[i] += s * n[0];
+            x[i + 1] += s * n[1];
+            x[i + 2] += s * n[2];
+            largest = Math.max(largest, p);
+        }
+        return largest;
     }
 
     /** Number of node-body pairs. */

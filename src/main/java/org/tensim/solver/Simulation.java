@@ -15,11 +15,16 @@ import org.tensim.solver.stability.TimeStepPolicy;
  * {@link MidpointRK2}) advances positions and velocities as if there were no
  * rigid links;</li>
  * <li>{@link Stage#PROJECT}: {@link RigidLinkProjection} restores every rigid
- * link's length, mass-weighted, fixed nodes never moving;</li>
+ * link's length, mass-weighted, fixed nodes never moving; where nodes touch hard bodies
+ * ({@link org.tensim.model.ContactBody#hard()}), {@link ContactForces#project} then puts every node that went
+ * deeper than its gap back on it along the body's normal, alternately with the links' projection
+ * ({@link #CONTACT_ROUNDS} rounds, the links last), so that neither a large step nor an inexact implicit
+ * solve leaves a node inside a bone (the penalty alone lets it in by its load over the stiffness);</li>
  * <li>{@link Stage#VELOCITY}: new velocities from the corrected positions: each
  * node moved by the projection gets {@code v += (x_corrected - x_unconstrained) / dt},
- * so the velocity matches the constrained motion (a node that no link touches keeps
- * the integrator's velocity, and with it the integrator's order).</li>
+ * so the velocity matches the constrained motion (a node that no link or hard contact touches keeps
+ * the integrator's velocity, and with it the integrator's order); a node put back on a bone loses
+ * the velocity that carried it in (an inelastic, frictionless contact).</li>
  * </ol>
  * then checks the state for divergence and notifies the {@link StepListener}s.
  * Every stage is timed into {@link #profile()}.
@@ -55,6 +60,14 @@ public final class Simulation {
     private volatile StepListener[] listenerSnapshot = new StepListener[0];
     private final StepProfile profile = new StepProfile();
     private final double[] unconstrained;
+    /**
+     * Rounds of the contact projection, each followed by the links' projection: a node put back on a bone
+     * while its rigid column pulls it in again gets there to within half its correction per round.
+     */
+    public static final int CONTACT_ROUNDS = 3;
+    /** Free nodes the projection stage may move (links' and hard contacts'), each once. */
+    private final int[] correctedNodes;
+    private final boolean hardContacts;
     private Integrator integrator;
     private double time;
     private long steps;
@@ -81,7 +94,11 @@ public final class Simulation {
     public Simulation(SystemState state, Integrator integrator) {
         this.state = state;
         this.forces = new ForceModel(state);
-        this.unconstrained = new double[state.linkCount() > 0 ? 3 * state.nodeCount : 0];
+        int[] hardNodes = state.contacts.hardNodes();
+        this.hardContacts = hardNodes.length > 0;
+        this.unconstrained = new double[state.linkCount() > 0 || hardContacts ? 3 * state.nodeCount : 0];
+        this.correctedNodes = java.util.stream.IntStream.concat(java.util.Arrays.stream(state.linkNodes),
+                java.util.Arrays.stream(hardNodes)).distinct().sorted().toArray();
         setIntegrator(integrator);
         monitor.setEnergyGrowthLimit(settings.energyGrowthLimit());
         monitor.setEnergyCheckInterval(settings.energyCheckInterval());
@@ -262,18 +279,24 @@ public final class Simulation {
         profile.record(Stage.INTEGRATE, t1 - t0);
 
         boolean links = state.linkCount() > 0;
-        if (links) {
+        if (links || hardContacts) {
             System.arraycopy(state.x, 0, unconstrained, 0, unconstrained.length);
-            if (!projection.project(state, state.x, settings.projectionTolerance(),
-                    settings.projectionMaxIterations())) {
-                unconvergedProjections++;
-                projectionFailed(dt);
+        }
+        if (links) {
+            projectLinks(dt);
+        }
+        for (int round = 0; round < CONTACT_ROUNDS && hardContacts; round++) {
+            if (state.contacts.project(time + dt, state.x, state.invMass) == 0) {
+                break;
+            }
+            if (links) {
+                projectLinks(dt);
             }
         }
         long t2 = System.nanoTime();
         profile.record(Stage.PROJECT, t2 - t1);
 
-        if (links) {
+        if (links || hardContacts) {
             updateVelocities(dt);
         }
         long t3 = System.nanoTime();
@@ -299,11 +322,18 @@ public final class Simulation {
         }
     }
 
+    private void projectLinks(double dt) {
+        if (!projection.project(state, state.x, settings.projectionTolerance(), settings.projectionMaxIterations())) {
+            unconvergedProjections++;
+            projectionFailed(dt);
+        }
+    }
+
     private void updateVelocities(double dt) {
         final double inv = 1 / dt;
         final double[] x = state.x;
         final double[] v = state.v;
-        for (int node : state.linkNodes) {
+        for (int node : correctedNodes) {
             if (state.invMass[node] == 0) {
                 continue; // fixed and driven nodes keep their prescribed velocity
             }

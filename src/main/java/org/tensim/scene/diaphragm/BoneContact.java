@@ -65,7 +65,7 @@ final class BoneContact {
                 }
                 if (bodyOf[i] < 0) {
                     bodyOf[i] = b.t.addContactBody(new ContactBody(bone.name(), bones.field(i), motions[i],
-                            bone.mesh().bounds()));
+                            bone.mesh().bounds(), !liver));
                 }
                 b.t.addContact(v, bodyOf[i], (liver ? liverPaPerM : stiffnessPaPerM) * b.area[v] / 2,
                         liver ? d : Math.min(0, d));

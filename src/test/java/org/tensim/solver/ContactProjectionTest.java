@@ -1,0 +1,148 @@
+package org.tensim.solver;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.tensim.model.ContactBody;
+import org.tensim.model.ForceLaw;
+import org.tensim.model.RigidMotion;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
+
+/**
+ * The contact's projection stage on hard bodies ({@link ContactBody#hard()}, a bone): after every step no node is
+ * deeper than its gap, whatever the integrator, the step or how inexact the implicit solve; the correction is along
+ * the normal only (frictionless), takes away the velocity that carried the node in, and leaves the rigid links
+ * their lengths. A body that is not hard keeps the penalty's penetration F / k (ContactDynamicsTest).
+ */
+class ContactProjectionTest {
+    private static final double M = 0.01; // kg
+    private static final double K = 1e4; // N/m
+    private static final double G = 9.81; // m/s^2
+
+    static List<String> allIntegrators() {
+        return Integrators.names();
+    }
+
+    private static int hardFloor(Topology t) {
+        return t.addContactBody(new ContactBody("floor", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED,
+                new double[] {-1, -1, -1, 1, 1, 1}, true));
+    }
+
+    private static Simulation simulation(Topology t, Integrator integrator) {
+        Simulation sim = new Simulation(SystemState.compile(t), integrator);
+        sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
+        return sim;
+    }
+
+    private static double step(Simulation sim, double implicitStep) {
+        return sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : implicitStep;
+    }
+
+    /**
+     * A node loaded onto a hard floor, sliding along it: after every step it lies on the floor (the penalty alone
+     * would let it 2 m g / k in as it lands, 20 micrometres), and its tangential velocity is untouched.
+     */
+    @ParameterizedTest
+    @MethodSource("allIntegrators")
+    void aNodeOnAHardFloorStaysOnItAndSlidesFreely(String integrator) {
+        Topology t = new Topology();
+        int floor = hardFloor(t);
+        t.addNode(new Vec3(0, 0, 0), M);
+        t.addContact(0, floor, K, 0);
+        t.setGravity(new Vec3(0, -G, 0));
+        Simulation sim = simulation(t, Integrators.create(integrator));
+        SystemState s = sim.state();
+        s.v[0] = 0.3;
+        s.v[2] = -0.2;
+        double h = step(sim, 1e-3);
+        while (sim.time() < 0.1) {
+            sim.step(h);
+            assertTrue(s.x[1] >= -1e-12, integrator + ": below the floor at t = " + sim.time() + ": " + s.x[1]);
+            assertTrue(s.v[1] <= 1e-9, integrator + ": no bounce: " + s.v[1]);
+        }
+        assertEquals(0.3, s.v[0], 1e-12, integrator + ": tangential velocity x");
+        assertEquals(-0.2, s.v[2], 1e-12, integrator + ": tangential velocity z");
+        assertEquals(0.3 * sim.time(), s.x[0], 1e-9, integrator);
+        assertEquals(0, s.contacts.maxPenetrationM(sim.time(), s.x), 1e-12, integrator);
+    }
+
+    /**
+     * At a 50 ms step with one Newton iteration of one CG iteration (a solve far from converged), a node thrown
+     * at a hard floor at 1 m/s does not stay inside it: after every step it is on or above the surface, it comes
+     * off no faster than it came (the penalty's spring may throw it back; the projection adds no energy), and its
+     * velocity along the floor is untouched.
+     */
+    @Test
+    void anInexactLargeStepDoesNotLeaveANodeInsideTheFloor() {
+        Topology t = new Topology();
+        int floor = hardFloor(t);
+        t.addNode(new Vec3(0, 0.01, 0), M);
+        t.addContact(0, floor, K, 0);
+        Simulation sim = simulation(t, new PrefactoredBdf2().setNewtonIterations(1).setKrylovIterations(1));
+        SystemState s = sim.state();
+        s.v[1] = -1;
+        s.v[0] = 0.5;
+        for (int k = 0; k < 20; k++) {
+            sim.step(0.05);
+            assertTrue(s.x[1] >= -1e-12, "below the floor after step " + k + ": " + s.x[1]);
+            assertTrue(s.v[1] <= 1 + 1e-9, "off the floor faster than it came: " + s.v[1]);
+            assertEquals(0.5, s.v[0], 1e-12, "velocity along the floor");
+        }
+    }
+
+    /**
+     * A rigid column of two nodes standing on a hard floor under gravity: the projection alternates with the links'
+     * so that the link keeps its length exactly and the foot is left within an eighth of the penalty's sinking
+     * (three rounds, each halving what the link pulls back in).
+     */
+    @ParameterizedTest
+    @MethodSource("allIntegrators")
+    void aRigidColumnOnAHardFloorKeepsItsLengthAndItsFootOut(String integrator) {
+        double length = 0.01;
+        Topology t = new Topology();
+        int floor = hardFloor(t);
+        t.addNode(new Vec3(0, 0, 0), M);
+        t.addNode(new Vec3(0, length, 0), M);
+        t.addRigidLink(0, 1, length);
+        t.addContact(0, floor, K, 0);
+        t.setGravity(new Vec3(0, -G, 0));
+        t.applyForce(t.node(1), ForceLaw.constant(new Vec3(0, -0.5, 0))); // a load pressing the column down
+        t.setViscousDamping(0.5);
+        Simulation sim = simulation(t, Integrators.create(integrator));
+        SystemState s = sim.state();
+        double penaltyAlone = (2 * M * G + 0.5) / K; // 60 micrometres
+        double deepest = 0;
+        double h = step(sim, 1e-3);
+        while (sim.time() < 0.2) {
+            sim.step(h);
+            deepest = Math.max(deepest, -s.x[1]);
+            double len = Math.sqrt(Math.pow(s.x[3] - s.x[0], 2) + Math.pow(s.x[4] - s.x[1], 2)
+                    + Math.pow(s.x[5] - s.x[2], 2));
+            assertEquals(length, len, 1e-9 * length, integrator + ": link length at t = " + sim.time());
+        }
+        assertTrue(deepest <= penaltyAlone / 8, integrator + ": the foot went " + deepest + " m in, against "
+                + penaltyAlone + " m by the penalty alone");
+    }
+
+    /** Only nodes on hard bodies are projected; a compliant support (the liver) keeps its penalty's deflection. */
+    @Test
+    void aSoftBodyIsNotProjected() {
+        Topology t = new Topology();
+        int soft = t.addContactBody(ContactShapes.body("liver", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED));
+        t.addNode(new Vec3(0, 0, 0), M);
+        t.addContact(0, soft, K, 0);
+        t.applyForce(t.node(0), ForceLaw.constant(new Vec3(0, -0.1, 0)));
+        t.setViscousDamping(5);
+        Simulation sim = simulation(t, Integrators.create("bdf2"));
+        assertEquals(0, sim.state().contacts.hardNodes().length);
+        sim.runUntil(0.2, 1e-3);
+        assertEquals(-0.1 / K, sim.state().x[1], 1e-6 * 0.1 / K, "y = -F / k");
+    }
+}
