@@ -121,7 +121,7 @@ public final class GuiCommand implements Callable<Integer> {
         // It never overwrites what the user tuned last.
         GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
-                options.boneSurfaces());
+                options.thorax != null);
         w.tuning().setSceneOptions(sceneArgs);
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
@@ -191,7 +191,8 @@ public final class GuiCommand implements Callable<Integer> {
     /**
      * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean, boolean)}; with {@code contact} (a
      * thorax of bone surfaces) starting from the step converged for contact ({@link Integrators#CONTACT}), which
-     * takes precedence over realTime: the real-time step drifts there (docs/thorax.md).
+     * takes precedence over realTime: the real-time step lags far there (docs/thorax.md). The swept cage
+     * ({@code --cage surfaces}) opens at the real-time step, which holds there with the contact projection.
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime, boolean loadGiven, boolean contact) throws Exception {

@@ -66,4 +66,34 @@ class GuiThoraxTest {
         assertTrue(((Number) m.get("attached_area_mm2")).doubleValue() > 1000, m.toString());
         assertTrue(((Number) m.get("tendon_area_percent")).doubleValue() > 5, m.toString());
     }
+
+    /**
+     * {@code tensim gui --cage surfaces} (a coarse generated dome among the swept cage's bones) opens at the
+     * real-time step, which holds there with the contact projection (docs/thorax.md), not the thorax's converged one.
+     */
+    @Test
+    @Tag("gui")
+    void theSweptCageOpensAtTheRealTimeStep() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, StandardCharsets.UTF_8));
+        try {
+            code = GuiCommandTest.run(err, "gui", "--cage", "surfaces", "--rings", "12", "--config-dir",
+                    dir.toString(), "--fresh", "--run-for", "2");
+        } finally {
+            System.setOut(saved);
+        }
+        String printed = out.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, err + printed);
+        String[] lines = printed.trim().split("\\R");
+        Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<Map<String, Object>>() { });
+        assertEquals(Integrators.REAL_TIME, m.get("integrator"), m.toString());
+        assertEquals(Integrators.REAL_TIME_STEP_S, ((Number) m.get("dt_s")).doubleValue(), 1e-12, m.toString());
+        assertTrue(((Number) m.get("steps")).longValue() > 0, m.toString());
+        assertTrue(m.get("contact_area_mm2") instanceof Number, m.toString());
+    }
 }
