@@ -91,8 +91,10 @@ public final class ContactForces {
 
     /**
      * Puts every node that went deeper than its gap into a hard body back on the gap, along the body's normal:
-     * {@code x_i += (g - d) m / |m|^2} with m the distance's gradient (to first order d then equals g; |m| = 1 for
-     * an exact distance), at time t (s) and positions x (m). Nodes of zero inverse mass (fixed, driven) are left
+     * {@code x_i += (g - d) m / |m|} with m the distance's gradient (|m| = 1 for an exact distance, and then d
+     * equals g to first order; a sampled distance's |m| falls below 1 near a thin bone's middle, where dividing by
+     * |m|^2 would throw the node out far: moving by g - d at most, a round falls short instead of overshooting),
+     * at time t (s) and positions x (m). Nodes of zero inverse mass (fixed, driven) are left
      * where they are. The contact's projection stage, as {@link RigidLinkProjection} is the links': frictionless
      * (only the normal component moves) and one-sided. Allocation-free, simulation thread.
      *
@@ -111,7 +113,7 @@ public final class ContactForces {
             if (p <= 0 || m2 == 0) {
                 continue;
             }
-            final double s = p / m2;
+            final double s = p / Math.sqrt(m2);
             x[i] += s * n[0];
             x[i + 1] += s * n[1];
             x[i + 2] += s * n[2];
