@@ -18,14 +18,15 @@ import org.tensim.model.RigidMotion;
  * thorax was registered to the diaphragm within a few millimetres, and some of the diaphragm's
  * vertices start up to 4 mm inside a rib or cartilage): such a node is kept from going deeper, not
  * thrown out at the first step. The bones move by their own rigid motions; a cartilage's surface moves
- * with its rib.
+ * with its rib. The bones are hard ({@link ContactBody#hard()}): after every step a node that went deeper than
+ * its gap is put back on it (the solver's contact projection, with the rigid links).
  *
  * <p><b>The liver</b> (a thorax with a liver part, {@code liverSupportPaPerM > 0}) is no bone: it is the compliant
  * support under the right hemidiaphragm, a one-sided elastic foundation on the same machinery. Every free
  * lower-surface node within {@link #LIVER_RANGE_M} of the liver at rest rests on it at end-expiration (g is its rest
  * distance, the registration's gap or overlap) and is pushed back by {@code K_l (A_i / 2) (g - d)} along the liver's
  * normal as it descends into it, {@code K_l} the liver's stiffness per unit area: a penetration of the pressure over
- * {@code K_l}, which is the liver's deflection, not an error. The liver is fixed.
+ * {@code K_l}, which is the liver's deflection, not an error, and is not projected away. The liver is fixed.
  */
 final class BoneContact {
     /** Nodes within this distance of a bone at rest may touch it, m (the breath moves the wall some 5-10 mm). */
