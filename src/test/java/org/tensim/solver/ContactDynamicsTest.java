@@ -43,14 +43,19 @@ class ContactDynamicsTest {
     }
 
     private static Simulation simulation(Topology t, String integrator) {
-        Simulation sim = new Simulation(SystemState.compile(t), Integrators.create(integrator));
+        return simulation(t, Integrators.create(integrator));
+    }
+
+    /** A simulation of t without the energy check (the contact tests' bodies do work on the nodes). */
+    static Simulation simulation(Topology t, Integrator integrator) {
+        Simulation sim = new Simulation(SystemState.compile(t), integrator);
         // A body that pushes a node from rest gives it energy from nothing in the monitor's view.
         sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
         return sim;
     }
 
     /** A tenth of 1 / w_max for explicit methods (as if in contact), the given step for implicit ones. */
-    private static double step(Simulation sim, double implicitStep) {
+    static double step(Simulation sim, double implicitStep) {
         return sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : implicitStep;
     }
 

@@ -27,22 +27,12 @@ class ContactProjectionTest {
     private static final double G = 9.81; // m/s^2
 
     static List<String> allIntegrators() {
-        return Integrators.names();
+        return ContactDynamicsTest.allIntegrators();
     }
 
     private static int hardFloor(Topology t) {
         return t.addContactBody(new ContactBody("floor", ContactShapes.plane(0, 1, 0, 0), RigidMotion.FIXED,
                 new double[] {-1, -1, -1, 1, 1, 1}, true));
-    }
-
-    private static Simulation simulation(Topology t, Integrator integrator) {
-        Simulation sim = new Simulation(SystemState.compile(t), integrator);
-        sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
-        return sim;
-    }
-
-    private static double step(Simulation sim, double implicitStep) {
-        return sim.integrator().explicit() ? 0.1 / sim.criticalTimeStep().omegaMaxPower() : implicitStep;
     }
 
     /**
@@ -57,11 +47,11 @@ class ContactProjectionTest {
         t.addNode(new Vec3(0, 0, 0), M);
         t.addContact(0, floor, K, 0);
         t.setGravity(new Vec3(0, -G, 0));
-        Simulation sim = simulation(t, Integrators.create(integrator));
+        Simulation sim = ContactDynamicsTest.simulation(t, Integrators.create(integrator));
         SystemState s = sim.state();
         s.v[0] = 0.3;
         s.v[2] = -0.2;
-        double h = step(sim, 1e-3);
+        double h = ContactDynamicsTest.step(sim, 1e-3);
         while (sim.time() < 0.1) {
             sim.step(h);
             assertTrue(s.x[1] >= -1e-12, integrator + ": below the floor at t = " + sim.time() + ": " + s.x[1]);
@@ -85,7 +75,8 @@ class ContactProjectionTest {
         int floor = hardFloor(t);
         t.addNode(new Vec3(0, 0.01, 0), M);
         t.addContact(0, floor, K, 0);
-        Simulation sim = simulation(t, new PrefactoredBdf2().setNewtonIterations(1).setKrylovIterations(1));
+        Simulation sim = ContactDynamicsTest.simulation(t,
+                new PrefactoredBdf2().setNewtonIterations(1).setKrylovIterations(1));
         SystemState s = sim.state();
         s.v[1] = -1;
         s.v[0] = 0.5;
@@ -115,11 +106,11 @@ class ContactProjectionTest {
         t.setGravity(new Vec3(0, -G, 0));
         t.applyForce(t.node(1), ForceLaw.constant(new Vec3(0, -0.5, 0))); // a load pressing the column down
         t.setViscousDamping(0.5);
-        Simulation sim = simulation(t, Integrators.create(integrator));
+        Simulation sim = ContactDynamicsTest.simulation(t, Integrators.create(integrator));
         SystemState s = sim.state();
         double penaltyAlone = (2 * M * G + 0.5) / K; // 60 micrometres
         double deepest = 0;
-        double h = step(sim, 1e-3);
+        double h = ContactDynamicsTest.step(sim, 1e-3);
         while (sim.time() < 0.2) {
             sim.step(h);
             deepest = Math.max(deepest, -s.x[1]);
@@ -140,7 +131,7 @@ class ContactProjectionTest {
         t.addContact(0, soft, K, 0);
         t.applyForce(t.node(0), ForceLaw.constant(new Vec3(0, -0.1, 0)));
         t.setViscousDamping(5);
-        Simulation sim = simulation(t, Integrators.create("bdf2"));
+        Simulation sim = ContactDynamicsTest.simulation(t, Integrators.create("bdf2"));
         assertEquals(0, sim.state().contacts.hardNodes().length);
         sim.runUntil(0.2, 1e-3);
         assertEquals(-0.1 / K, sim.state().x[1], 1e-6 * 0.1 / K, "y = -F / k");

@@ -28,6 +28,28 @@ class GuiCommandTest {
         return cl.execute(args);
     }
 
+    /**
+     * Runs a scripted {@code gui} command ({@code --run-for}, whose summary is its last line on stdout), checks that
+     * it exits 0, and returns that summary.
+     */
+    static java.util.Map<String, Object> scriptedSummary(String... args) throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream saved = System.out;
+        StringWriter err = new StringWriter();
+        int code;
+        System.setOut(new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8));
+        try {
+            code = run(err, args);
+        } finally {
+            System.setOut(saved);
+        }
+        String printed = out.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals(0, code, err + printed);
+        String[] lines = printed.trim().split("\\R");
+        return org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
+                new com.fasterxml.jackson.core.type.TypeReference<java.util.Map<String, Object>>() { });
+    }
+
     @Test
     void badSceneOrMeshIsRefusedWithTheValueNamed() {
         StringWriter err = new StringWriter();
@@ -79,21 +101,8 @@ class GuiCommandTest {
     @Tag("gui")
     void runForClosesTheWindowAndPrintsWhatItMeasuredAsTheLastLine() throws Exception {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
-        java.io.PrintStream saved = System.out;
-        StringWriter err = new StringWriter();
-        int code;
-        System.setOut(new java.io.PrintStream(out, true, java.nio.charset.StandardCharsets.UTF_8));
-        try {
-            code = run(err, "gui", "--scene", "cube", "--config-dir", dir.toString(), "--fresh", "--run-for", "1.5",
-                    "--unpaced");
-        } finally {
-            System.setOut(saved);
-        }
-        assertEquals(0, code, err.toString());
-        String[] lines = out.toString(java.nio.charset.StandardCharsets.UTF_8).trim().split("\\R");
-        java.util.Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
-                new com.fasterxml.jackson.core.type.TypeReference<java.util.Map<String, Object>>() { });
+        java.util.Map<String, Object> m = scriptedSummary("gui", "--scene", "cube", "--config-dir", dir.toString(),
+                "--fresh", "--run-for", "1.5", "--unpaced");
         assertEquals("cube", m.get("scene"));
         assertEquals(40, ((Number) m.get("nodes")).intValue(), "the two cubes' 2 x 20 nodes");
         assertEquals("rk2", m.get("integrator"));

@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assumptions.assumeFalse;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.GraphicsEnvironment;
-import java.io.StringWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
@@ -38,22 +36,8 @@ class GuiThoraxTest {
         assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
         assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
         Path mesh = CoarseMeshes.faceByFace(MESH, 0.006, dir.resolve("coarse.obj"));
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
-        java.io.PrintStream saved = System.out;
-        StringWriter err = new StringWriter();
-        int code;
-        System.setOut(new java.io.PrintStream(out, true, StandardCharsets.UTF_8));
-        try {
-            code = GuiCommandTest.run(err, "gui", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
-                    THORAX.toString(), "--config-dir", dir.toString(), "--fresh", "--run-for", "2");
-        } finally {
-            System.setOut(saved);
-        }
-        String printed = out.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, err + printed);
-        String[] lines = printed.trim().split("\\R");
-        Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
-                new com.fasterxml.jackson.core.type.TypeReference<Map<String, Object>>() { });
+        Map<String, Object> m = GuiCommandTest.scriptedSummary("gui", "--mesh", mesh.toString(), "--units", "mm",
+                "--thorax", THORAX.toString(), "--config-dir", dir.toString(), "--fresh", "--run-for", "2");
         System.out.println("gui --thorax: " + m);
         assertEquals("diaphragm", m.get("scene"));
         assertEquals(Integrators.CONTACT, m.get("integrator"), m.toString());
@@ -75,22 +59,8 @@ class GuiThoraxTest {
     @Tag("gui")
     void theSweptCageOpensAtTheRealTimeStep() throws Exception {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
-        java.io.PrintStream saved = System.out;
-        StringWriter err = new StringWriter();
-        int code;
-        System.setOut(new java.io.PrintStream(out, true, StandardCharsets.UTF_8));
-        try {
-            code = GuiCommandTest.run(err, "gui", "--cage", "surfaces", "--rings", "12", "--config-dir",
-                    dir.toString(), "--fresh", "--run-for", "2");
-        } finally {
-            System.setOut(saved);
-        }
-        String printed = out.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, err + printed);
-        String[] lines = printed.trim().split("\\R");
-        Map<String, Object> m = org.tensim.io.Json.mapper().readValue(lines[lines.length - 1],
-                new com.fasterxml.jackson.core.type.TypeReference<Map<String, Object>>() { });
+        Map<String, Object> m = GuiCommandTest.scriptedSummary("gui", "--cage", "surfaces", "--rings", "12",
+                "--config-dir", dir.toString(), "--fresh", "--run-for", "2");
         assertEquals(Integrators.REAL_TIME, m.get("integrator"), m.toString());
         assertEquals(Integrators.REAL_TIME_STEP_S, ((Number) m.get("dt_s")).doubleValue(), 1e-12, m.toString());
         assertTrue(((Number) m.get("steps")).longValue() > 0, m.toString());
