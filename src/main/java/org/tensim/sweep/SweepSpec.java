@@ -27,7 +27,7 @@ import java.util.Map;
  * ({@code ./tensim gui}, docs/gui.md), with their units in their names and their valid
  * ranges from there. {@code muscleLoad} (diaphragm only) is the muscle-load model as
  * {@code tensim diaphragm --muscle-load}: {@code fibres} when absent (the default, whose
- * {@code muscleActionPa} is an active fibre stress, 18 kPa by default), {@code pressure} or
+ * {@code muscleActionPa} is an active fibre stress, 19 kPa by default), {@code pressure} or
  * {@code paper-nodes} (a pressure, 2.6 kPa by default).
  *
  * @param setup      what every point shares: scene, mesh, solver, fixed values, measures

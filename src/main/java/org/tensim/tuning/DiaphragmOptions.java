@@ -65,7 +65,8 @@ public final class DiaphragmOptions {
     @Option(names = "--tendon-rule", paramLabel = "RULE", converter = ModelNames.TendonRules.class,
             description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
                     + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
-                    + " tops and their midpoint along the surface, the same share) (default: plane)")
+                    + " tops and their midpoint along the surface, the same share) (default: geodesic; plane with"
+                    + " --paper)")
     TendonRule tendonRule;
 
     @Option(names = "--contact", negatable = true,
@@ -97,7 +98,7 @@ public final class DiaphragmOptions {
 
     @Option(names = "--muscle-force", paramLabel = "PA",
             description = "peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
-                    + " default 18000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600)")
+                    + " default 19000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600)")
     Double musclePa;
 
     @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: 4)")
@@ -127,7 +128,7 @@ public final class DiaphragmOptions {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL", converter = ModelNames.MuscleLoads.class,
-            description = "fibres (active tension along the fibres to the central tendon, 18 kPa of fibre stress),"
+            description = "fibres (active tension along the fibres to the central tendon, 19 kPa of fibre stress),"
                     + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
                     + " paper's per-node forces, 2.6 kPa) (default: fibres)")
     public BoundaryConditions.MuscleLoad muscleLoad;
@@ -248,7 +249,7 @@ public final class DiaphragmOptions {
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
                 liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM, cageSurfaces());
         return new DiaphragmSpec(m, p, b, br, cageSpec, actionLines,
-                tendonRule == null ? TendonRule.PLANE : tendonRule);
+                tendonRule == null ? base.tendonRule() : tendonRule);
     }
 
     /** Holds the options for a parse outside a command (spec files). */

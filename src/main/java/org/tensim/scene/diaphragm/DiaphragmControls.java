@@ -14,7 +14,7 @@ public final class DiaphragmControls {
     public static final double MAX_RIB_AMPLITUDE = 3;
     /**
      * Largest accepted muscle action amplitude, Pa: covers both readings of the amplitude, a pressure (a forced
-     * inspiration reaches about 10 kPa) and an active fibre stress (18 kPa at quiet breathing on the default
+     * inspiration reaches about 10 kPa) and an active fibre stress (19 kPa at quiet breathing on the default
      * mesh, about twice that for a deep breath).
      */
     public static final double MAX_MUSCLE_PA = 30_000;

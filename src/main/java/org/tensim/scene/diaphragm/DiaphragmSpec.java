@@ -18,13 +18,20 @@ import org.tensim.model.Check;
  * @param breathing   the breathing cycle and the two live controls' starting values
  * @param cage        the bones: the parametric cage, BodyParts3D's boxes, or a thorax of bone surfaces
  * @param actionLines the muscle's action lines (pressure and paper-nodes loads); null for one through each dome
- * @param tendonRule  how the tendon is found without a label file (null: the paper's plane)
+ * @param tendonRule  how the tendon is found without a label file (null: {@link #DEFAULT_TENDON_RULE})
  */
 public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryConditions boundary,
         Breathing breathing, Cage cage, List<ActionLines.Line> actionLines, TendonRule tendonRule) {
 
     /** Rings per face of the generated double dome at the paper's resolution (11,354 nodes). */
     public static final int PAPER_RINGS = 43;
+    /**
+     * How the tendon is found without a label file, by default: grown along the surface around the dome tops
+     * ({@link TendonRule#GEODESIC}), central as the real trefoil is whichever dome stands higher. The paper's plane
+     * cut ({@link #paper()} keeps it) puts the tendon on the higher dome of a real, asymmetric diaphragm
+     * (docs/thorax.md, "Where the tendon lies").
+     */
+    public static final TendonRule DEFAULT_TENDON_RULE = TendonRule.GEODESIC;
     /** Thickness given to a single-surface mesh, m (the diaphragm's muscle: 2-4 mm). */
     public static final double DEFAULT_OFFSET_THICKNESS_M = 0.0025;
 
@@ -34,7 +41,7 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
                     + " groups (use DiaphragmSpec.defaults() and its with... methods)");
         }
         actionLines = actionLines == null || actionLines.isEmpty() ? null : List.copyOf(actionLines);
-        tendonRule = tendonRule == null ? TendonRule.PLANE : tendonRule;
+        tendonRule = tendonRule == null ? DEFAULT_TENDON_RULE : tendonRule;
         if (actionLines != null && boundary.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES) {
             throw new IllegalArgumentException("action lines place the traction of the muscle loads pressure and"
                     + " paper-nodes; the muscle load 'fibres' (the active fibre tension) has none");
@@ -233,7 +240,7 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
     /** The defaults: the generated double dome at the paper's resolution in the parametric cage, quiet breathing. */
     public static DiaphragmSpec defaults() {
         return new DiaphragmSpec(Mesh.defaults(), DiaphragmParameters.defaults(), BoundaryConditions.defaults(),
-                Breathing.defaults(), Cage.defaults(), null, TendonRule.PLANE);
+                Breathing.defaults(), Cage.defaults(), null, DEFAULT_TENDON_RULE);
     }
 
     /**
@@ -243,7 +250,7 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
     public static DiaphragmSpec paper() {
         DiaphragmSpec d = defaults();
         return d.withTissue(d.tissue().withTissueModel(TissueModel.PAPER)).withBoundary(BoundaryConditions.paper())
-                .withCage(d.cage().withContact(false));
+                .withCage(d.cage().withContact(false)).withTendonRule(TendonRule.PLANE);
     }
 
     public DiaphragmSpec withMesh(Mesh m) {

@@ -85,7 +85,7 @@ public final class DiaphragmViewScene implements ViewScene {
      * the load's (an active fibre stress for fibres, a pressure for the others; {@link DiaphragmSetup#defaultMusclePa}).
      */
     public static List<TunableParameter> parameters(BoundaryConditions.MuscleLoad load) {
-        return parameters(load, TendonRule.PLANE, false);
+        return parameters(load, DiaphragmSpec.DEFAULT_TENDON_RULE, false);
     }
 
     /**
