@@ -66,7 +66,7 @@ public final class DiaphragmOptions {
             description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
                     + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
                     + " tops and their midpoint along the surface, the same share) (default: geodesic; plane with"
-                    + " --paper)")
+                    + " --model paper)")
     TendonRule tendonRule;
 
     @Option(names = "--contact", negatable = true,

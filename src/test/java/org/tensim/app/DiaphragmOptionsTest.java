@@ -46,7 +46,7 @@ class DiaphragmOptionsTest {
         v.put("thorax", thorax);
         v.put("cage", "surfaces");
         v.put("labels", labels);
-        v.put("tendon-rule", "geodesic");
+        v.put("tendon-rule", "plane");
         v.put("contact", false);
         v.put("contact-stiffness", 7e7);
         v.put("liver-support", 2e4);
@@ -182,6 +182,12 @@ class DiaphragmOptionsTest {
         DiaphragmSpec paper = viaCommandLine(List.of("--model", "paper"));
         assertEquals(DiaphragmSpec.paper().boundary(), paper.boundary());
         assertEquals(DiaphragmSpec.paper().tissue(), paper.tissue());
+        assertEquals(org.tensim.scene.diaphragm.TendonRule.PLANE, paper.tendonRule(), "the paper's plane tendon");
+        assertEquals(org.tensim.scene.diaphragm.TendonRule.GEODESIC, viaCommandLine(List.of()).tendonRule(),
+                "the default rule");
+        assertEquals(org.tensim.scene.diaphragm.TendonRule.GEODESIC,
+                viaCommandLine(List.of("--model", "paper", "--tendon-rule", "geodesic")).tendonRule(),
+                "--tendon-rule overrides the paper's");
         assertEquals(paper, viaGui(List.of("--model", "paper")));
         assertEquals(paper, viaSpecFile(dir, Map.of("model", "paper")));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

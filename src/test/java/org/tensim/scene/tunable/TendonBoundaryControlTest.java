@@ -30,7 +30,7 @@ class TendonBoundaryControlTest {
 
     @Test
     void raisingThePlaneShrinksTheTendonAndZeroIsTheDefaultShare() {
-        SceneFactory f = DiaphragmViewScene.factory(COARSE);
+        SceneFactory f = DiaphragmViewScene.factory(COARSE.withTendonRule(TendonRule.PLANE));
         TunableParameter plane = parameter(f.create(true).parameters(), DiaphragmViewScene.TENDON_PLANE);
         assertTrue(plane != null && plane.restarts() && plane.defaultValue() == 0 && "mm".equals(plane.unit()),
                 String.valueOf(plane));
@@ -50,8 +50,9 @@ class TendonBoundaryControlTest {
     }
 
     @Test
-    void aLargerShareGivesALargerGeodesicTendonNearTheShareAskedFor() {
-        SceneFactory f = DiaphragmViewScene.factory(COARSE.withTendonRule(TendonRule.GEODESIC));
+    void aLargerShareGivesALargerGeodesicTendonNearTheShareAskedForByDefault() {
+        SceneFactory f = DiaphragmViewScene.factory(COARSE);
+        assertEquals(TendonRule.GEODESIC, COARSE.tendonRule(), "the default rule");
         TunableParameter share = parameter(f.create(true).parameters(), DiaphragmViewScene.TENDON_SHARE);
         assertTrue(share != null && share.restarts() && share.defaultValue() == 0.12, String.valueOf(share));
         assertEquals(null, parameter(f.create(true).parameters(), DiaphragmViewScene.TENDON_PLANE));
@@ -73,6 +74,8 @@ class TendonBoundaryControlTest {
                 org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES, TendonRule.GEODESIC, true);
         assertFalse(ps.stream().anyMatch(p -> p.key().startsWith("tendon")), ps.toString());
         assertTrue(DiaphragmViewScene.PARAMETERS.stream().anyMatch(p -> p.key().equals(
-                DiaphragmViewScene.TENDON_PLANE)), "the sweeps' list: the default (plane) rule's");
+                DiaphragmViewScene.TENDON_SHARE)), "the sweeps' list: the default (geodesic) rule's");
+        assertFalse(DiaphragmViewScene.PARAMETERS.stream().anyMatch(p -> p.key().equals(
+                DiaphragmViewScene.TENDON_PLANE)), "the sweeps' list: not the plane's");
     }
 }

@@ -171,8 +171,8 @@ class ThoraxLiveStateTest {
         assertArrayEquals(saved, Files.readAllBytes(file));
 
         // The tuned boundary is what is saved, and a scene built from the file has that tendon and saves the same file.
-        DiaphragmViewScene tuned = (DiaphragmViewScene) factory.create(true, Map.of(DiaphragmViewScene.TENDON_PLANE,
-                8.0));
+        DiaphragmViewScene tuned = (DiaphragmViewScene) factory.create(true, Map.of(DiaphragmViewScene.TENDON_SHARE,
+                0.08));
         assertTrue(tuned.scene().tendonAreaFraction() < s.tendonAreaFraction());
         Path tunedFile = dir.resolve("tuned.labels");
         tuned.saveLabels(tunedFile, false);
