@@ -104,6 +104,8 @@ final class DiaphragmSceneBuilder {
     private org.tensim.io.mesh.VertexLabel[] vertexLabels;
     /** Per vertex, tendon by a label file or the geodesic rule (null: the plane's cap). */
     private boolean[] tendonRegion;
+    /** The geodesic rule's signed distance to the tendon's edge per vertex, m ({@link GeodesicTendon.Region#level}). */
+    private double[] tendonLevel;
     private org.tensim.model.RigidMotion[] boneMotions;
     private Map<String, double[]> attachedPerBone = Map.of();
     private Map<String, Integer> contactPairs = Map.of();
@@ -175,7 +177,9 @@ final class DiaphragmSceneBuilder {
                     tendonRegion[v] = vertexLabels[v] == org.tensim.io.mesh.VertexLabel.TENDON;
                 }
             } else {
-                tendonRegion = GeodesicTendon.grow(surfaces, p.tendonAreaFraction()).tendon();
+                GeodesicTendon.Region r = GeodesicTendon.grow(surfaces, p.tendonAreaFraction());
+                tendonRegion = r.tendon();
+                tendonLevel = r.level();
             }
         }
         planeTendon();
@@ -342,7 +346,10 @@ final class DiaphragmSceneBuilder {
             }
             double[] height = new double[nv];
             for (int v = 0; v < nv; v++) {
-                height[v] = tendonRegion == null ? height(p.tendonNormal(), v) - tendonCut : tendon[v] ? 1 : -1;
+                // The fibres are clipped at a continuous edge (the plane's, or the geodesic distance's), so that
+                // the muscle's share of a triangle cut by it does not depend on which corners are tendon.
+                height[v] = tendonRegion == null ? height(p.tendonNormal(), v) - tendonCut
+                        : tendonLevel != null ? tendonLevel[v] : tendon[v] ? 1 : -1;
             }
             MuscleFibres.add(t, mesh, height, tendon, area, thickness, lines,
                     FibreInsertion.activation(mesh, surfaces, originDistance, FibreInsertion.DEFAULT_LENGTH_M));

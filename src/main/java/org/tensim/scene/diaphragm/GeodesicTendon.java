@@ -43,9 +43,14 @@ public final class GeodesicTendon {
      * @param share    the tendon's share of the upper surface's area (0..1)
      * @param radiusM  geodesic distance of the farthest upper tendon vertex to its seed, m
      * @param centroid area-weighted centroid of the upper tendon vertices, {x, y, z} m
-     *                 (both arrays are fresh, the caller's to keep)
+     * @param level    per mesh vertex, the signed geodesic distance to the tendon's edge, m: {@code radiusM - d}
+     *                 with d the vertex's distance to its seed (a lower vertex its partner's), positive on the
+     *                 tendon, not below {@code -radiusM} (unreached vertices and lower ones without a partner
+     *                 take that); its zero level, interpolated linearly in each triangle, is the edge that the
+     *                 muscle's fibres are clipped at, as at the paper's plane (the arrays are fresh, the
+     *                 caller's to keep)
      */
-    public record Region(boolean[] tendon, double share, double radiusM, double[] centroid) {
+    public record Region(boolean[] tendon, double share, double radiusM, double[] centroid, double[] level) {
     }
 
     private GeodesicTendon() {
@@ -108,6 +113,7 @@ public final class GeodesicTendon {
         }
         double taken = 0;
         double radius = 0;
+        boolean grown = false;
         while (!queue.isEmpty()) {
             double[] e = queue.poll();
             int v = (int) e[1];
@@ -116,13 +122,16 @@ public final class GeodesicTendon {
             }
             done[v] = true;
             // Taking v overshoots by taken + a - target; stopping undershoots by target - taken.
-            // The first vertex is always taken, so that the region is never empty.
-            if (taken > 0 && taken + area[v] - target > target - taken) {
-                break;
+            // The first vertex is always taken, so that the region is never empty. Once grown, the
+            // search goes on over the upper surface for the distances beyond the edge (the level).
+            if (!grown && taken > 0 && taken + area[v] - target > target - taken) {
+                grown = true;
             }
-            tendon[v] = true;
-            taken += area[v];
-            radius = dist[v];
+            if (!grown) {
+                tendon[v] = true;
+                taken += area[v];
+                radius = dist[v];
+            }
             for (int w : adj[v]) {
                 double d = dist[v] + TwoSurfaces.distance(m, v, w);
                 if (d < dist[w]) {
@@ -139,12 +148,17 @@ public final class GeodesicTendon {
                 }
             }
         }
+        double[] level = new double[nv];
+        for (int v = 0; v < nv; v++) {
+            int u = s.isUpper(v) ? v : s.partner(v);
+            level[v] = u < 0 ? -radius : Math.max(-radius, radius - dist[u]);
+        }
         for (int v = 0; v < nv; v++) {
             if (!s.isUpper(v) && s.partner(v) >= 0) {
                 tendon[v] = tendon[s.partner(v)];
             }
         }
-        return new Region(tendon, taken / upperArea, radius, c);
+        return new Region(tendon, taken / upperArea, radius, c, level);
     }
 
     /**

@@ -39,7 +39,9 @@ final class MuscleFibres {
      * Adds the fibres to t (node ids = mesh vertex ids) and returns how many were added.
      *
      * @param tendonHeight per vertex, a signed height whose zero level is the tendon's edge, positive on the
-     *                     tendon: the height above the tendon plane, m, or +1 / -1 for a tendon given by labels
+     *                     tendon: the height above the tendon plane, m, the geodesic rule's signed distance to
+     *                     the tendon's edge, m ({@link GeodesicTendon.Region#level}), or +1 / -1 for a tendon given
+     *                     by labels (the edge then at mid-edge)
      * @param tendon  per vertex: tendon (true) or muscle
      * @param area    vertex area shares, m^2 (weights of the tendon's centre)
      * @param thicknessM the diaphragm's thickness t, m
