@@ -92,6 +92,57 @@ class GeodesicTendonTest {
         }
     }
 
+    /**
+     * The level is the signed distance to the tendon's edge: positive on the tendon's upper vertices, negative
+     * off it, at most the radius, the partner's on a lower vertex; its zero, interpolated in each upper triangle
+     * (where the fibres are clipped), encloses about the share asked for at both resolutions.
+     */
+    @Test
+    void theLevelIsTheSignedDistanceToTheEdgeAndItsZeroEnclosesTheShare() {
+        for (int rings : new int[] {14, 28}) {
+            TwoSurfaces s = DiaphragmSetup.generatedSurfaces(rings);
+            GeodesicTendon.Region r = GeodesicTendon.grow(s, 0.12);
+            TriangleMesh m = s.mesh();
+            double[] level = r.level();
+            for (int v = 0; v < m.vertexCount(); v++) {
+                assertTrue(level[v] <= r.radiusM() && level[v] >= -r.radiusM(), rings + " rings, vertex " + v);
+                if (!s.isUpper(v)) {
+                    assertEquals(s.partner(v) >= 0 ? level[s.partner(v)] : -r.radiusM(), level[v], 0,
+                            rings + " rings, lower vertex " + v);
+                } else if (level[v] != 0) {
+                    assertEquals(level[v] > 0, r.tendon()[v], rings + " rings, vertex " + v + " at level " + level[v]);
+                }
+            }
+            double all = 0;
+            double tendon = 0;
+            double[] h = new double[3];
+            for (int t : s.upperTriangles()) {
+                double a = triangleArea(m, t);
+                for (int k = 0; k < 3; k++) {
+                    h[k] = level[m.corner(t, k)];
+                }
+                all += a;
+                tendon += a * (1 - MuscleFibres.muscleFraction(h));
+            }
+            System.out.printf("geodesic tendon, %d rings: vertex share %.4f, clipped at the level's zero %.4f%n",
+                    rings, r.share(), tendon / all);
+            assertEquals(0.12, tendon / all, 0.005, rings + " rings: the clipped tendon's share");
+        }
+    }
+
+    private static double triangleArea(TriangleMesh m, int t) {
+        double[][] p = new double[3][3];
+        for (int k = 0; k < 3; k++) {
+            for (int a = 0; a < 3; a++) {
+                p[k][a] = m.coord(m.corner(t, k), a);
+            }
+        }
+        double ux = p[1][0] - p[0][0], uy = p[1][1] - p[0][1], uz = p[1][2] - p[0][2];
+        double vx = p[2][0] - p[0][0], vy = p[2][1] - p[0][1], vz = p[2][2] - p[0][2];
+        return 0.5 * Math.sqrt(Math.pow(uy * vz - uz * vy, 2) + Math.pow(uz * vx - ux * vz, 2)
+                + Math.pow(ux * vy - uy * vx, 2));
+    }
+
     @Test
     void badInputIsRefusedNamingTheValue() {
         TwoSurfaces s = DiaphragmSetup.generatedSurfaces(6);
