@@ -45,8 +45,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     ThreadsOption threads = new ThreadsOption();
 
     @Option(names = "--realtime",
-            description = "run the fastest configuration the real-time study measured within 5 %% of RK2 on the"
-                    + " default mesh, on all cores; the summary names it (realtime_setting)")
+            description = "run the real-time setting (bdf2 at 25 ms with the fibres' load: the real-time study's"
+                    + " choice on the default mesh, its error against RK2 in docs/performance.md), on all cores; the"
+                    + " summary names it (realtime_setting)")
     boolean realtime;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
