@@ -99,7 +99,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
             if (sceneSpec.cage().thorax() != null) {
                 throw usage("--realtime was measured on the double dome (with the band or --cage surfaces); in a"
-                        + " thorax its step (1 Newton x 4 CG at 25 ms) lags the converged one far (docs/thorax.md):"
+                        + " thorax its step (1 Newton x "
+                        + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS
+                        + " CG at 25 ms) lags the converged one far (docs/thorax.md):"
                         + " use --integrator bdf2 --dt 0.005 --newton 3 --cg-iterations 20 with --thorax");
             }
             setting = RealTimeSetting.forMuscleLoad(sceneSpec.boundary().muscleLoad());

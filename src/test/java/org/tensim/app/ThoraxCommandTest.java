@@ -152,7 +152,7 @@ class ThoraxCommandTest {
         assertEquals("ok", s.get("status"));
         assertEquals(PrefactoredBdf2.NAME, s.get("integrator"));
         assertEquals(0.025, ((Number) s.get("dt_s")).doubleValue(), 1e-12);
-        assertEquals(4, ((Number) s.get("cg_iterations_cap")).intValue());
+        assertEquals(PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS, ((Number) s.get("cg_iterations_cap")).intValue());
         assertTrue(s.containsKey("realtime_setting"), s.toString());
         double past = ((Number) s.get("max_penetration_past_rest_mm")).doubleValue();
         double apex = ((Number) s.get("apex_descent_mm")).doubleValue();
