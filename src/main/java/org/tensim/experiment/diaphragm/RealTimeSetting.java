@@ -16,9 +16,9 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * end-inspiration and at the worst moment) and with the apex's descent within
  * {@link RealTimeStudy#APEX_TOLERANCE_MM} of RK2's, on the default mesh. The figures themselves are that
  * study's output (realtime.json, docs/diaphragm.md), not constants here: a run's summary carries its own
- * provenance. With the geodesic tendon at 19 kPa (the defaults since the study chose it) the fibres' setting
- * measured 2.7 % at end-inspiration but 5.2 % at the worst moment; 5 CG iterations would be within the tolerance
- * at both (docs/performance.md).
+ * provenance. With the geodesic tendon at 19 kPa the fibres' setting at 4 CG iterations, as first chosen, measured
+ * 2.7 % at end-inspiration but 5.2 % at the worst moment; with 5, {@code bdf2}'s default cap since, 2.0 / 4.8 %
+ * (docs/diaphragm.md, "Real time").
  *
  * @param integrator name of a setup in {@link Integrators}
  * @param dtS        time step, s (0: the scene's stable step for that integrator)
