@@ -85,6 +85,12 @@ public final class DiaphragmOptions {
                     + DiaphragmSpec.Cage.DEFAULT_LIVER_PA_PER_M + ")")
     Double liverPaPerM;
 
+    @Option(names = "--abdominal-support", paramLabel = "PA_PER_M",
+            description = "stiffness per unit area of the abdominal contents under the diaphragm, Pa/m: every free"
+                    + " lower-surface node tied to its rest point by K A_i / 2; 0 turns it off (default: "
+                    + DiaphragmParameters.DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M + "; docs/thorax.md, \"Resolution\")")
+    Double abdominalPaPerM;
+
     @Option(names = "--model", paramLabel = "NAME",
             description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
@@ -198,6 +204,13 @@ public final class DiaphragmOptions {
         }
         if (tissueModel != null) {
             p = p.withTissueModel(tissueModel);
+        }
+        if (abdominalPaPerM != null) {
+            try {
+                p = p.withAbdominalSupport(abdominalPaPerM);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("--abdominal-support: " + e.getMessage(), e);
+            }
         }
         if (tendonNormal != null || tendonPointMm != null) {
             Vec3 normal = tendonNormal == null ? p.tendonNormal() : vector("--tendon-normal", tendonNormal, 1);

@@ -50,6 +50,7 @@ class DiaphragmOptionsTest {
         v.put("contact", false);
         v.put("contact-stiffness", 7e7);
         v.put("liver-support", 2e4);
+        v.put("abdominal-support", 1e5);
         v.put("model", "default");
         v.put("rib-amplitude", 0.5);
         v.put("muscle-force", 2000.0);

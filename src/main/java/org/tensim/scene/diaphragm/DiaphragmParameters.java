@@ -74,10 +74,16 @@ public record DiaphragmParameters(double densityKgPerM3, double muscleYoungPa, d
         }
     }
 
+    /**
+     * Default stiffness per unit area of the abdominal support, Pa/m: without it the dome snaps through under the
+     * muscle's load (docs/diaphragm.md, "Parameters"); how it moves the thorax's answer: docs/thorax.md, "Resolution".
+     */
+    public static final double DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M = 50e3;
+
     /** The defaults (docs/diaphragm.md). */
     public static DiaphragmParameters defaults() {
         return new DiaphragmParameters(1060, 40e3, 160e3, 0.9, 60, 0.12, new Vec3(0, 0, 1), null, 0.020, 2e5,
-                0.02, 100, 0.3, 0.0005, 50e3, 1, 0.45, TissueModel.MATERIAL);
+                0.02, 100, 0.3, 0.0005, DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M, 1, 0.45, TissueModel.MATERIAL);
     }
 
     public DiaphragmParameters withAttachThreshold(double m) {
