@@ -153,6 +153,21 @@ class DiaphragmOptionsTest {
     }
 
     @Test
+    void theAbdominalSupportIsTheTissuesAndANegativeOneIsRefusedByName(@TempDir Path dir) throws Exception {
+        DiaphragmSpec stiffer = viaCommandLine(List.of("--abdominal-support", "1e5"));
+        assertEquals(1e5, stiffer.tissue().abdominalSupportPaPerM(), 0);
+        assertEquals(stiffer, viaSpecFile(dir, Map.of("abdominal-support", 1e5)));
+        assertEquals(0, viaCommandLine(List.of("--abdominal-support", "0")).tissue().abdominalSupportPaPerM(), 0,
+                "0 turns it off");
+        assertEquals(org.tensim.scene.diaphragm.DiaphragmParameters.DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M,
+                viaCommandLine(List.of()).tissue().abdominalSupportPaPerM(), 0);
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
+                () -> viaCommandLine(List.of("--abdominal-support", "-5")));
+        assertTrue(bad.getMessage().contains("--abdominal-support") && bad.getMessage().contains("-5")
+                && bad.getMessage().contains("Pa/m"), bad.getMessage());
+    }
+
+    @Test
     void theCageIsSegmentsOrSurfacesEverywhereAndAThoraxIsNeverSegments(@TempDir Path dir) throws Exception {
         DiaphragmSpec surfaces = viaCommandLine(List.of("--cage", "surfaces"));
         assertTrue(surfaces.cage().surfaces() && surfaces.cage().boneSurfaces() && surfaces.cage().thorax() == null);
