@@ -91,6 +91,12 @@ public final class DiaphragmOptions {
                     + DiaphragmParameters.DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M + "; docs/thorax.md, \"Resolution\")")
     Double abdominalPaPerM;
 
+    @Option(names = "--abdominal-pressure", paramLabel = "PA",
+            description = "rise of the abdominal pressure on the diaphragm's lower face at end-inspiration, Pa,"
+                    + " 0..5000: it follows the breathing level and presses the zone of apposition on the chest wall"
+                    + " (default: 0, none; docs/thorax.md, \"Is the full mesh converged?\")")
+    Double abdominalPressurePa;
+
     @Option(names = "--model", paramLabel = "NAME",
             description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
@@ -254,9 +260,15 @@ public final class DiaphragmOptions {
             MeshUnits.parse(units); // validated even when unused
         }
         DiaphragmSpec.Breathing br = base.breathing();
+        if (abdominalPressurePa != null && !(abdominalPressurePa >= 0
+                && abdominalPressurePa <= DiaphragmSpec.Breathing.MAX_ABDOMINAL_PRESSURE_PA)) {
+            throw new IllegalArgumentException("--abdominal-pressure must be 0.."
+                    + DiaphragmSpec.Breathing.MAX_ABDOMINAL_PRESSURE_PA + " Pa, got " + abdominalPressurePa);
+        }
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
-                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa);
+                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa,
+                abdominalPressurePa == null ? br.abdominalPressurePa() : abdominalPressurePa);
         DiaphragmSpec.Cage cageSpec = new DiaphragmSpec.Cage(boxes, thorax,
                 contact == null ? base.cage().contact() : contact,
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,

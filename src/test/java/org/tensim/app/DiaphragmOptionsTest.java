@@ -51,6 +51,7 @@ class DiaphragmOptionsTest {
         v.put("contact-stiffness", 7e7);
         v.put("liver-support", 2e4);
         v.put("abdominal-support", 1e5);
+        v.put("abdominal-pressure", 300.0);
         v.put("model", "default");
         v.put("rib-amplitude", 0.5);
         v.put("muscle-force", 2000.0);
@@ -165,6 +166,11 @@ class DiaphragmOptionsTest {
                 () -> viaCommandLine(List.of("--abdominal-support", "-5")));
         assertTrue(bad.getMessage().contains("--abdominal-support") && bad.getMessage().contains("-5")
                 && bad.getMessage().contains("Pa/m"), bad.getMessage());
+        assertEquals(300, viaCommandLine(List.of("--abdominal-pressure", "300")).breathing().abdominalPressurePa(), 0);
+        IllegalArgumentException high = assertThrows(IllegalArgumentException.class,
+                () -> viaCommandLine(List.of("--abdominal-pressure", "9000")));
+        assertTrue(high.getMessage().contains("--abdominal-pressure") && high.getMessage().contains("9000")
+                && high.getMessage().contains("0..5000"), high.getMessage());
     }
 
     @Test

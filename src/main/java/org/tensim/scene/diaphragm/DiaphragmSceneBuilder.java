@@ -79,6 +79,9 @@ final class DiaphragmSceneBuilder {
         b.contact();
         b.columnLinks();
         b.muscle(actionLines);
+        if (spec.breathing().abdominalPressurePa() > 0) {
+            AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.breathing().abdominalPressurePa());
+        }
         b.support();
         b.damping();
         return new Parts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,

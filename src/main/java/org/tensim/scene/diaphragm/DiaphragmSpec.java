@@ -116,11 +116,27 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
      * @param ribAmplitude    factor on the quiet-breathing rib rotations, 0..3
      * @param musclePa        peak muscle action, Pa (active fibre stress or pressure); null for the muscle load's
      *                        default ({@link DiaphragmSetup#defaultMusclePa})
+     * @param abdominalPressurePa rise of the abdominal pressure on the diaphragm's lower face at end-inspiration, Pa
+     *                        (&gt;= 0; 0: none, the default): it follows the breathing level and presses the zone of
+     *                        apposition on the chest wall ({@link AbdominalPressure}; docs/thorax.md)
      */
-    public record Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa) {
+    public record Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa,
+            double abdominalPressurePa) {
+        /** Most abdominal pressure rise accepted, Pa (about 50 cmH2O, a maximal expulsive effort's order). */
+        public static final double MAX_ABDOMINAL_PRESSURE_PA = 5000;
+
         public Breathing {
             new BreathingCycle(periodS, expirationRatio); // validates
             new DiaphragmControls(ribAmplitude, musclePa == null ? 0 : musclePa); // validates
+            if (!(abdominalPressurePa >= 0 && abdominalPressurePa <= MAX_ABDOMINAL_PRESSURE_PA)) {
+                throw new IllegalArgumentException("abdominal pressure rise must be 0.." + MAX_ABDOMINAL_PRESSURE_PA
+                        + " Pa, got " + abdominalPressurePa);
+            }
+        }
+
+        /** Without an abdominal pressure rise. */
+        public Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa) {
+            this(periodS, expirationRatio, ribAmplitude, musclePa, 0);
         }
 
         /** Quiet breathing: 4 s, I:E 1:2, the quiet rib motion and the load's default muscle action. */
@@ -133,19 +149,23 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
         }
 
         public Breathing withPeriod(double s) {
-            return new Breathing(s, expirationRatio, ribAmplitude, musclePa);
+            return new Breathing(s, expirationRatio, ribAmplitude, musclePa, abdominalPressurePa);
         }
 
         public Breathing withExpirationRatio(double r) {
-            return new Breathing(periodS, r, ribAmplitude, musclePa);
+            return new Breathing(periodS, r, ribAmplitude, musclePa, abdominalPressurePa);
         }
 
         public Breathing withRibAmplitude(double a) {
-            return new Breathing(periodS, expirationRatio, a, musclePa);
+            return new Breathing(periodS, expirationRatio, a, musclePa, abdominalPressurePa);
         }
 
         public Breathing withMusclePa(Double pa) {
-            return new Breathing(periodS, expirationRatio, ribAmplitude, pa);
+            return new Breathing(periodS, expirationRatio, ribAmplitude, pa, abdominalPressurePa);
+        }
+
+        public Breathing withAbdominalPressure(double pa) {
+            return new Breathing(periodS, expirationRatio, ribAmplitude, musclePa, pa);
         }
     }
 

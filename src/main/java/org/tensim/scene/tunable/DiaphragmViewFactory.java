@@ -93,7 +93,8 @@ public final class DiaphragmViewFactory implements SceneFactory {
                 .withBreathing(new DiaphragmSpec.Breathing(period, DiaphragmViewScene.EXPIRATION_RATIO,
                         values.getOrDefault(DiaphragmViewScene.RIB_AMPLITUDE, 1.0),
                         values.getOrDefault(DiaphragmViewScene.MUSCLE_ACTION,
-                                DiaphragmSetup.defaultMusclePa(b.muscleLoad()))));
+                                DiaphragmSetup.defaultMusclePa(b.muscleLoad())),
+                        base.breathing().abdominalPressurePa()));
         try {
             DiaphragmSetup.Inputs in = inputs();
             if (painting != null) {

@@ -1,0 +1,59 @@
+package org.tensim.scene.diaphragm;
+
+import org.tensim.model.Node;
+import org.tensim.model.Topology;
+import org.tensim.model.Vec3;
+
+/**
+ * The rise of the abdominal pressure on the diaphragm's lower face during inspiration (package-private, called by
+ * the scene builder when {@link DiaphragmSpec.Breathing#abdominalPressurePa} is above 0).
+ *
+ * <p>As the dome descends it compresses the abdominal contents, and the pressure on the muscle's abdominal face
+ * rises; in the zone of apposition that pressure acts on the muscle's inner face and holds it on the lower rib
+ * cage (De Troyer and Boriek, Compr Physiol 2011, "Mechanics of the respiratory muscles"). The abdominal support's
+ * ties to rest points ({@link DiaphragmParameters#abdominalSupportPaPerM}) do not: they pull a sheet that leaves
+ * the wall back no harder than they pull it away from the wall (docs/thorax.md, "Is the full mesh converged?").
+ *
+ * <p>Every free lower-surface node v gets the force {@code f_v(t) = P s(t) A_v d_v} (N): P the pressure rise at
+ * end-inspiration (Pa), s(t) the breathing level (0 at end-expiration, 1 at end-inspiration), A_v the node's share
+ * of the lower face's area (a third of each lower triangle's, m^2), and d_v the unit vector from v to its partner on
+ * the upper face at rest, the face's inward normal across the thickness. The forces sum to P s(t) times the lower
+ * face's area projected on each direction. It is a dead load: its direction is the rest one, which the diaphragm's
+ * rotations of a few degrees in a quiet breath leave about right (a follower pressure would turn with the face).
+ */
+final class AbdominalPressure {
+    private AbdominalPressure() {
+    }
+
+    /**
+     * Applies the pressure's force laws to the builder's free lower-surface nodes; returns how many nodes carry one.
+     *
+     * @param areaM2 per vertex, its share of its own face's area (a third of each triangle's), m^2
+     */
+    static int add(Topology t, TwoSurfaces surfaces, double[] areaM2, BreathingCycle cycle, double pressurePa) {
+        int n = 0;
+        for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
+            Node node = t.node(v);
+            if (surfaces.isUpper(v) || node.isFixed() || node.isDriven()) {
+                continue;
+            }
+            Vec3 d = t.node(surfaces.partner(v)).position().minus(node.position());
+            double len = Math.sqrt(d.dot(d));
+            if (!(len > 0)) {
+                continue; // a node on the rim shared by both faces: no thickness to press across
+            }
+            double scale = pressurePa * areaM2[v] / len;
+            double fx = scale * d.x();
+            double fy = scale * d.y();
+            double fz = scale * d.z();
+            t.applyForce(node, (time, f, o) -> {
+                double s = cycle.level(time);
+                f[o] += fx * s;
+                f[o + 1] += fy * s;
+                f[o + 2] += fz * s;
+            });
+            n++;
+        }
+        return n;
+    }
+}

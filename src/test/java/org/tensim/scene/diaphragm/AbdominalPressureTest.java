@@ -1,0 +1,122 @@
+package org.tensim.scene.diaphragm;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.integrators.Integrators;
+
+/**
+ * The abdominal pressure's rise on the lower face ({@link AbdominalPressure}): on a flat shell the forces sum to
+ * the pressure times the loaded area, across the thickness towards the upper face, following the breathing level;
+ * on the double dome it holds the dome up, as a pressure under it must.
+ */
+class AbdominalPressureTest {
+    /** A flat square of n x n cells of h metres at z = 0, offset 3 mm down into a shell. */
+    private static TwoSurfaces flatShell(int n, double h) {
+        double[] xyz = new double[3 * (n + 1) * (n + 1)];
+        for (int j = 0; j <= n; j++) {
+            for (int i = 0; i <= n; i++) {
+                int v = j * (n + 1) + i;
+                xyz[3 * v] = i * h;
+                xyz[3 * v + 1] = j * h;
+            }
+        }
+        int[] tri = new int[6 * n * n];
+        int k = 0;
+        for (int j = 0; j < n; j++) {
+            for (int i = 0; i < n; i++) {
+                int a = j * (n + 1) + i;
+                int b = a + 1;
+                int c = a + n + 1;
+                int d = c + 1;
+                tri[k++] = a;
+                tri[k++] = b;
+                tri[k++] = d;
+                tri[k++] = a;
+                tri[k++] = d;
+                tri[k++] = c;
+            }
+        }
+        return TwoSurfaces.offset(new TriangleMesh(xyz, tri), 0.003);
+    }
+
+    private static double[] total(Topology t, double time) {
+        double[] f = new double[3 * t.nodeCount()];
+        for (Topology.NodalForce nf : t.forces()) {
+            nf.law().addTo(time, f, 3 * nf.node());
+        }
+        double[] sum = new double[3];
+        for (int v = 0; v < t.nodeCount(); v++) {
+            for (int c = 0; c < 3; c++) {
+                sum[c] += f[3 * v + c];
+            }
+        }
+        return sum;
+    }
+
+    @Test
+    void theForcesSumToThePressureTimesTheFreeLowerAreaUpwardsAndFollowTheBreath() {
+        int n = 8;
+        double h = 0.01;
+        TwoSurfaces s = flatShell(n, h);
+        TriangleMesh m = s.mesh();
+        Topology t = new Topology();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
+        }
+        int fixedLower = -1;
+        for (int v = 0; v < m.vertexCount() && fixedLower < 0; v++) {
+            if (!s.isUpper(v)) {
+                fixedLower = v;
+            }
+        }
+        t.node(fixedLower).fix();
+        double[] area = SurfaceGeometry.vertexAreas(m);
+        BreathingCycle cycle = BreathingCycle.quiet();
+        double p = 300;
+        int loaded = AbdominalPressure.add(t, s, area, cycle, p);
+        assertEquals(s.lowerCount() - 1, loaded, "every lower node but the fixed one, no upper node");
+        double lowerArea = n * n * h * h;
+        double expected = p * (lowerArea - area[fixedLower]);
+        double[] atPeak = total(t, cycle.inspirationS());
+        assertEquals(expected, atPeak[2], 1e-9 * expected, "towards the upper face, the pressure times the area");
+        assertEquals(0, atPeak[0], 1e-9 * expected);
+        assertEquals(0, atPeak[1], 1e-9 * expected);
+        assertEquals(0, total(t, 0)[2], 1e-12, "none at end-expiration");
+        double half = cycle.inspirationS() / 2;
+        assertEquals(expected * cycle.level(half), total(t, half)[2], 1e-9 * expected, "it follows the level");
+    }
+
+    @Test
+    void onTheDoubleDomeAPressureUnderItHoldsTheDomeUp() throws Exception {
+        double[] descent = new double[2];
+        double[] pressures = {0, 1000};
+        for (int i = 0; i < 2; i++) {
+            DiaphragmSpec spec = DiaphragmSpec.defaults().withMesh(DiaphragmSpec.Mesh.defaults().withRings(10))
+                    .withBreathing(DiaphragmSpec.Breathing.defaults().withAbdominalPressure(pressures[i]));
+            DiaphragmScene scene = DiaphragmSetup.build(spec).scene();
+            Simulation sim = scene.newSimulation();
+            sim.setIntegrator(Integrators.create("bdf2"));
+            sim.runUntil(spec.breathing().cycle().inspirationS(), 0.02);
+            int a = scene.apexNode();
+            descent[i] = sim.state().x0[3 * a + 2] - sim.state().x[3 * a + 2];
+        }
+        assertTrue(descent[0] > 0.005, "the dome descends without the pressure: " + descent[0] + " m");
+        assertTrue(descent[1] > 0 && descent[1] < descent[0] - 0.001,
+                "1 kPa under it holds it up: " + descent[1] + " m against " + descent[0] + " m");
+    }
+
+    @Test
+    void aPressureOutsideItsRangeIsRefusedWithItsValue() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> DiaphragmSpec.Breathing.defaults().withAbdominalPressure(-1));
+        assertTrue(e.getMessage().contains("-1") && e.getMessage().contains("Pa"), e.getMessage());
+        assertThrows(IllegalArgumentException.class,
+                () -> DiaphragmSpec.Breathing.defaults().withAbdominalPressure(Double.NaN));
+    }
+}
