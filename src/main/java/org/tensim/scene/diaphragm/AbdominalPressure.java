@@ -11,8 +11,8 @@ import org.tensim.model.Vec3;
  * <p>As the dome descends it compresses the abdominal contents, and the pressure on the muscle's abdominal face
  * rises; in the zone of apposition that pressure acts on the muscle's inner face and holds it on the lower rib
  * cage (De Troyer and Boriek, Compr Physiol 2011, "Mechanics of the respiratory muscles"). The abdominal support's
- * ties to rest points ({@link DiaphragmParameters#abdominalSupportPaPerM}) do not: they pull a sheet that leaves
- * the wall back no harder than they pull it away from the wall (docs/thorax.md, "Is the full mesh converged?").
+ * ties ({@link DiaphragmParameters#abdominalSupportPaPerM}) do not press it there: they pull each node back to its
+ * rest point, as hard from the wall as towards it (docs/thorax.md, "Is the full mesh converged?").
  *
  * <p>Every free lower-surface node v gets the force {@code f_v(t) = P s(t) A_v d_v} (N): P the pressure rise at
  * end-inspiration (Pa), s(t) the breathing level (0 at end-expiration, 1 at end-inspiration), A_v the node's share
