@@ -260,15 +260,16 @@ public final class DiaphragmOptions {
             MeshUnits.parse(units); // validated even when unused
         }
         DiaphragmSpec.Breathing br = base.breathing();
-        if (abdominalPressurePa != null && !(abdominalPressurePa >= 0
-                && abdominalPressurePa <= DiaphragmSpec.Breathing.MAX_ABDOMINAL_PRESSURE_PA)) {
-            throw new IllegalArgumentException("--abdominal-pressure must be 0.."
-                    + DiaphragmSpec.Breathing.MAX_ABDOMINAL_PRESSURE_PA + " Pa, got " + abdominalPressurePa);
+        if (abdominalPressurePa != null) {
+            try {
+                br = br.withAbdominalPressure(abdominalPressurePa);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("--abdominal-pressure: " + e.getMessage(), e);
+            }
         }
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
-                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa,
-                abdominalPressurePa == null ? br.abdominalPressurePa() : abdominalPressurePa);
+                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa, br.abdominalPressurePa());
         DiaphragmSpec.Cage cageSpec = new DiaphragmSpec.Cage(boxes, thorax,
                 contact == null ? base.cage().contact() : contact,
                 contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,

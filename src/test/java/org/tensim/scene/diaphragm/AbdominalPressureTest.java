@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.solver.Simulation;
@@ -16,35 +17,6 @@ import org.tensim.solver.integrators.Integrators;
  * on the double dome it holds the dome up, as a pressure under it must.
  */
 class AbdominalPressureTest {
-    /** A flat square of n x n cells of h metres at z = 0, offset 3 mm down into a shell. */
-    private static TwoSurfaces flatShell(int n, double h) {
-        double[] xyz = new double[3 * (n + 1) * (n + 1)];
-        for (int j = 0; j <= n; j++) {
-            for (int i = 0; i <= n; i++) {
-                int v = j * (n + 1) + i;
-                xyz[3 * v] = i * h;
-                xyz[3 * v + 1] = j * h;
-            }
-        }
-        int[] tri = new int[6 * n * n];
-        int k = 0;
-        for (int j = 0; j < n; j++) {
-            for (int i = 0; i < n; i++) {
-                int a = j * (n + 1) + i;
-                int b = a + 1;
-                int c = a + n + 1;
-                int d = c + 1;
-                tri[k++] = a;
-                tri[k++] = b;
-                tri[k++] = d;
-                tri[k++] = a;
-                tri[k++] = d;
-                tri[k++] = c;
-            }
-        }
-        return TwoSurfaces.offset(new TriangleMesh(xyz, tri), 0.003);
-    }
-
     private static double[] total(Topology t, double time) {
         double[] f = new double[3 * t.nodeCount()];
         for (Topology.NodalForce nf : t.forces()) {
@@ -61,9 +33,9 @@ class AbdominalPressureTest {
 
     @Test
     void theForcesSumToThePressureTimesTheFreeLowerAreaUpwardsAndFollowTheBreath() {
-        int n = 8;
-        double h = 0.01;
-        TwoSurfaces s = flatShell(n, h);
+        double halfSide = 0.04;
+        // A flat 8 x 8 square at z = 0, offset 3 mm down into a shell.
+        TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(halfSide, 8), 0.003);
         TriangleMesh m = s.mesh();
         Topology t = new Topology();
         for (int v = 0; v < m.vertexCount(); v++) {
@@ -81,7 +53,7 @@ class AbdominalPressureTest {
         double p = 300;
         int loaded = AbdominalPressure.add(t, s, area, cycle, p);
         assertEquals(s.lowerCount() - 1, loaded, "every lower node but the fixed one, no upper node");
-        double lowerArea = n * n * h * h;
+        double lowerArea = 4 * halfSide * halfSide;
         double expected = p * (lowerArea - area[fixedLower]);
         double[] atPeak = total(t, cycle.inspirationS());
         assertEquals(expected, atPeak[2], 1e-9 * expected, "towards the upper face, the pressure times the area");
