@@ -90,6 +90,26 @@ class ThoraxCommandTest {
         assertTrue(contact > 0 && contact < 0.5 * area, "contact " + contact + " of " + area);
         assertTrue(num(s, "max_contact_area_mm2") >= contact, s.toString());
         assertTrue(s.containsKey("contact_area_expiration_mm2"), s.toString());
+        // displacements.csv gives each node's distance to its nearest bone: at rest within the 15 mm contact range
+        // for every node that has one, and no deeper than the registration's overlap plus the penetration past it.
+        java.util.List<String> lines = Files.readAllLines(dir.resolve("breathing").resolve("displacements.csv"));
+        java.util.List<String> header = java.util.List.of(lines.get(0).split(","));
+        int gapAt = header.indexOf("bone_gap_m");
+        int restAt = header.indexOf("bone_gap_rest_m");
+        assertTrue(gapAt > 0 && restAt > 0, lines.get(0));
+        int withGap = 0;
+        for (String line : lines.subList(1, lines.size())) {
+            String[] c = line.split(",");
+            double gap = Double.parseDouble(c[gapAt]);
+            double rest = Double.parseDouble(c[restAt]);
+            assertEquals(Double.isNaN(gap), Double.isNaN(rest), line);
+            if (!Double.isNaN(rest)) {
+                withGap++;
+                assertTrue(rest < 0.015, line);
+                assertTrue(gap > Math.min(0, rest) - 1e-3 * (num(s, "max_penetration_past_rest_mm") + 0.01), line);
+            }
+        }
+        assertTrue(withGap > 0 && withGap < lines.size() - 1, withGap + " of " + (lines.size() - 1));
         // With the muscle off and the ribs breathing, the converged step keeps the dome's top where the ribs
         // leave it (lifted by a millimetre or so with the costal margin): the single-iteration step let it
         // sink 3.5 mm by 1.4 s under the contact's residual.

@@ -136,7 +136,7 @@ public final class DiaphragmReport {
                     + metrics.inspirationEnd() + " s");
         }
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
-        writeDisplacements(out.file("displacements.csv"), snapshots, scene.labels(), scene.diaphragmNodes());
+        writeDisplacements(out.file("displacements.csv"), snapshots, scene);
         figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
         BreathingChart.write(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
@@ -306,19 +306,24 @@ public final class DiaphragmReport {
         }
     }
 
-    private static void writeDisplacements(Path file, Snapshots snapshots, int[] labels, int nd) throws IOException {
+    private static void writeDisplacements(Path file, Snapshots snapshots, DiaphragmScene scene) throws IOException {
         double[] rest = snapshots.rest;
+        int[] labels = scene.labels();
+        int nd = scene.diaphragmNodes();
+        double[] restGap = BoneGaps.at(scene.topology(), rest, 0, nd);
         try (CsvWriter w = new CsvWriter(file, List.of("t_s", "node", "tissue", "x_m", "y_m", "z_m", "ux_m", "uy_m",
-                "uz_m"), 1000)) {
+                "uz_m", "bone_gap_m", "bone_gap_rest_m"), 1000)) {
             for (int c = 0; c < snapshots.csvTimes.length; c++) {
                 int idx = 4 + c;
                 if (snapshots.kept[idx] == null) {
                     continue; // the run stopped before this time
                 }
                 double[] x = snapshots.kept[idx];
+                double[] gap = BoneGaps.at(scene.topology(), x, snapshots.keptTime[idx], nd);
                 for (int i = 0; i < nd; i++) {
                     w.row(snapshots.keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2],
-                            x[3 * i] - rest[3 * i], x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2]);
+                            x[3 * i] - rest[3 * i], x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2],
+                            gap[i], restGap[i]);
                 }
             }
         }
