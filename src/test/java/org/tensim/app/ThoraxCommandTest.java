@@ -141,6 +141,18 @@ class ThoraxCommandTest {
             assertEquals(0.01, ((Number) row.get("dt_s")).doubleValue(), 1e-12, row.toString());
         }
         assertEquals("quadric edge 12.0 mm", ((Map<?, ?>) models.get(0)).get("model"));
+        // where the coarse model's error sits: cells with shares of it, largest first, together at most all of it
+        java.util.List<?> hot = (java.util.List<?>) ((Map<?, ?>) models.get(0)).get("error_hotspots");
+        assertTrue(hot != null && !hot.isEmpty(), models.get(0).toString());
+        double sum = 0;
+        double last = 1;
+        for (Object cell : hot) {
+            double share = ((Number) ((Map<?, ?>) cell).get("share")).doubleValue();
+            assertTrue(share > 0 && share <= last, hot.toString());
+            last = share;
+            sum += share;
+        }
+        assertTrue(sum <= 1 + 1e-9, hot.toString());
         assertTrue(Files.readAllLines(out.resolve("resolution-nodes.csv")).get(0).endsWith(
                 ",difference_mm quadric edge 12.0 mm"), "the nodes file's columns");
         r = run("diaphragm", "resolution-study", "--thorax", THORAX.toString(), "--out",

@@ -49,6 +49,11 @@ final class ResolutionAnalysis {
             row.put("wall_s_per_simulated_s", DiaphragmReport.round(r.costPerSimS(), 3));
             row.put("apex_descent_mm", DiaphragmReport.round(r.apexDescentM() * 1e3, 3));
             row.put("relative_rms_error", DiaphragmReport.round(e[i], 4));
+            if (i < family.size() - 1 && r.upperTriangles() != null) {
+                row.put("error_hotspots", ErrorHotspots.of(ref.rest(), ref.upper(), FieldTransfer.differences(
+                        ref.rest(), ref.end(), ref.upper(), r.rest(), r.end(), r.upperTriangles()),
+                        ErrorHotspots.CELL_M, ErrorHotspots.TOP));
+            }
             if (i + 2 < family.size() && e[i] > 0 && e[i + 1] > 0) {
                 row.put("order_to_next", DiaphragmReport.round(
                         Math.log(e[i] / e[i + 1]) / Math.log(r.elementSizeM() / family.get(i + 1).elementSizeM()), 3));

@@ -93,6 +93,27 @@ class TwoResolutionsTest {
             assertEquals(u * 1e3, Double.parseDouble(c[3]), 1e-6, line);
             assertEquals(1.0, Double.parseDouble(c[4]), 1e-6, line);
         }
+        // The coarse model's row says where its error sits: with the same 1 mm at every node, each cell's share is
+        // its share of the nodes, and the reference has none.
+        java.util.List<java.util.Map<String, Object>> rows = ResolutionAnalysis.rows(java.util.List.of(rc, rf));
+        @SuppressWarnings("unchecked")
+        java.util.List<java.util.Map<String, Object>> hot =
+                (java.util.List<java.util.Map<String, Object>>) rows.get(0).get("error_hotspots");
+        assertEquals(ErrorHotspots.TOP, hot.size(), hot.toString());
+        for (java.util.Map<String, Object> cell : hot) {
+            @SuppressWarnings("unchecked")
+            java.util.List<Double> xs = (java.util.List<Double>) cell.get("x_mm");
+            @SuppressWarnings("unchecked")
+            java.util.List<Double> ys = (java.util.List<Double>) cell.get("y_mm");
+            long inCell = 0;
+            for (int v = 0; v < fine.vertexCount(); v++) {
+                double x = fine.coord(v, 0) * 1e3;
+                double y = fine.coord(v, 1) * 1e3;
+                inCell += x >= xs.get(0) && x < xs.get(1) && y >= ys.get(0) && y < ys.get(1) ? 1 : 0;
+            }
+            assertEquals((double) inCell / fine.vertexCount(), (double) cell.get("share"), 1e-3, cell.toString());
+        }
+        assertTrue(!rows.get(1).containsKey("error_hotspots"), "the reference has no error");
     }
 
     /** A run of the whole mesh as upper surface, end field u = (0.01 x - 0.02 z, 0.03 y, 0.02 x) m. */
