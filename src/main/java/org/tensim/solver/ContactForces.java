@@ -384,6 +384,23 @@ public final class ContactForces {
         return sum[0];
     }
 
+    /**
+     * Each node's smallest signed distance d (m) to the hard bodies it has a pair with ({@link ContactBody#hard()}:
+     * bones, not a compliant support), at time t (s) and positions x (m), for the first {@code nodes} node ids; NaN
+     * for a node without such a pair.
+     */
+    public double[] nearestHardDistances(double t, double[] x, int nodes) {
+        double[] near = new double[nodes];
+        java.util.Arrays.fill(near, Double.NaN);
+        visit(t, x, (e, d, n) -> {
+            int i = node3[e] / 3;
+            if (i < nodes && hard[body[e]] && !(d >= near[i])) {
+                near[i] = d; // NaN compares false: the node's first pair sets it
+            }
+        });
+        return near;
+    }
+
     /** Whether each node is in contact ({@code d < g} for at least one of its pairs) at t (s) and x (m), per node id. */
     public boolean[] nodesInContact(double t, double[] x) {
         boolean[] in = new boolean[x.length / 3];

@@ -196,4 +196,44 @@ class ContactForcesTest {
             assertEquals(0, bytes, name + ": bytes allocated by 300 steps with contacts");
         }
     }
+    /**
+     * Each node's distance to its nearest hard body, for reports: the signed distance to the body in its pose at
+     * that time, the smaller over the node's pairs, a compliant body left out, NaN without a pair.
+     */
+    @Test
+    void nearestHardDistancesAreTheSignedDistancesToTheBodiesPosedAtThatTime() {
+        Topology t = new Topology();
+        for (int i = 0; i < 4; i++) {
+            t.addNode(0, 0, 0, 1);
+        }
+        // Turned by pi/4 rad/s about z and moved along y at 0.25 m/s: at t = 2 s the plane x0 = 0 of its rest frame
+        // is the world plane y = 0.5, its outside towards +y (ContactShapes.moving: x = R x0 + c).
+        int plane = t.addContactBody(new org.tensim.model.ContactBody("rib", ContactShapes.plane(1, 0, 0, 0),
+                ContactShapes.moving(Vec3.ZERO, new Vec3(0, 0.25, 0), Math.PI / 4), ContactShapes.BOUNDS, true));
+        int ball = t.addContactBody(new org.tensim.model.ContactBody("sternum", ContactShapes.sphere(0, 0, 0, 0.1),
+                RigidMotion.FIXED, ContactShapes.BOUNDS, true));
+        int liver = t.addContactBody(ContactShapes.body("liver", ContactShapes.plane(1, 0, 0, 0), RigidMotion.FIXED));
+        t.addContact(0, plane, 1, 0);
+        t.addContact(1, plane, 1, 0);
+        t.addContact(1, ball, 1, 0);
+        t.addContact(2, liver, 1, 0);
+        ContactForces c = SystemState.compile(t).contacts;
+        double[] x = {
+            3, 0.8, 1, // 0.3 m outside the plane
+            0, 0.05, 0, // 0.45 m inside the plane, 0.05 m inside the ball: the plane's is the smaller
+            -2, 0, 0, // only the liver, a compliant support: no hard body
+            1, 1, 1}; // no pair
+        double[] d = c.nearestHardDistances(2, x, 4);
+        assertEquals(0.3, d[0], 1e-12);
+        assertEquals(-0.45, d[1], 1e-12);
+        assertTrue(Double.isNaN(d[2]), "the liver is not a hard body");
+        assertTrue(Double.isNaN(d[3]), "a node without a pair has no distance");
+
+        // At rest the plane is the world plane x = 0: node 0 is 3 m outside it, node 1 0.05 m inside the ball.
+        double[] rest = c.nearestHardDistances(0, x, 4);
+        assertEquals(3, rest[0], 1e-12);
+        assertEquals(-0.05, rest[1], 1e-12);
+        // Only the first nodes asked for are reported on.
+        assertEquals(1, c.nearestHardDistances(2, x, 1).length);
+    }
 }

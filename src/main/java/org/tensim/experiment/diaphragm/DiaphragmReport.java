@@ -136,7 +136,7 @@ public final class DiaphragmReport {
                     + metrics.inspirationEnd() + " s");
         }
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
-        writeDisplacements(out.file("displacements.csv"), snapshots, scene);
+        writeDisplacements(out.file("displacements.csv"), snapshots, scene, sim.state().contacts);
         figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
         BreathingChart.write(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
         if (log != null) {
@@ -306,11 +306,16 @@ public final class DiaphragmReport {
         }
     }
 
-    private static void writeDisplacements(Path file, Snapshots snapshots, DiaphragmScene scene) throws IOException {
+    /**
+     * Every diaphragm node's position and displacement at the kept times, and its signed distance to the nearest
+     * bone it may touch then and at rest ({@code bone_gap_m}, {@code bone_gap_rest_m}; NaN without one).
+     */
+    private static void writeDisplacements(Path file, Snapshots snapshots, DiaphragmScene scene,
+            org.tensim.solver.ContactForces contacts) throws IOException {
         double[] rest = snapshots.rest;
         int[] labels = scene.labels();
         int nd = scene.diaphragmNodes();
-        double[] restGap = BoneGaps.at(scene.topology(), rest, 0, nd);
+        double[] restGap = contacts.nearestHardDistances(0, rest, nd);
         try (CsvWriter w = new CsvWriter(file, List.of("t_s", "node", "tissue", "x_m", "y_m", "z_m", "ux_m", "uy_m",
                 "uz_m", "bone_gap_m", "bone_gap_rest_m"), 1000)) {
             for (int c = 0; c < snapshots.csvTimes.length; c++) {
@@ -319,7 +324,7 @@ public final class DiaphragmReport {
                     continue; // the run stopped before this time
                 }
                 double[] x = snapshots.kept[idx];
-                double[] gap = BoneGaps.at(scene.topology(), x, snapshots.keptTime[idx], nd);
+                double[] gap = contacts.nearestHardDistances(snapshots.keptTime[idx], x, nd);
                 for (int i = 0; i < nd; i++) {
                     w.row(snapshots.keptTime[idx], i, labels[i], x[3 * i], x[3 * i + 1], x[3 * i + 2],
                             x[3 * i] - rest[3 * i], x[3 * i + 1] - rest[3 * i + 1], x[3 * i + 2] - rest[3 * i + 2],

@@ -24,7 +24,12 @@ final class FieldTransfer {
      */
     static double relativeRms(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] coarseRest,
             double[] coarseEnd, int[] coarseTriangles) {
-        double[] diff = differences(fineRest, fineEnd, fineUpper, coarseRest, coarseEnd, coarseTriangles);
+        return relativeRms(fineRest, fineEnd, fineUpper,
+                differences(fineRest, fineEnd, fineUpper, coarseRest, coarseEnd, coarseTriangles));
+    }
+
+    /** As above, from the differences {@link #differences} gave (3 per fine node, m). */
+    static double relativeRms(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] diff) {
         double num = 0;
         double den = 0;
         for (int i = 0; i < fineUpper.length; i++) {

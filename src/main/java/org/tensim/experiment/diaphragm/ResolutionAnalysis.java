@@ -34,8 +34,22 @@ final class ResolutionAnalysis {
         ResolutionStudy.Run ref = family.get(family.size() - 1);
         List<Map<String, Object>> rows = new ArrayList<>();
         double[] e = new double[family.size()];
+        List<List<Map<String, Object>>> hotspots = new ArrayList<>();
         for (int i = 0; i < family.size(); i++) {
-            e[i] = i == family.size() - 1 ? 0 : ResolutionStudy.error(ref, family.get(i));
+            ResolutionStudy.Run r = family.get(i);
+            hotspots.add(null);
+            if (i == family.size() - 1) {
+                e[i] = 0;
+            } else if (r.upperTriangles() != null) {
+                // One transfer of the coarse field (the costly part) for the error and where it sits.
+                double[] diff = FieldTransfer.differences(ref.rest(), ref.end(), ref.upper(), r.rest(), r.end(),
+                        r.upperTriangles());
+                e[i] = FieldTransfer.relativeRms(ref.rest(), ref.end(), ref.upper(), diff);
+                hotspots.set(i, ErrorHotspots.of(ref.rest(), ref.upper(), diff, ErrorHotspots.CELL_M,
+                        ErrorHotspots.TOP));
+            } else {
+                e[i] = ResolutionStudy.error(ref, r);
+            }
         }
         for (int i = 0; i < family.size(); i++) {
             ResolutionStudy.Run r = family.get(i);
@@ -49,10 +63,8 @@ final class ResolutionAnalysis {
             row.put("wall_s_per_simulated_s", DiaphragmReport.round(r.costPerSimS(), 3));
             row.put("apex_descent_mm", DiaphragmReport.round(r.apexDescentM() * 1e3, 3));
             row.put("relative_rms_error", DiaphragmReport.round(e[i], 4));
-            if (i < family.size() - 1 && r.upperTriangles() != null) {
-                row.put("error_hotspots", ErrorHotspots.of(ref.rest(), ref.upper(), FieldTransfer.differences(
-                        ref.rest(), ref.end(), ref.upper(), r.rest(), r.end(), r.upperTriangles()),
-                        ErrorHotspots.CELL_M, ErrorHotspots.TOP));
+            if (hotspots.get(i) != null) {
+                row.put("error_hotspots", hotspots.get(i));
             }
             if (i + 2 < family.size() && e[i] > 0 && e[i + 1] > 0) {
                 row.put("order_to_next", DiaphragmReport.round(
