@@ -46,8 +46,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--realtime",
             description = "run the real-time setting (bdf2 at 25 ms with the fibres' load: the real-time study's"
-                    + " choice on the default mesh, its error against RK2 in docs/performance.md), on all cores; the"
-                    + " summary names it (realtime_setting)")
+                    + " choice on the default mesh, its error against RK2 in docs/performance.md; in a thorax "
+                    + "bdf2-contact-realtime, docs/thorax.md), on all cores; the summary names it (realtime_setting)")
     boolean realtime;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
@@ -97,14 +97,12 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 throw usage("--realtime chooses the integrator and the step itself: leave out --integrator, --dt and"
                         + " --cg-tolerance");
             }
-            if (sceneSpec.cage().thorax() != null) {
-                throw usage("--realtime was measured on the double dome (with the band or --cage surfaces); in a"
-                        + " thorax its step (1 Newton x "
-                        + org.tensim.solver.prefactored.PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS
-                        + " CG at 25 ms) lags the converged one far (docs/thorax.md):"
-                        + " use --integrator bdf2 --dt 0.005 --newton 3 --cg-iterations 20 with --thorax");
+            try {
+                setting = RealTimeSetting.forScene(sceneSpec.boundary().muscleLoad(),
+                        sceneSpec.cage().thorax() != null && sceneSpec.cage().contact());
+            } catch (IllegalArgumentException e) {
+                throw usage("--realtime: " + e.getMessage());
             }
-            setting = RealTimeSetting.forMuscleLoad(sceneSpec.boundary().muscleLoad());
             chosen = setting.newIntegrator();
             dt = setting.dtS();
         }
@@ -145,7 +143,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
                                 built.scene().topology().springs().size());
         if (setting != null) {
             System.out.println("realtime: " + setting.describe()
-                    + (scene.mesh == null ? "" : "; this mesh (" + scene.mesh + ") was not measured"));
+                    + (scene.mesh == null ? ""
+                            : setting.equals(RealTimeSetting.THORAX)
+                                    ? "; measured on the shared BodyParts3D diaphragm (diaphragm realtime-study --thorax"
+                                            + " measures this mesh)"
+                                    : "; this mesh (" + scene.mesh + ") was not measured"));
         }
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         // muscle_force_pa is an active fibre stress or a pressure: the load says which.

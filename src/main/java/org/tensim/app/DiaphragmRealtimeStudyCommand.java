@@ -6,6 +6,9 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.tensim.cli.OutFolderOption;
 import org.tensim.experiment.diaphragm.RealTimeStudy;
+import org.tensim.experiment.diaphragm.ThoraxRealTimeStudy;
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
@@ -20,7 +23,9 @@ import picocli.CommandLine.ParameterException;
 @Command(name = "realtime-study", mixinStandardHelpOptions = true,
         description = {"The generated double dome at 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler and bdf2",
             "at several steps, one inspiration each: error against the paper's configuration against the real-time",
-            "factor, and the fastest setting within 5 %% of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md."})
+            "factor, and the fastest setting within 5 %% of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md.",
+            "With --thorax: the real-time setting on the mesh in the thorax against the converged contact step at",
+            "5 ms, and its step's cost with and without contact (realtime.csv, .json; docs/thorax.md)."})
 public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
@@ -53,9 +58,15 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
-        if (s.cage().boneSurfaces() || s.mesh().labels() != null || scene.mesh != null) {
-            throw usage("the real-time study runs the generated double dome held by its band at its --study-rings:"
-                    + " leave out --mesh, --thorax, --cage surfaces and --labels");
+        boolean thorax = s.cage().thorax() != null;
+        if (thorax && (studyRings != null || !s.cage().contact())) {
+            throw usage("with --thorax the real-time study runs the one scene given, with contact: leave out"
+                    + (studyRings != null ? " --study-rings" : " --no-contact"));
+        }
+        if (!thorax && (s.cage().boneSurfaces() || s.mesh().labels() != null || scene.mesh != null)) {
+            throw usage("the real-time study runs the generated double dome held by its band at its --study-rings,"
+                    + " or a mesh in a thorax (--thorax): leave out --mesh, --cage surfaces and --labels, or add"
+                    + " --thorax");
         }
         java.util.regex.Pattern only;
         try {
@@ -63,6 +74,20 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
         } catch (java.util.regex.PatternSyntaxException e) {
             throw usage("--study-configs is not a regular expression: " + e.getDescription() + " in '" + studyConfigs
                     + "'");
+        }
+        if (thorax) {
+            final java.util.regex.Pattern configs = only;
+            return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, run -> {
+                run.file("realtime.csv");
+                run.file("realtime.json");
+                DiaphragmSetup.Inputs in = DiaphragmSetup.read(s);
+                DiaphragmScene withContact = DiaphragmSetup.build(in, s, s.newControls()).scene();
+                DiaphragmSpec off = s.withCage(s.cage().withContact(false));
+                DiaphragmScene without = DiaphragmSetup.build(in, off, off.newControls()).scene();
+                Map<String, Object> r = ThoraxRealTimeStudy.run(withContact, without, in.source(), s, configs,
+                        seconds, folder, System.out);
+                System.out.println(Json.line(run.finish(RunStatus.OK, r)));
+            });
         }
         return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, run -> {
             for (String n : OUTPUTS) {

@@ -192,6 +192,63 @@ class ThoraxCommandTest {
         assertTrue(apex > 3, "the dome descends: " + apex + " mm");
     }
 
+    /**
+     * {@code --realtime} in the thorax runs its own setting ({@code bdf2-contact-realtime}: 2 Newton x 10 CG at 25 ms,
+     * the links tied in the preconditioner), and the real-time study with {@code --thorax} compares it with the
+     * converged contact step at 5 ms and times it with and without contact, on the coarse mesh.
+     */
+    @Test
+    void realTimeAndItsStudyRunInTheThorax() throws Exception {
+        assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
+        assumeTrue(Files.isRegularFile(MESH), MESH + " not found");
+        Path mesh = coarseMesh();
+        Path out = dir.resolve("rt");
+        String[] r = run("diaphragm", "--mesh", mesh.toString(), "--units", "mm", "--thorax", THORAX.toString(),
+                "--realtime", "--seconds", "1.4", "--vtk-per-cycle", "0", "--out", out.toString());
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertEquals("ok", s.get("status"));
+        assertEquals(2, ((Number) s.get("newton_iterations")).intValue(), s.toString());
+        assertEquals(10, ((Number) s.get("cg_iterations_cap")).intValue(), s.toString());
+        Map<?, ?> setting = (Map<?, ?>) s.get("realtime_setting");
+        assertTrue(setting.get("link_coupling") instanceof Number, setting.toString());
+        assertEquals(org.tensim.solver.integrators.Integrators.CONTACT_REAL_TIME, setting.get("integrator"));
+        assertEquals(1.0, ((Number) setting.get("link_coupling")).doubleValue(), setting.toString());
+        assertTrue(num(s, "max_penetration_past_rest_mm") < 1, s.toString());
+        assertTrue(num(s, "right_dome_descent_mm") > 3, s.toString());
+
+        Path study = dir.resolve("rt-study");
+        r = run("diaphragm", "realtime-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
+                THORAX.toString(), "--seconds", "0.2", "--study-configs", "contact-realtime", "--out",
+                study.toString());
+        assertEquals("0", r[0], r[2]);
+        Map<String, Object> j = Json.readMap(study.resolve("realtime.json"));
+        java.util.List<?> rows = (java.util.List<?>) j.get("runs");
+        java.util.List<Object> labels = new java.util.ArrayList<>();
+        for (Object row : rows) {
+            labels.add(((Map<?, ?>) row).get("config"));
+        }
+        assertEquals(java.util.List.of("bdf2-contact at 5 ms / 2 threads (reference)",
+                "bdf2-contact-realtime at 25 ms / 2 threads", "bdf2-contact-realtime at 25 ms without tied links / 2"
+                        + " threads", "bdf2-contact-realtime at 25 ms without contact / 2 threads"), labels);
+        Map<?, ?> ref = (Map<?, ?>) rows.get(0);
+        assertTrue(ref.get("error_vs_reference") instanceof Number, ref.toString());
+        assertEquals(0.0, ((Number) ref.get("error_vs_reference")).doubleValue(), ref.toString());
+        Map<?, ?> rt = (Map<?, ?>) j.get("realtime_setting");
+        for (String key : new String[] {"error_vs_reference", "worst_error_vs_reference", "ms_per_step",
+            "ms_per_step_without_contact", "realtime_factor", "realtime_factor_without_contact"}) {
+            assertTrue(rt.get(key) instanceof Number, key + " " + j);
+            double v = ((Number) rt.get(key)).doubleValue();
+            assertTrue(Double.isFinite(v) && v >= 0, key + " " + rt);
+        }
+        assertTrue(((Number) rt.get("ms_per_step")).doubleValue() > 0, rt.toString());
+        assertEquals(5, Files.readAllLines(study.resolve("realtime.csv")).size(), "a header and four rows");
+        r = run("diaphragm", "realtime-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
+                THORAX.toString(), "--study-rings", "10,14", "--out", dir.resolve("rings").toString());
+        assertTrue(r[2].contains("with --thorax the real-time study runs the one scene given, with contact: leave out"
+                + " --study-rings"), r[2]);
+    }
+
     @Test
     void thoraxOptionsAreCheckedWithClearMessages() {
         String[] r = run("diaphragm", "--model", "paper", "--tissue-model", "springs", "--out",
@@ -203,11 +260,13 @@ class ThoraxCommandTest {
         r = run("diaphragm", "--thorax", dir.toString(), "--boxes", dir.resolve("x.json").toString(), "--out",
                 dir.resolve("c").toString());
         assertTrue(r[2].contains("not both"), r[2]);
-        r = run("diaphragm", "--thorax", dir.toString(), "--realtime", "--out", dir.resolve("f").toString());
-        assertTrue(r[2].contains("--realtime was measured on the double dome"), r[2]);
+        r = run("diaphragm", "--thorax", dir.toString(), "--realtime", "--muscle-load", "pressure", "--out",
+                dir.resolve("f").toString());
+        assertTrue(r[2].contains("--realtime: no real-time setting was measured in a thorax with the pressure load;"
+                + " use --muscle-load fibres"), r[2]);
         // The swept cage has bone surfaces and contact too: the band's studies do not take it.
         r = run("diaphragm", "realtime-study", "--cage", "surfaces", "--out", dir.resolve("i").toString());
-        assertTrue(r[2].contains("leave out --mesh, --thorax, --cage surfaces and --labels"), r[2]);
+        assertTrue(r[2].contains("leave out --mesh, --cage surfaces and --labels, or add --thorax"), r[2]);
         r = run("diaphragm", "resolution-study", "--cage", "surfaces", "--out", dir.resolve("j").toString());
         assertTrue(r[2].contains("--cage surfaces cannot go with the resolution study"), r[2]);
         r = run("diaphragm", "--newton", "3", "--out", dir.resolve("g").toString());

@@ -38,6 +38,15 @@ public record RealTimeSetting(String integrator, double dtS) {
      */
     public static final RealTimeSetting PRESSURE = new RealTimeSetting(Integrators.DEFAULT, 0);
 
+    /**
+     * In a thorax (bone surfaces and sliding contact) with the fibres' load: {@link Integrators#CONTACT_REAL_TIME}
+     * at {@link Integrators#REAL_TIME_STEP_S}, chosen by the thorax's real-time study
+     * ({@link ThoraxRealTimeStudy}: within {@link RealTimeStudy#TOLERANCE} of the converged contact step at 5 ms on
+     * the BodyParts3D diaphragm in the shared thorax; docs/thorax.md, "Speed").
+     */
+    public static final RealTimeSetting THORAX = new RealTimeSetting(Integrators.CONTACT_REAL_TIME,
+            Integrators.REAL_TIME_STEP_S);
+
     /** The setting must name a setup of the catalogue and a step of 0 or more. */
     public RealTimeSetting {
         Integrators.choice(integrator);
@@ -49,6 +58,23 @@ public record RealTimeSetting(String integrator, double dtS) {
     /** The setting for a muscle-load model: {@link #FIBRES} for the fibres, {@link #PRESSURE} for the others. */
     public static RealTimeSetting forMuscleLoad(BoundaryConditions.MuscleLoad model) {
         return model == BoundaryConditions.MuscleLoad.FIBRES ? FIBRES : PRESSURE;
+    }
+
+    /**
+     * The setting for a scene: {@link #THORAX} in a thorax with contact and the fibres' load, else
+     * {@link #forMuscleLoad}.
+     *
+     * @throws IllegalArgumentException in a thorax with contact and another load (no setting was measured there)
+     */
+    public static RealTimeSetting forScene(BoundaryConditions.MuscleLoad model, boolean thoraxWithContact) {
+        if (!thoraxWithContact) {
+            return forMuscleLoad(model);
+        }
+        if (model != BoundaryConditions.MuscleLoad.FIBRES) {
+            throw new IllegalArgumentException("no real-time setting was measured in a thorax with the "
+                    + BoundaryConditions.name(model) + " load; use --muscle-load fibres");
+        }
+        return THORAX;
     }
 
     /** A new integrator of this setting. */
@@ -64,6 +90,11 @@ public record RealTimeSetting(String integrator, double dtS) {
                         ? String.format(Locale.ROOT, "%s at %.0f ms (%d Newton x %d CG iterations a step)", integrator,
                                 1e3 * dtS, b.newtonIterations(), b.krylovIterations())
                         : String.format(Locale.ROOT, "%s at %.0f ms", integrator, 1e3 * dtS);
+        if (this.equals(THORAX)) {
+            return String.format(Locale.ROOT, "%s, links tied in the preconditioner: the thorax's real-time study's"
+                    + " (diaphragm realtime-study --thorax) setting, chosen within %.0f %% of the converged contact"
+                    + " step at 5 ms (its measured error: docs/thorax.md)", what, 100 * RealTimeStudy.TOLERANCE);
+        }
         return String.format(Locale.ROOT, "%s: the real-time study's (diaphragm realtime-study) setting for the"
                 + " default mesh, chosen within %.0f %% of RK2 (its measured error: docs/performance.md)", what,
                 100 * RealTimeStudy.TOLERANCE);
@@ -77,8 +108,13 @@ public record RealTimeSetting(String integrator, double dtS) {
         if (newIntegrator() instanceof PrefactoredBdf2 b) {
             m.put("newton_iterations_per_step", b.newtonIterations());
             m.put("cg_iterations_per_newton_iteration", b.krylovIterations());
+            m.put("link_coupling", b.linkCoupling());
         }
-        m.put("tolerance_against_rk2", RealTimeStudy.TOLERANCE);
+        if (this.equals(THORAX)) {
+            m.put("tolerance_against_converged_contact_step", RealTimeStudy.TOLERANCE);
+        } else {
+            m.put("tolerance_against_rk2", RealTimeStudy.TOLERANCE);
+        }
         return m;
     }
 }

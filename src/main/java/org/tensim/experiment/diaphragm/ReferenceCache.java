@@ -39,6 +39,15 @@ final class ReferenceCache {
     }
 
     /**
+     * Where the samples of a scene's reference other than the double dome's RK2 are kept ({@link ThoraxRealTimeStudy}):
+     * named by the configuration, the scene's size, the step and a hash of the whole scene definition.
+     */
+    static Path file(Path out, String config, DiaphragmScene scene, Object definition, double dt) {
+        return out.resolve(String.format(Locale.ROOT, "%s-reference-%dnodes-dt%.6e-every%.3fs-%08x.bin", config,
+                scene.topology().nodeCount(), dt, StudyRun.SAMPLE_S, definition.toString().hashCode()));
+    }
+
+    /**
      * The first {@code count} samples in {@code file} if it holds them at the given times (within one RK2
      * step), else null.
      */

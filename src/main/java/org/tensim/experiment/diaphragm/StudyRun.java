@@ -55,12 +55,23 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
      */
     static StudyRun reference(DiaphragmScene scene, int rings, RealTimeStudy.Config c, double seconds, Path cache,
             java.io.PrintStream log) throws java.io.IOException {
+        return reference(scene, "double dome", rings + " rings, " + c.label(), c, seconds, cache, log);
+    }
+
+    /** As the overload above for a scene of the given family, the run named by {@code label}. */
+    static StudyRun reference(DiaphragmScene scene, String family, RealTimeStudy.Config c, double seconds, Path cache,
+            java.io.PrintStream log) throws java.io.IOException {
+        return reference(scene, family, c.label(), c, seconds, cache, log);
+    }
+
+    private static StudyRun reference(DiaphragmScene scene, String family, String label, RealTimeStudy.Config c,
+            double seconds, Path cache, java.io.PrintStream log) throws java.io.IOException {
         int nd = scene.diaphragmNodes();
         int apex = scene.apexNode();
         double[] times = sampleTimes(seconds);
         List<double[]> cached = ReferenceCache.load(cache, nd, apex, times, scene.recommendedTimeStep());
         if (cached == null) {
-            StudyRun r = simulate(scene, rings, c, seconds);
+            StudyRun r = simulate(scene, family, label, c, seconds);
             if (!r.diverged()) {
                 ReferenceCache.save(cache, r, apex);
             }
@@ -70,7 +81,7 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
             log.println("reference samples of " + c.label() + " from " + cache + "; its speed from a " + SPEED_SPAN_S
                     + " s run");
         }
-        StudyRun timed = simulate(scene, rings, c, SPEED_SPAN_S);
+        StudyRun timed = simulate(scene, family, label, c, SPEED_SPAN_S);
         double[] apexMm = new double[times.length];
         for (int s = 0; s < times.length; s++) {
             apexMm[s] = -1e3 * cached.get(s)[3 * apex + 2];
@@ -87,8 +98,14 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
                 apexMm, times);
     }
 
-    /** Runs one configuration for {@code seconds}. */
+    /** Runs one configuration for {@code seconds} on the generated double dome of {@code rings} rings. */
     static StudyRun simulate(DiaphragmScene scene, int rings, RealTimeStudy.Config c, double seconds) {
+        return simulate(scene, "double dome", rings + " rings, " + c.label(), c, seconds);
+    }
+
+    /** Runs one configuration for {@code seconds}; family and label name the run ({@link ResolutionStudy.Run}). */
+    static StudyRun simulate(DiaphragmScene scene, String family, String label, RealTimeStudy.Config c,
+            double seconds) {
         Simulation sim = scene.newSimulation();
         Integrator in = c.integrator().get();
         sim.setIntegrator(in);
@@ -135,7 +152,7 @@ record StudyRun(ResolutionStudy.Run run, double realtimeWall, double realtimeCpu
         for (int v = 0; v < nd; v++) {
             upper[v] = scene.surfaces().isUpper(v);
         }
-        ResolutionStudy.Run r = new ResolutionStudy.Run("double dome", rings + " rings, " + c.label(),
+        ResolutionStudy.Run r = new ResolutionStudy.Run(family, label,
                 scene.topology().nodeCount(), scene.topology().springs().size(), wall / 1e9 / simulated, dt,
                 Arrays.copyOf(sim.state().x0, 3 * nd), Arrays.copyOf(sim.state().x, 3 * nd), upper);
         return new StudyRun(r, simulated / (wall / 1e9), cpuTimed ? simulated / (cpu / 1e9) : Double.NaN,

@@ -22,7 +22,7 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * integrator's own {@link Integrator#name()}. Studies and tests enumerate these, so a new method is tested
  * at once;</li>
  * <li><b>variants</b>: a method with other settings, under a name of its own:
- * {@value #REAL_TIME_IMPLICIT}, {@value #LARGE_STEP_ACCURATE} and {@value #CONTACT}.</li>
+ * {@value #REAL_TIME_IMPLICIT}, {@value #LARGE_STEP_ACCURATE}, {@value #CONTACT} and {@value #CONTACT_REAL_TIME}.</li>
  * </ul>
  * {@link #create(String)} and {@link #choice(String)} accept both kinds ({@link #choiceNames()}). Adding a
  * method is one line here and one class; adding a variant is one line here.
@@ -69,6 +69,18 @@ public final class Integrators {
     /** The step the thorax was measured stable and converged at with {@link #CONTACT}, s. */
     public static final double CONTACT_STEP_S = 0.005;
 
+    /**
+     * The real-time setting where stiff contact acts (a diaphragm sliding on bone surfaces, docs/thorax.md, "Speed"):
+     * {@link #REAL_TIME} at {@link #REAL_TIME_STEP_S} with {@link #CONTACT_REAL_TIME_NEWTON} Newton iterations of up
+     * to {@link #CONTACT_REAL_TIME_KRYLOV} CG iterations and the rigid links tied in the preconditioner
+     * ({@link PrefactoredBdf2#CONTACT_LINK_COUPLING}).
+     */
+    public static final String CONTACT_REAL_TIME = "bdf2-contact-realtime";
+    /** Newton iterations per step of {@link #CONTACT_REAL_TIME}. */
+    public static final int CONTACT_REAL_TIME_NEWTON = 2;
+    /** CG iterations per Newton iteration of {@link #CONTACT_REAL_TIME}. */
+    public static final int CONTACT_REAL_TIME_KRYLOV = 10;
+
     private static final Map<String, Supplier<Integrator>> METHODS = new LinkedHashMap<>();
     private static final Map<String, IntegratorChoice> BY_NAME = new LinkedHashMap<>();
 
@@ -95,6 +107,10 @@ public final class Integrators {
         add(new IntegratorChoice(CONTACT, "bdf2, 3 Newton x 20 CG (contact with bone surfaces)",
                 () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
                         .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));
+        add(new IntegratorChoice(CONTACT_REAL_TIME, "bdf2, 2 Newton x 10 CG, links tied in the preconditioner (contact"
+                + " with bone surfaces at 25 ms)", () -> new PrefactoredBdf2().setNewtonIterations(CONTACT_REAL_TIME_NEWTON)
+                        .setKrylovIterations(CONTACT_REAL_TIME_KRYLOV)
+                        .setLinkCoupling(PrefactoredBdf2.CONTACT_LINK_COUPLING)));
     }
 
     private Integrators() {

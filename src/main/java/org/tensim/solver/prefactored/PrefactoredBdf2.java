@@ -62,12 +62,18 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public static final int CONTACT_NEWTON_ITERATIONS = 3;
     /** Cap on CG iterations per Newton iteration where stiff contact acts (see {@link #CONTACT_NEWTON_ITERATIONS}). */
     public static final int CONTACT_KRYLOV_ITERATIONS = 20;
+    /**
+     * Link coupling of the real-time step where stiff contact acts ({@link #setLinkCoupling}): the best of 0.3, 1, 10
+     * and 100 on the BodyParts3D diaphragm in the shared thorax at 25 ms (docs/thorax.md, "Speed").
+     */
+    public static final double CONTACT_LINK_COUPLING = 1;
     /** Relative residual (dimensionless) at which CG stops. */
     public static final double KRYLOV_TOLERANCE = 1e-3;
 
     private int newtonIterations = DEFAULT_NEWTON_ITERATIONS;
     private int krylovIterations = DEFAULT_KRYLOV_ITERATIONS;
     private final double krylovTolerance = KRYLOV_TOLERANCE;
+    private double linkCoupling;
     private Executor executor;
     private KernelSharing sharing = KernelSharing.MEASURED;
 
@@ -122,6 +128,31 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     /** Newton iterations per step. */
     public int newtonIterations() {
         return newtonIterations;
+    }
+
+    /**
+     * Ties the rigid links' ends in the preconditioner's matrix, each by {@code c} times the larger diagonal entry of
+     * its two ends (dimensionless, &gt;= 0; default 0, the matrix of Liu et al. alone): CG works in the links'
+     * tangent space, and a factor that ties their ends approximates the inverse there better where the links carry
+     * the shell's thickness and nothing else holds the sheet (a diaphragm on bone surfaces; see
+     * {@link PrefactoredMatrix}). It changes the preconditioner only: CG converged to its tolerance gives the same
+     * step. A change after the first step takes effect at the next step, with a new factor and a new start of the
+     * BDF2 history.
+     */
+    public PrefactoredBdf2 setLinkCoupling(double c) {
+        if (!(c >= 0) || !Double.isFinite(c)) {
+            throw new IllegalArgumentException("BDF2 link coupling must be a finite number >= 0, got " + c);
+        }
+        if (c != linkCoupling) {
+            linkCoupling = c;
+            s = null; // the pattern changes: a new matrix at the next step
+        }
+        return this;
+    }
+
+    /** The rigid links' coupling in the preconditioner (see {@link #setLinkCoupling}). */
+    public double linkCoupling() {
+        return linkCoupling;
     }
 
     /** Cap on CG iterations per Newton iteration. */
@@ -327,7 +358,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
             return;
         }
         s = st;
-        matrix = new PrefactoredMatrix(st);
+        matrix = new PrefactoredMatrix(st, linkCoupling);
         if (executor != null) {
             matrix.setExecutor(executor);
         }

@@ -38,6 +38,17 @@ import org.tensim.solver.SystemState;
  * {@code beta^2 k n n^T} is in the Newton-Krylov products ({@link SpringJacobian}), so CG converges to the true
  * step either way.
  *
+ * <p>With a link coupling c &gt; 0 ({@link PrefactoredBdf2#setLinkCoupling}) each rigid link (a, b) adds
+ * {@code w (e_a - e_b)(e_a - e_b)^T}, {@code w = c max(A_aa, A_bb)} from the diagonal assembled before the links:
+ * CG works in the links' tangent space, with the preconditioner {@code P C^-1 P^T}
+ * ({@link org.tensim.solver.links.LinkTangent}). A factor that does not know the links answers a residual partly
+ * with motion along them, which the projection then removes, and the rest of its answer is that of a shell whose
+ * faces may approach each other; tying the links' ends brings {@code C^-1} towards the inverse within the tangent
+ * space (exactly so for a penalty along each link's direction growing without bound, which a scalar factor cannot
+ * carry: it ties the ends in all three directions). On a diaphragm held at its origins and sliding on bone
+ * (docs/thorax.md, "Speed") it takes the step at 25 ms from 64 % of the converged step to 14 % for the same
+ * iterations; on the double dome held by its band it costs accuracy (docs/performance.md), so it is 0 by default.
+ *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
  * new matrix is factored on a background thread while the steps keep the old factor; the new
@@ -70,6 +81,8 @@ final class PrefactoredMatrix {
     }
 
     private final SystemState s;
+    /** The links' coupling c (dimensionless), see the class comment. */
+    private final double linkCoupling;
     /** Free-node index of each node, -1 for fixed and driven nodes. */
     final int[] freeIndex;
     /** Node id of each free node. */
@@ -84,7 +97,13 @@ final class PrefactoredMatrix {
     private long backgroundFactorisations;
 
     PrefactoredMatrix(SystemState s) {
+        this(s, 0);
+    }
+
+    /** The matrix of a state, with the rigid links' ends tied by {@code linkCoupling} (0 for none; see the class comment). */
+    PrefactoredMatrix(SystemState s, double linkCoupling) {
         this.s = s;
+        this.linkCoupling = linkCoupling;
         freeIndex = new int[s.nodeCount];
         int nf = 0;
         for (int i = 0; i < s.nodeCount; i++) {
@@ -180,7 +199,8 @@ final class PrefactoredMatrix {
     private Triplets assemble(double beta, double[] k, double[] c, double cv) {
         int nf = freeNodes.length;
         int ns = s.springCount();
-        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count());
+        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count()
+                + (linkCoupling > 0 ? 4 * s.linkA.length : 0));
         for (int j = 0; j < nf; j++) {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
         }
@@ -228,7 +248,35 @@ final class PrefactoredMatrix {
                 t.add(a, a, beta * beta * s.contacts.stiffness(e) / 3);
             }
         }
+        if (linkCoupling > 0) {
+            addLinks(t);
+        }
         return t;
+    }
+
+    /** The rigid links' ends tied, each by {@link #linkCoupling} times the larger diagonal entry of its two ends. */
+    private void addLinks(Triplets t) {
+        double[] diag = new double[freeNodes.length];
+        for (int q = 0; q < t.count; q++) {
+            if (t.rows[q] == t.cols[q]) {
+                diag[t.rows[q]] += t.vals[q];
+            }
+        }
+        for (int e = 0; e < s.linkA.length; e++) {
+            int a = freeIndex[s.linkA[e]];
+            int b = freeIndex[s.linkB[e]];
+            double w = linkCoupling * Math.max(a >= 0 ? diag[a] : 0, b >= 0 ? diag[b] : 0);
+            if (a >= 0) {
+                t.add(a, a, w);
+            }
+            if (b >= 0) {
+                t.add(b, b, w);
+            }
+            if (a >= 0 && b >= 0) {
+                t.add(a, b, -w);
+                t.add(b, a, -w);
+            }
+        }
     }
 
     /** The shear elements' sliding modes (see the class comment). */

@@ -50,7 +50,8 @@ class IntegratorsTest {
     void catalogueHoldsTheMethodsAndTheirNamedVariants() {
         List<String> all = Integrators.choiceNames();
         assertEquals(Integrators.names(), all.subList(0, Integrators.names().size()));
-        assertEquals(List.of(Integrators.REAL_TIME_IMPLICIT, Integrators.LARGE_STEP_ACCURATE, Integrators.CONTACT),
+        assertEquals(List.of(Integrators.REAL_TIME_IMPLICIT, Integrators.LARGE_STEP_ACCURATE, Integrators.CONTACT,
+                Integrators.CONTACT_REAL_TIME),
                 all.subList(Integrators.names().size(), all.size()));
         List<IntegratorChoice> menu = Integrators.choices();
         assertEquals(Integrators.DEFAULT, menu.get(0).name(), "the paper's first");
@@ -73,6 +74,14 @@ class IntegratorsTest {
                 assertEquals("bdf2", b.name());
                 assertEquals(3, b.newtonIterations());
                 assertEquals(20, b.krylovIterations());
+                assertEquals(0, b.linkCoupling());
+            } else if (c.name().equals(Integrators.CONTACT_REAL_TIME)) {
+                org.tensim.solver.prefactored.PrefactoredBdf2 b =
+                        (org.tensim.solver.prefactored.PrefactoredBdf2) Integrators.create(c.name());
+                assertEquals("bdf2", b.name());
+                assertEquals(2, b.newtonIterations());
+                assertEquals(10, b.krylovIterations());
+                assertEquals(1, b.linkCoupling());
             } else {
                 assertEquals(c.name(), c.create().name());
             }

@@ -38,6 +38,16 @@ class PrefactoredAllocationTest {
         assertNoAllocation(sim, threads, 0.02, 500);
     }
 
+    /** With the rigid links tied in the preconditioner (the thorax's real-time setting). */
+    @Test
+    void bdf2StepWithTiedLinksAllocatesNothing() throws Exception {
+        Simulation sim = DiaphragmSetup.generated(8, null, DiaphragmParameters.defaults(), new BreathingCycle(4, 2),
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
+        sim.setIntegrator(new PrefactoredBdf2().setLinkCoupling(PrefactoredBdf2.CONTACT_LINK_COUPLING)
+                .setNewtonIterations(2).setKrylovIterations(8));
+        assertNoAllocation(sim, 2, 0.025, 300);
+    }
+
     /**
      * A diaphragm large enough for the fibres' and shear elements' products and the solves to be shared among
      * the threads ({@link NodeParts}, {@link SubtreeSolve}).
