@@ -190,9 +190,11 @@ public final class GuiCommand implements Callable<Integer> {
 
     /**
      * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean, boolean)}; with {@code contact} (a
-     * thorax of bone surfaces) starting from the step converged for contact ({@link Integrators#CONTACT}), which
-     * takes precedence over realTime: the real-time step lags far there (docs/thorax.md). The swept cage
-     * ({@code --cage surfaces}) opens at the real-time step, which holds there with the contact projection.
+     * thorax of bone surfaces) starting from the thorax's real-time setting ({@link Integrators#CONTACT_REAL_TIME} at
+     * {@link Integrators#REAL_TIME_STEP_S}, within 5 % of the step converged for contact, docs/thorax.md), whether
+     * or not realTime is asked: the double dome's real-time step lags far there. The swept cage
+     * ({@code --cage surfaces}) opens at the double dome's real-time step, which holds there with the contact
+     * projection.
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime, boolean loadGiven, boolean contact) throws Exception {
@@ -203,8 +205,8 @@ public final class GuiCommand implements Callable<Integer> {
                 : new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
                         Integrators.choices(), factory.muscleLoad(), factory::parameters);
         if (contact) {
-            tuning.setIntegrator(Integrators.CONTACT);
-            tuning.set(Tuning.TIME_STEP, Integrators.CONTACT_STEP_S);
+            tuning.setIntegrator(Integrators.CONTACT_REAL_TIME);
+            tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
         } else if (realTime) {
             tuning.setIntegrator(Integrators.REAL_TIME);
             tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
