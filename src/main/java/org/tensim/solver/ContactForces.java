@@ -239,6 +239,46 @@ public final class ContactForces {
         }
     }
 
+    /**
+     * The pairs whose node part {@code part} of a partition of the nodes owns, in increasing order: that part's
+     * share of {@link #multiplyAdd(double[], double[], int[], double)}.
+     *
+     * @param offset as in {@link #multiplyAdd(double[], double[], int[], double)} (not null)
+     * @param owner  per node of the compact vectors (offset / 3): its part
+     */
+    public int[] ownedPairs(int[] offset, int[] owner, int part) {
+        int[] pairs = new int[node3.length];
+        int n = 0;
+        for (int e = 0; e < node3.length; e++) {
+            final int i = offset[node3[e] / 3];
+            if (i >= 0 && owner[i / 3] == part) {
+                pairs[n++] = e;
+            }
+        }
+        return java.util.Arrays.copyOf(pairs, n);
+    }
+
+    /**
+     * The share of {@link #multiplyAdd(double[], double[], int[], double)} of the given pairs ({@link #ownedPairs}):
+     * each pair's node receives the same term as there. Disjoint shares may run at the same time.
+     */
+    public void multiplyAdd(int[] pairs, double[] z, double[] y, int[] offset, double weight) {
+        for (final int e : pairs) {
+            final double k = active[e];
+            if (k == 0) {
+                continue;
+            }
+            final int i = offset[node3[e] / 3];
+            final double nx = normal[3 * e];
+            final double ny = normal[3 * e + 1];
+            final double nz = normal[3 * e + 2];
+            final double w = weight * k * (nx * z[i] + ny * z[i + 1] + nz * z[i + 2]);
+            y[i] += w * nx;
+            y[i + 1] += w * ny;
+            y[i + 2] += w * nz;
+        }
+    }
+
     /** {@code diag += weight} times the diagonal of K (k n_d^2 per active pair), full layout. */
     public void addDiagonal(double[] diag, double weight) {
         for (int e = 0; e < node3.length; e++) {

@@ -122,7 +122,7 @@ final class SpringJacobian {
     }
 
     /**
-     * Whether the fibres' and shear elements' part of the product is shared among the threads of the
+     * Whether the fibres', contact pairs' and shear elements' part of the product is shared among the threads of the
      * linearisation's loops (when it has two or more; the same bits either way).
      */
     boolean sharedKernels = true;
@@ -139,13 +139,15 @@ final class SpringJacobian {
     private double[] pIn; // during a shared product only
     private double[] pOut;
 
-    /** One part's fibres and shear elements. */
+    /** One part's fibres, contact pairs and shear elements. */
     private static final class FibreShare {
         final int[] fibres;
+        final int[] contacts;
         final org.tensim.solver.ShearElements.Part shears;
 
-        FibreShare(int[] fibres, org.tensim.solver.ShearElements.Part shears) {
+        FibreShare(int[] fibres, int[] contacts, org.tensim.solver.ShearElements.Part shears) {
             this.fibres = fibres;
+            this.contacts = contacts;
             this.shears = shears;
         }
     }
@@ -196,8 +198,8 @@ final class SpringJacobian {
                     sharedTriangles ? loops : NodeLoops.SERIAL);
         }
         final int threads = loops.threads();
-        if (sharedKernels && threads >= 2 && s.contacts.count() == 0
-                && s.fibres.count() + s.shears.count() >= MIN_SHARED_ELEMENTS) {
+        if (sharedKernels && threads >= 2
+                && s.fibres.count() + s.contacts.count() + s.shears.count() >= MIN_SHARED_ELEMENTS) {
             if (parts == null || parts.parts() != PARTS_PER_THREAD * threads) {
                 share(PARTS_PER_THREAD * threads); // once per thread count
             }
@@ -228,17 +230,18 @@ final class SpringJacobian {
         shares = new FibreShare[count];
         for (int k = 0; k < count; k++) {
             shares[k] = new FibreShare(s.fibres.ownedFibres(triangleOffset, parts.owner, k),
-                    s.shears.part(triangleOffset, parts.owner, k));
+                    s.contacts.ownedPairs(triangleOffset, parts.owner, k), s.shears.part(triangleOffset, parts.owner, k));
         }
     }
 
     /**
-     * The fibres' and shear elements' terms of the parts [from, to): the one-thread loops' operations on each
-     * owned node, in their order (see {@link NodeParts}).
+     * The fibres', contact pairs' and shear elements' terms of the parts [from, to): the one-thread loops'
+     * operations on each owned node, in their order (see {@link NodeParts}).
      */
     private void sharedParts(int from, int to) {
         for (int k = from; k < to; k++) {
             s.fibres.multiplyAdd(shares[k].fibres, pIn, pOut, triangleOffset, triangleWeight);
+            s.contacts.multiplyAdd(shares[k].contacts, pIn, pOut, triangleOffset, triangleWeight);
             s.shears.multiplyAdd(shares[k].shears, pIn, pOut, triangleOffset, triangleWeight, triangleDampingWeight);
         }
     }

@@ -64,6 +64,18 @@ class PrefactoredAllocationTest {
         assertTrue(bdf2.factorNonZeros() >= SparseCholesky.MIN_SPLIT_ENTRIES, "solves shared");
     }
 
+    /** With contact pairs among the shared kernels: the 28-ring diaphragm on the swept cage's bones. */
+    @Test
+    void bdf2StepWithSharedContactKernelsAllocatesNothing() throws Exception {
+        org.tensim.scene.diaphragm.DiaphragmSpec d = org.tensim.scene.diaphragm.DiaphragmSpec.defaults();
+        org.tensim.scene.diaphragm.DiaphragmSpec spec = d.withMesh(d.mesh().withRings(28))
+                .withCage(d.cage().withSurfaces(true));
+        Simulation sim = DiaphragmSetup.build(spec).scene().newSimulation();
+        assertTrue(sim.state().contacts.count() > 0, "contact pairs");
+        sim.setIntegrator(new PrefactoredBdf2().setKernelSharing(KernelSharing.ALWAYS));
+        assertNoAllocation(sim, 2, 0.025, 100);
+    }
+
     private static void assertNoAllocation(Simulation sim, int threads, double dt, int warmUp) {
         try (Parallelism p = threads > 1 ? Parallelism.install(sim, threads) : null) {
             AllocationCounter counter = AllocationCounter.currentThreadAnd(

@@ -30,9 +30,32 @@ class SharedKernelsTest {
                 new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
     }
 
+    /** The 28-ring diaphragm among the parametric cage's swept bones: contact pairs beside the fibres and shear elements. */
+    private static Simulation diaphragmOnBones() {
+        org.tensim.scene.diaphragm.DiaphragmSpec d = org.tensim.scene.diaphragm.DiaphragmSpec.defaults();
+        org.tensim.scene.diaphragm.DiaphragmSpec spec = d.withMesh(d.mesh().withRings(28))
+                .withCage(d.cage().withSurfaces(true));
+        try {
+            return DiaphragmSetup.build(spec).scene().newSimulation();
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     @Test
     void productHasTheSameBitsOnOneTwoAndThreeThreads() throws Exception {
-        SystemState s = diaphragm().state();
+        productBits(diaphragm().state());
+    }
+
+    /** With contact pairs, about half of them pushed deeper than at rest (in contact at the linearisation). */
+    @Test
+    void productWithContactHasTheSameBitsOnOneTwoAndThreeThreads() throws Exception {
+        SystemState s = diaphragmOnBones().state();
+        assertTrue(s.contacts.count() > 0, "contact pairs");
+        productBits(s);
+    }
+
+    private static void productBits(SystemState s) {
         assertTrue(s.fibres.count() + s.shears.count() >= SpringJacobian.MIN_SHARED_ELEMENTS,
                 s.fibres.count() + " fibres, " + s.shears.count() + " shear elements");
         Random rnd = new Random(3);
@@ -50,6 +73,10 @@ class SharedKernelsTest {
         double[] x = new double[s.x0.length];
         for (int k = 0; k < x.length; k++) {
             x[k] = s.x0[k] + 1e-3 * rnd.nextGaussian(); // some elements stretched, some compressed
+        }
+        if (s.contacts.count() > 0) {
+            int active = s.contacts.activeCount(0.7, x);
+            assertTrue(active > 0 && active < s.contacts.count(), active + " of " + s.contacts.count() + " in contact");
         }
         double[] p = new double[3 * free];
         for (int k = 0; k < p.length; k++) {
@@ -74,7 +101,10 @@ class SharedKernelsTest {
 
     /** Positions after {@code steps} bdf2 steps at 25 ms of a 28-ring diaphragm. */
     private static double[] run(int threads, KernelSharing shared, int steps) throws Exception {
-        Simulation sim = diaphragm();
+        return run(diaphragm(), threads, shared, steps);
+    }
+
+    private static double[] run(Simulation sim, int threads, KernelSharing shared, int steps) {
         PrefactoredBdf2 bdf2 = new PrefactoredBdf2().setKernelSharing(shared);
         sim.setIntegrator(bdf2);
         try (Parallelism p = Parallelism.install(sim, threads)) {
@@ -94,5 +124,13 @@ class SharedKernelsTest {
         assertArrayEquals(one, run(2, KernelSharing.ALWAYS, 12), "2 threads, shared kernels");
         assertArrayEquals(one, run(2, KernelSharing.NEVER, 12), "2 threads, kernels on the calling thread");
         assertArrayEquals(one, run(2, KernelSharing.MEASURED, 12), "2 threads, shared while measured faster");
+    }
+
+    /** The same with contact: the 28-ring diaphragm on the swept cage's bones. */
+    @Test
+    void bdf2StepsWithContactHaveTheSameBitsOnOneAndTwoThreads() {
+        double[] one = run(diaphragmOnBones(), 1, KernelSharing.ALWAYS, 12);
+        assertArrayEquals(one, run(diaphragmOnBones(), 2, KernelSharing.ALWAYS, 12), "2 threads, shared kernels");
+        assertArrayEquals(one, run(diaphragmOnBones(), 2, KernelSharing.NEVER, 12), "2 threads, on the calling thread");
     }
 }
