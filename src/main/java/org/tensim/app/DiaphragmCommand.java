@@ -98,8 +98,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         + " --cg-tolerance");
             }
             try {
-                setting = RealTimeSetting.forScene(sceneSpec.boundary().muscleLoad(),
-                        sceneSpec.cage().thorax() != null && sceneSpec.cage().contact());
+                setting = RealTimeSetting.forScene(sceneSpec.boundary().muscleLoad(), sceneSpec.cage().thorax() != null);
             } catch (IllegalArgumentException e) {
                 throw usage("--realtime: " + e.getMessage());
             }

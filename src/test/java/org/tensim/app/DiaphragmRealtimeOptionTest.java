@@ -117,4 +117,30 @@ class DiaphragmRealtimeOptionTest {
         Map<String, Object> summary = Json.readMap(out.resolve("summary.json"));
         assertEquals("rk2", summary.get("integrator"));
     }
+
+    /**
+     * In a thorax, with or without contact, the fibres' load takes the thorax's setting (the links tied, 2 x 10 at
+     * 25 ms); another load there has none measured and is refused by name; elsewhere the load's setting.
+     */
+    @Test
+    void aThoraxTakesItsOwnSetting() {
+        var fibres = org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.FIBRES;
+        var pressure = org.tensim.scene.diaphragm.BoundaryConditions.MuscleLoad.PRESSURE;
+        assertEquals(RealTimeSetting.THORAX, RealTimeSetting.forScene(fibres, true));
+        assertEquals(Integrators.CONTACT_REAL_TIME, RealTimeSetting.THORAX.integrator());
+        assertEquals(Integrators.REAL_TIME_STEP_S, RealTimeSetting.THORAX.dtS());
+        assertEquals(RealTimeSetting.FIBRES, RealTimeSetting.forScene(fibres, false));
+        assertEquals(RealTimeSetting.PRESSURE, RealTimeSetting.forScene(pressure, false));
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> RealTimeSetting.forScene(pressure, true));
+        assertTrue(e.getMessage().contains("no real-time setting was measured in a thorax with the pressure load"),
+                e.getMessage());
+        Map<String, Object> m = RealTimeSetting.THORAX.toMap();
+        assertEquals(1.0, ((Number) m.get("link_coupling")).doubleValue(), m.toString());
+        assertEquals(10, ((Number) m.get("cg_iterations_per_newton_iteration")).intValue(), m.toString());
+        assertTrue(m.containsKey("tolerance_against_converged_contact_step") && !m.containsKey("tolerance_against_rk2"),
+                m.toString());
+        assertTrue(RealTimeSetting.THORAX.describe().contains("links tied in the preconditioner"),
+                RealTimeSetting.THORAX.describe());
+    }
 }

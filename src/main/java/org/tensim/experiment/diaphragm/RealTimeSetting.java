@@ -61,13 +61,13 @@ public record RealTimeSetting(String integrator, double dtS) {
     }
 
     /**
-     * The setting for a scene: {@link #THORAX} in a thorax with contact and the fibres' load, else
-     * {@link #forMuscleLoad}.
+     * The setting for a scene: {@link #THORAX} in a thorax (with or without contact: the diaphragm is held at its
+     * origins only either way) with the fibres' load, else {@link #forMuscleLoad}.
      *
-     * @throws IllegalArgumentException in a thorax with contact and another load (no setting was measured there)
+     * @throws IllegalArgumentException in a thorax with another load (no setting was measured there)
      */
-    public static RealTimeSetting forScene(BoundaryConditions.MuscleLoad model, boolean thoraxWithContact) {
-        if (!thoraxWithContact) {
+    public static RealTimeSetting forScene(BoundaryConditions.MuscleLoad model, boolean thorax) {
+        if (!thorax) {
             return forMuscleLoad(model);
         }
         if (model != BoundaryConditions.MuscleLoad.FIBRES) {
