@@ -221,22 +221,26 @@ public final class ContactForces {
      */
     public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
         for (int e = 0; e < node3.length; e++) {
-            final double k = active[e];
-            if (k == 0) {
-                continue;
-            }
             final int i = offset == null ? node3[e] : offset[node3[e] / 3];
-            if (i < 0) {
-                continue;
+            if (i >= 0) {
+                multiplyAdd(e, i, z, y, weight);
             }
-            final double nx = normal[3 * e];
-            final double ny = normal[3 * e + 1];
-            final double nz = normal[3 * e + 2];
-            final double w = weight * k * (nx * z[i] + ny * z[i + 1] + nz * z[i + 2]);
-            y[i] += w * nx;
-            y[i + 1] += w * ny;
-            y[i + 2] += w * nz;
         }
+    }
+
+    /** Pair e's term {@code weight k n n^T z} added to y at index i (its node's x), when in contact. */
+    private void multiplyAdd(int e, int i, double[] z, double[] y, double weight) {
+        final double k = active[e];
+        if (k == 0) {
+            return;
+        }
+        final double nx = normal[3 * e];
+        final double ny = normal[3 * e + 1];
+        final double nz = normal[3 * e + 2];
+        final double w = weight * k * (nx * z[i] + ny * z[i + 1] + nz * z[i + 2]);
+        y[i] += w * nx;
+        y[i + 1] += w * ny;
+        y[i + 2] += w * nz;
     }
 
     /**
@@ -264,18 +268,7 @@ public final class ContactForces {
      */
     public void multiplyAdd(int[] pairs, double[] z, double[] y, int[] offset, double weight) {
         for (final int e : pairs) {
-            final double k = active[e];
-            if (k == 0) {
-                continue;
-            }
-            final int i = offset[node3[e] / 3];
-            final double nx = normal[3 * e];
-            final double ny = normal[3 * e + 1];
-            final double nz = normal[3 * e + 2];
-            final double w = weight * k * (nx * z[i] + ny * z[i + 1] + nz * z[i + 2]);
-            y[i] += w * nx;
-            y[i + 1] += w * ny;
-            y[i + 2] += w * nz;
+            multiplyAdd(e, offset[node3[e] / 3], z, y, weight);
         }
     }
 

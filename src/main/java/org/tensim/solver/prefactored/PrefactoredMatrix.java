@@ -205,19 +205,7 @@ final class PrefactoredMatrix {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
         }
         for (int i = 0; i < ns; i++) {
-            double w = beta * beta * k[i] + beta * c[i];
-            int a = freeIndex[s.springA[i]];
-            int b = freeIndex[s.springB[i]];
-            if (a >= 0) {
-                t.add(a, a, w);
-            }
-            if (b >= 0) {
-                t.add(b, b, w);
-            }
-            if (a >= 0 && b >= 0) {
-                t.add(a, b, -w);
-                t.add(b, a, -w);
-            }
+            t.addPair(freeIndex[s.springA[i]], freeIndex[s.springB[i]], beta * beta * k[i] + beta * c[i]);
         }
         double[] grad = new double[6];
         for (int e = 0; e < s.triangleCount(); e++) {
@@ -265,17 +253,7 @@ final class PrefactoredMatrix {
         for (int e = 0; e < s.linkA.length; e++) {
             int a = freeIndex[s.linkA[e]];
             int b = freeIndex[s.linkB[e]];
-            double w = linkCoupling * Math.max(a >= 0 ? diag[a] : 0, b >= 0 ? diag[b] : 0);
-            if (a >= 0) {
-                t.add(a, a, w);
-            }
-            if (b >= 0) {
-                t.add(b, b, w);
-            }
-            if (a >= 0 && b >= 0) {
-                t.add(a, b, -w);
-                t.add(b, a, -w);
-            }
+            t.addPair(a, b, linkCoupling * Math.max(a >= 0 ? diag[a] : 0, b >= 0 ? diag[b] : 0));
         }
     }
 
@@ -325,6 +303,20 @@ final class PrefactoredMatrix {
             rows[count] = r;
             cols[count] = c;
             vals[count++] = v;
+        }
+
+        /** {@code w (e_a - e_b)(e_a - e_b)^T}, an end of index -1 (fixed or driven) left out. */
+        void addPair(int a, int b, double w) {
+            if (a >= 0) {
+                add(a, a, w);
+            }
+            if (b >= 0) {
+                add(b, b, w);
+            }
+            if (a >= 0 && b >= 0) {
+                add(a, b, -w);
+                add(b, a, -w);
+            }
         }
     }
 }
