@@ -70,7 +70,7 @@ public final class Integrators {
     public static final double CONTACT_STEP_S = 0.005;
 
     /**
-     * The real-time setting where stiff contact acts (a diaphragm sliding on bone surfaces, docs/thorax.md, "Speed"):
+     * The real-time setting where stiff contact acts (a diaphragm sliding on bone surfaces, docs/thorax.md, "Real time in the thorax"):
      * {@link #REAL_TIME} at {@link #REAL_TIME_STEP_S} with {@link #CONTACT_REAL_TIME_NEWTON} Newton iterations of up
      * to {@link #CONTACT_REAL_TIME_KRYLOV} CG iterations and the rigid links tied in the preconditioner
      * ({@link PrefactoredBdf2#CONTACT_LINK_COUPLING}).

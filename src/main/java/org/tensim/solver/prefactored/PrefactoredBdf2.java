@@ -64,7 +64,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     public static final int CONTACT_KRYLOV_ITERATIONS = 20;
     /**
      * Link coupling of the real-time step where stiff contact acts ({@link #setLinkCoupling}): the best of 0.3, 1, 10
-     * and 100 on the BodyParts3D diaphragm in the shared thorax at 25 ms (docs/thorax.md, "Speed").
+     * and 100 on the BodyParts3D diaphragm in the shared thorax at 25 ms (docs/thorax.md, "Real time in the thorax").
      */
     public static final double CONTACT_LINK_COUPLING = 1;
     /** Relative residual (dimensionless) at which CG stops. */

@@ -46,8 +46,9 @@ import org.tensim.solver.SystemState;
  * faces may approach each other; tying the links' ends brings {@code C^-1} towards the inverse within the tangent
  * space (exactly so for a penalty along each link's direction growing without bound, which a scalar factor cannot
  * carry: it ties the ends in all three directions). On a diaphragm held at its origins and sliding on bone
- * (docs/thorax.md, "Speed") it takes the step at 25 ms from 64 % of the converged step to 14 % for the same
- * iterations; on the double dome held by its band it costs accuracy (docs/performance.md), so it is 0 by default.
+ * (docs/thorax.md, "Real time in the thorax") it takes the step at 25 ms from 64 % of the converged step to 14 %
+ * for the same iterations; on the double dome held by its band it costs accuracy (docs/performance.md), so it is 0
+ * by default.
  *
  * <p>The first call of {@link #factorFor} factors synchronously (the step waits once). After a
  * change of the state's parameters ({@link SystemState#parameterVersion()}) or of beta, the
