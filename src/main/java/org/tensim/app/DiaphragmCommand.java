@@ -98,7 +98,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
                         + " --cg-tolerance");
             }
             try {
-                setting = RealTimeSetting.forScene(sceneSpec.boundary().muscleLoad(), sceneSpec.cage().thorax() != null);
+                setting = RealTimeSetting.forScene(sceneSpec.boundary().muscleLoad(),
+                        sceneSpec.cage().thorax() != null);
             } catch (IllegalArgumentException e) {
                 throw usage("--realtime: " + e.getMessage());
             }
@@ -144,8 +145,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println("realtime: " + setting.describe()
                     + (scene.mesh == null ? ""
                             : setting.equals(RealTimeSetting.THORAX)
-                                    ? "; measured on the shared BodyParts3D diaphragm (diaphragm realtime-study --thorax"
-                                            + " measures this mesh)"
+                                    ? "; measured on the shared BodyParts3D diaphragm (diaphragm realtime-study"
+                                            + " --thorax measures this mesh)"
                                     : "; this mesh (" + scene.mesh + ") was not measured"));
         }
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);

@@ -70,10 +70,10 @@ public final class Integrators {
     public static final double CONTACT_STEP_S = 0.005;
 
     /**
-     * The real-time setting where stiff contact acts (a diaphragm sliding on bone surfaces, docs/thorax.md, "Real time in the thorax"):
-     * {@link #REAL_TIME} at {@link #REAL_TIME_STEP_S} with {@link #CONTACT_REAL_TIME_NEWTON} Newton iterations of up
-     * to {@link #CONTACT_REAL_TIME_KRYLOV} CG iterations and the rigid links tied in the preconditioner
-     * ({@link PrefactoredBdf2#CONTACT_LINK_COUPLING}).
+     * The real-time setting where stiff contact acts (a diaphragm sliding on bone surfaces, docs/thorax.md, "Real
+     * time in the thorax"): {@link #REAL_TIME} at {@link #REAL_TIME_STEP_S} with {@link #CONTACT_REAL_TIME_NEWTON}
+     * Newton iterations of up to {@link #CONTACT_REAL_TIME_KRYLOV} CG iterations and the rigid links tied in the
+     * preconditioner ({@link PrefactoredBdf2#CONTACT_LINK_COUPLING}).
      */
     public static final String CONTACT_REAL_TIME = "bdf2-contact-realtime";
     /** Newton iterations per step of {@link #CONTACT_REAL_TIME}. */
@@ -108,8 +108,8 @@ public final class Integrators {
                 () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
                         .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));
         add(new IntegratorChoice(CONTACT_REAL_TIME, "bdf2, 2 Newton x 10 CG, links tied in the preconditioner (contact"
-                + " with bone surfaces at 25 ms)", () -> new PrefactoredBdf2().setNewtonIterations(CONTACT_REAL_TIME_NEWTON)
-                        .setKrylovIterations(CONTACT_REAL_TIME_KRYLOV)
+                + " with bone surfaces at 25 ms)", () -> new PrefactoredBdf2()
+                        .setNewtonIterations(CONTACT_REAL_TIME_NEWTON).setKrylovIterations(CONTACT_REAL_TIME_KRYLOV)
                         .setLinkCoupling(PrefactoredBdf2.CONTACT_LINK_COUPLING)));
     }
 

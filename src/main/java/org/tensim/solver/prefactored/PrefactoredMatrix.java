@@ -101,7 +101,7 @@ final class PrefactoredMatrix {
         this(s, 0);
     }
 
-    /** The matrix of a state, with the rigid links' ends tied by {@code linkCoupling} (0 for none; see the class comment). */
+    /** The matrix of a state, the rigid links' ends tied by {@code linkCoupling} (0 for none; see the class comment). */
     PrefactoredMatrix(SystemState s, double linkCoupling) {
         this.s = s;
         this.linkCoupling = linkCoupling;

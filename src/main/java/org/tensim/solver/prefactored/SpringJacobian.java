@@ -230,7 +230,8 @@ final class SpringJacobian {
         shares = new FibreShare[count];
         for (int k = 0; k < count; k++) {
             shares[k] = new FibreShare(s.fibres.ownedFibres(triangleOffset, parts.owner, k),
-                    s.contacts.ownedPairs(triangleOffset, parts.owner, k), s.shears.part(triangleOffset, parts.owner, k));
+                    s.contacts.ownedPairs(triangleOffset, parts.owner, k),
+                    s.shears.part(triangleOffset, parts.owner, k));
         }
     }
 

@@ -30,7 +30,7 @@ class SharedKernelsTest {
                 new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa())).scene().newSimulation();
     }
 
-    /** The 28-ring diaphragm among the parametric cage's swept bones: contact pairs beside the fibres and shear elements. */
+    /** The 28-ring diaphragm among the parametric cage's swept bones: contact pairs beside fibres and shear elements. */
     private static Simulation diaphragmOnBones() {
         org.tensim.scene.diaphragm.DiaphragmSpec d = org.tensim.scene.diaphragm.DiaphragmSpec.defaults();
         org.tensim.scene.diaphragm.DiaphragmSpec spec = d.withMesh(d.mesh().withRings(28))
