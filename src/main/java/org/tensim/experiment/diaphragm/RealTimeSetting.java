@@ -39,7 +39,7 @@ public record RealTimeSetting(String integrator, double dtS) {
     public static final RealTimeSetting PRESSURE = new RealTimeSetting(Integrators.DEFAULT, 0);
 
     /**
-     * In a thorax (bone surfaces and sliding contact) with the fibres' load: {@link Integrators#CONTACT_REAL_TIME}
+     * In a thorax (bone surfaces; contact on or off) with the fibres' load: {@link Integrators#CONTACT_REAL_TIME}
      * at {@link Integrators#REAL_TIME_STEP_S}, chosen by the thorax's real-time study
      * ({@link ThoraxRealTimeStudy}: within {@link RealTimeStudy#TOLERANCE} of the converged contact step at 5 ms on
      * the BodyParts3D diaphragm in the shared thorax; docs/thorax.md, "Real time in the thorax").
