@@ -84,8 +84,15 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
                 DiaphragmScene withContact = DiaphragmSetup.build(in, s, s.newControls()).scene();
                 DiaphragmSpec off = s.withCage(s.cage().withContact(false));
                 DiaphragmScene without = DiaphragmSetup.build(in, off, off.newControls()).scene();
-                Map<String, Object> r = ThoraxRealTimeStudy.run(withContact, without, in.source(), s, configs,
-                        seconds, folder, System.out);
+                // The kept reference is named by the definition and the files' contents, so an edited file is seen.
+                java.util.List<Path> files = new java.util.ArrayList<>();
+                if (!s.mesh().generated()) {
+                    files.add(s.mesh().file());
+                }
+                files.add(s.cage().thorax());
+                String definition = s + " " + org.tensim.io.FileDigest.of(files);
+                Map<String, Object> r = ThoraxRealTimeStudy.run(withContact, without, in.source(), definition,
+                        configs, seconds, folder, System.out);
                 System.out.println(Json.line(run.finish(RunStatus.OK, r)));
             });
         }

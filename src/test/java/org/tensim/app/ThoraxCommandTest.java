@@ -243,6 +243,10 @@ class ThoraxCommandTest {
         }
         assertTrue(((Number) rt.get("ms_per_step")).doubleValue() > 0, rt.toString());
         assertEquals(5, Files.readAllLines(study.resolve("realtime.csv")).size(), "a header and four rows");
+        try (var kept = Files.list(study)) {
+            assertEquals(1, kept.filter(f -> f.getFileName().toString().startsWith("bdf2-contact-reference-")).count(),
+                    "the reference's samples kept for the next study");
+        }
         r = run("diaphragm", "realtime-study", "--mesh", mesh.toString(), "--units", "mm", "--thorax",
                 THORAX.toString(), "--study-rings", "10,14", "--out", dir.resolve("rings").toString());
         assertTrue(r[2].contains("with --thorax the real-time study runs the one scene given, with contact: leave out"

@@ -40,9 +40,8 @@ final class ReferenceCache {
 
     /**
      * Where the samples of a scene's reference other than the double dome's RK2 are kept ({@link ThoraxRealTimeStudy}):
-     * named by the configuration, the scene's size, the step and a hash of the whole scene definition (its files by
-     * name: a file changed in place with the same node count is not noticed; remove the file, or give another
-     * {@code --out}).
+     * named by the configuration, the scene's size, the step and a hash of {@code definition}'s text (the caller's
+     * scene definition with a digest of its files' contents, {@link org.tensim.io.FileDigest}).
      */
     static Path file(Path out, String config, DiaphragmScene scene, Object definition, double dt) {
         return out.resolve(String.format(Locale.ROOT, "%s-reference-%dnodes-dt%.6e-every%.3fs-%08x.bin", config,

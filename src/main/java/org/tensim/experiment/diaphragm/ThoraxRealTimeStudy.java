@@ -68,8 +68,9 @@ public final class ThoraxRealTimeStudy {
      * @param scene          the diaphragm in its thorax, with contact
      * @param withoutContact the same scene with contact off (for the cost of a step without it)
      * @param source         what the scene was built from, for the summary
-     * @param definition     the scene's definition, whose text names the reference's samples kept in {@code out}
-     *                       (a study run again on the same scene reuses them; {@link ReferenceCache})
+     * @param definition     the scene's definition with a digest of its files, whose text names the reference's
+     *                       samples kept in {@code out} (a study run again on the same scene reuses them;
+     *                       {@link ReferenceCache})
      */
     public static Map<String, Object> run(DiaphragmScene scene, DiaphragmScene withoutContact, String source,
             Object definition, Pattern only, double seconds, Path out, PrintStream log) throws IOException {
