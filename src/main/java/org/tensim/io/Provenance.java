@@ -48,6 +48,15 @@ public final class Provenance {
         return m;
     }
 
+    /**
+     * The code that runs, as a key for results kept between runs (a study's reference samples): the build's commit,
+     * with {@code +changes} when tracked files differed from it at build time; "unknown" when it cannot be told.
+     */
+    public static String codeVersion() {
+        Map<String, Object> f = fields();
+        return f.get("commit") + (Boolean.TRUE.equals(f.get("commit_uncommitted_changes")) ? "+changes" : "");
+    }
+
     /** The stamp's properties; empty when there is none or it cannot be read. */
     static Properties stamp(InputStream in) {
         Properties p = new Properties();

@@ -33,6 +33,15 @@ class ProvenanceTest {
     }
 
     @Test
+    void theCodesVersionIsTheCommitAndWhetherItWasChanged() {
+        Map<String, Object> f = Provenance.fields();
+        String v = Provenance.codeVersion();
+        assertEquals(f.get("commit") + (Boolean.TRUE.equals(f.get("commit_uncommitted_changes")) ? "+changes" : ""), v,
+                "a kept result is keyed by the code that made it");
+        assertEquals(v, Provenance.codeVersion(), "the same within a run");
+    }
+
+    @Test
     void aStampIsReadAndABrokenOneIsIgnored() {
         Properties p = Provenance.stamp(new ByteArrayInputStream(
                 ("commit=" + A + "\nuncommitted_changes=true\n").getBytes(StandardCharsets.ISO_8859_1)));

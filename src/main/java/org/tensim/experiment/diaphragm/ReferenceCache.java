@@ -21,7 +21,8 @@ import org.tensim.scene.diaphragm.DiaphragmScene;
  * on a shared two-core machine, so a study that is run again with other configurations reuses them.
  * The file is named by the scene's size, step, sample interval and a hash of the tissue parameters,
  * the boundary conditions (attachment, muscle load),
- * the cycle and the controls, so that another scene never reads it. Format (big-endian): the diaphragm
+ * the cycle, the controls and the code's version ({@link org.tensim.io.Provenance#codeVersion}), so that another
+ * scene, or the same scene built or stepped by other code, never reads it. Format (big-endian): the diaphragm
  * node count and the apex node (ints), then per sample its time (s) and the 3 n displacements (m).
  */
 final class ReferenceCache {
@@ -32,7 +33,7 @@ final class ReferenceCache {
     static Path file(Path out, int rings, DiaphragmScene scene, DiaphragmParameters p,
             org.tensim.scene.diaphragm.BoundaryConditions bc, BreathingCycle cycle, DiaphragmControls controls) {
         int key = java.util.Objects.hash(p.toString(), bc.toString(), cycle.periodS(), cycle.expirationRatio(),
-                controls.ribAmplitude(), controls.muscleAmplitudePa());
+                controls.ribAmplitude(), controls.muscleAmplitudePa(), org.tensim.io.Provenance.codeVersion());
         return out.resolve(String.format(Locale.ROOT, "rk2-reference-%drings-%dnodes-%dsprings-dt%.6e-every%.3fs-%08x.bin",
                 rings, scene.topology().nodeCount(), scene.topology().springs().size(), scene.recommendedTimeStep(),
                 StudyRun.SAMPLE_S, key));
@@ -41,11 +42,13 @@ final class ReferenceCache {
     /**
      * Where the samples of a scene's reference other than the double dome's RK2 are kept ({@link ThoraxRealTimeStudy}):
      * named by the configuration, the scene's size, the step and a hash of {@code definition}'s text (the caller's
-     * scene definition with a digest of its files' contents, {@link org.tensim.io.FileDigest}).
+     * scene definition with a digest of its files' contents, {@link org.tensim.io.FileDigest}) and of the code's
+     * version.
      */
     static Path file(Path out, String config, DiaphragmScene scene, Object definition, double dt) {
+        int key = (definition + " " + org.tensim.io.Provenance.codeVersion()).hashCode();
         return out.resolve(String.format(Locale.ROOT, "%s-reference-%dnodes-dt%.6e-every%.3fs-%08x.bin", config,
-                scene.topology().nodeCount(), dt, StudyRun.SAMPLE_S, definition.toString().hashCode()));
+                scene.topology().nodeCount(), dt, StudyRun.SAMPLE_S, key));
     }
 
     /**
