@@ -3,6 +3,7 @@ package org.tensim.experiment.diaphragm;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -29,8 +30,37 @@ final class ResolutionAnalysis {
     private ResolutionAnalysis() {
     }
 
+    /**
+     * The coarse models' fields transferred to their finest model's upper nodes ({@link FieldTransfer#differences}),
+     * each pair once: the error, where it sits and {@code resolution-nodes.csv} read the same transfer, the costly
+     * part of the analysis (a search of the coarse surface for each of the full mesh's upper nodes).
+     */
+    static final class Transfers {
+        private final Map<ResolutionStudy.Run, Map<ResolutionStudy.Run, double[]>> byFine = new IdentityHashMap<>();
+        private int computed;
+
+        /** The differences of {@code coarse}'s transferred field from {@code fine}'s, m (3 per node of fine). */
+        double[] differences(ResolutionStudy.Run fine, ResolutionStudy.Run coarse) {
+            return byFine.computeIfAbsent(fine, f -> new IdentityHashMap<>()).computeIfAbsent(coarse, c -> {
+                computed++;
+                return FieldTransfer.differences(fine.rest(), fine.end(), fine.upper(), c.rest(), c.end(),
+                        c.upperTriangles());
+            });
+        }
+
+        /** How many transfers were computed. */
+        int computed() {
+            return computed;
+        }
+    }
+
     /** One row per model, coarse to fine, with the error and the order to the next finer model. */
     static List<Map<String, Object>> rows(List<ResolutionStudy.Run> family) {
+        return rows(family, new Transfers());
+    }
+
+    /** As {@link #rows(List)}, the transfers taken from (and kept in) {@code transfers}. */
+    static List<Map<String, Object>> rows(List<ResolutionStudy.Run> family, Transfers transfers) {
         ResolutionStudy.Run ref = family.get(family.size() - 1);
         List<Map<String, Object>> rows = new ArrayList<>();
         double[] e = new double[family.size()];
@@ -42,8 +72,7 @@ final class ResolutionAnalysis {
                 e[i] = 0;
             } else if (r.upperTriangles() != null) {
                 // One transfer of the coarse field (the costly part) for the error and where it sits.
-                double[] diff = FieldTransfer.differences(ref.rest(), ref.end(), ref.upper(), r.rest(), r.end(),
-                        r.upperTriangles());
+                double[] diff = transfers.differences(ref, r);
                 e[i] = FieldTransfer.relativeRms(ref.rest(), ref.end(), ref.upper(), diff);
                 hotspots.set(i, ErrorHotspots.of(ref.rest(), ref.upper(), diff, ErrorHotspots.CELL_M,
                         ErrorHotspots.TOP));
@@ -142,15 +171,14 @@ final class ResolutionAnalysis {
      * displacement's magnitude (mm) and, per coarser model with triangles, the magnitude of the difference
      * {@link FieldTransfer#differences} sums (mm).
      */
-    static void nodesCsv(Path file, List<ResolutionStudy.Run> family) throws IOException {
+    static void nodesCsv(Path file, List<ResolutionStudy.Run> family, Transfers transfers) throws IOException {
         ResolutionStudy.Run fine = family.get(family.size() - 1);
         List<String> cols = new ArrayList<>(List.of("x_mm", "y_mm", "z_mm", "displacement_mm"));
         List<double[]> diffs = new ArrayList<>();
         for (ResolutionStudy.Run c : family.subList(0, family.size() - 1)) {
             if (c.upperTriangles() != null) {
                 cols.add("difference_mm " + c.label());
-                diffs.add(FieldTransfer.differences(fine.rest(), fine.end(), fine.upper(), c.rest(), c.end(),
-                        c.upperTriangles()));
+                diffs.add(transfers.differences(fine, c));
             }
         }
         try (CsvWriter csv = new CsvWriter(file, cols, 1000)) {

@@ -143,8 +143,9 @@ public final class ResolutionStudy {
                     DiaphragmSetup.boxes(DiaphragmSetup.BODYPARTS3D_BOXES)) : s;
             families.add(decimated("BodyParts3D", TwoSurfaces.split(full), CELLS_MM, Decimation.CLUSTERING, bp));
         }
-        Map<String, Object> summary = report(families, s, out);
-        List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric);
+        ResolutionAnalysis.Transfers transfers = new ResolutionAnalysis.Transfers();
+        Map<String, Object> summary = report(families, transfers, s, out);
+        List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric, transfers);
         int i = ResolutionAnalysis.pick(rows, s.tolerance());
         int rings = RINGS[i];
         String reason = i == rows.size() - 1
@@ -188,7 +189,7 @@ public final class ResolutionStudy {
             TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(r));
             family.add(simulate("double dome", r + " rings", TwoSurfaces.split(m), s));
         }
-        return report(List.of(family), s, out);
+        return report(List.of(family), new ResolutionAnalysis.Transfers(), s, out);
     }
 
     /**
@@ -217,8 +218,9 @@ public final class ResolutionStudy {
                         offsetThicknessM).surfaces(), s));
             }
         }
-        ResolutionAnalysis.nodesCsv(out.resolve("resolution-nodes.csv"), family);
-        return report(List.of(family), s, out);
+        ResolutionAnalysis.Transfers transfers = new ResolutionAnalysis.Transfers();
+        ResolutionAnalysis.nodesCsv(out.resolve("resolution-nodes.csv"), family, transfers);
+        return report(List.of(family), transfers, s, out);
     }
 
     /** The models decimated from {@code split} at each size ({@link Decimation#coarsen}), coarse first. */
@@ -233,11 +235,12 @@ public final class ResolutionStudy {
         return runs;
     }
 
-    private static Map<String, Object> report(List<List<Run>> families, Setup s, Path out) throws IOException {
+    private static Map<String, Object> report(List<List<Run>> families, ResolutionAnalysis.Transfers transfers,
+            Setup s, Path out) throws IOException {
         List<Map<String, Object>> rows = new ArrayList<>();
         List<Map<String, Object>> fams = new ArrayList<>();
         for (List<Run> family : families) {
-            List<Map<String, Object>> r = ResolutionAnalysis.rows(family);
+            List<Map<String, Object>> r = ResolutionAnalysis.rows(family, transfers);
             rows.addAll(r);
             Map<String, Object> f = new LinkedHashMap<>();
             f.put("family", family.get(0).family());

@@ -82,7 +82,9 @@ class TwoResolutionsTest {
         }
         ResolutionStudy.Run rf = linear(fine, true);
         java.nio.file.Path csv = dir.resolve("nodes.csv");
-        ResolutionAnalysis.nodesCsv(csv, java.util.List.of(rc, rf));
+        ResolutionAnalysis.Transfers transfers = new ResolutionAnalysis.Transfers();
+        ResolutionAnalysis.nodesCsv(csv, java.util.List.of(rc, rf), transfers);
+        assertEquals(1, transfers.computed(), "one coarse model, one transfer");
         java.util.List<String> lines = java.nio.file.Files.readAllLines(csv);
         assertEquals(fine.vertexCount() + 1, lines.size(), "a header and one row per upper node");
         for (String line : lines.subList(1, lines.size())) {
@@ -95,7 +97,10 @@ class TwoResolutionsTest {
         }
         // The coarse model's row says where its error sits: with the same 1 mm at every node, each cell's share is
         // its share of the nodes, and the reference has none.
-        java.util.List<java.util.Map<String, Object>> rows = ResolutionAnalysis.rows(java.util.List.of(rc, rf));
+        java.util.List<java.util.Map<String, Object>> rows = ResolutionAnalysis.rows(java.util.List.of(rc, rf),
+                transfers);
+        assertEquals(1, transfers.computed(), "the rows read the transfer the nodes file made");
+        assertEquals(rows, ResolutionAnalysis.rows(java.util.List.of(rc, rf)), "the same rows from a transfer of its own");
         @SuppressWarnings("unchecked")
         java.util.List<java.util.Map<String, Object>> hot =
                 (java.util.List<java.util.Map<String, Object>>) rows.get(0).get("error_hotspots");
