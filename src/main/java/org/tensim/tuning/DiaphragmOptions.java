@@ -97,6 +97,13 @@ public final class DiaphragmOptions {
                     + " (default: 0, none; docs/thorax.md, \"Is the full mesh converged?\")")
     Double abdominalPressurePa;
 
+    @Option(names = "--apposition-pressure", paramLabel = "PA",
+            description = "with bone surfaces and contact: rise of the abdominal pressure on the zone of apposition at"
+                    + " end-inspiration, Pa, 0..5000; it presses the muscle lying against the ribs, cartilages and"
+                    + " sternum onto them; 0 turns it off (default: " + DiaphragmSpec.Cage.DEFAULT_APPOSITION_PA
+                    + "; docs/thorax.md, \"The zone of apposition\")")
+    Double appositionPa;
+
     @Option(names = "--model", paramLabel = "NAME",
             description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
@@ -270,10 +277,16 @@ public final class DiaphragmOptions {
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
                 ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa, br.abdominalPressurePa());
-        DiaphragmSpec.Cage cageSpec = new DiaphragmSpec.Cage(boxes, thorax,
-                contact == null ? base.cage().contact() : contact,
-                contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
-                liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM, cageSurfaces());
+        DiaphragmSpec.Cage cageSpec;
+        try {
+            cageSpec = new DiaphragmSpec.Cage(boxes, thorax, contact == null ? base.cage().contact() : contact,
+                    contactPaPerM == null ? base.cage().contactStiffnessPaPerM() : contactPaPerM,
+                    liverPaPerM == null ? base.cage().liverSupportPaPerM() : liverPaPerM, cageSurfaces(),
+                    appositionPa == null ? base.cage().appositionPressurePa() : appositionPa);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(appositionPa != null && e.getMessage().contains("apposition")
+                    ? "--apposition-pressure: " + e.getMessage() : e.getMessage(), e);
+        }
         return new DiaphragmSpec(m, p, b, br, cageSpec, actionLines,
                 tendonRule == null ? base.tendonRule() : tendonRule);
     }

@@ -52,6 +52,7 @@ class DiaphragmOptionsTest {
         v.put("liver-support", 2e4);
         v.put("abdominal-support", 1e5);
         v.put("abdominal-pressure", 300.0);
+        v.put("apposition-pressure", 150.0);
         v.put("model", "default");
         v.put("rib-amplitude", 0.5);
         v.put("muscle-force", 2000.0);
@@ -171,6 +172,16 @@ class DiaphragmOptionsTest {
                 () -> viaCommandLine(List.of("--abdominal-pressure", "9000")));
         assertTrue(high.getMessage().contains("--abdominal-pressure") && high.getMessage().contains("9000")
                 && high.getMessage().contains("0..5000"), high.getMessage());
+        assertEquals(org.tensim.scene.diaphragm.DiaphragmSpec.Cage.DEFAULT_APPOSITION_PA,
+                viaCommandLine(List.of()).cage().appositionPressurePa(), 0);
+        assertEquals(0, viaCommandLine(List.of("--apposition-pressure", "0")).cage().appositionPressurePa(), 0,
+                "0 turns it off");
+        assertEquals(viaCommandLine(List.of("--apposition-pressure", "150")),
+                viaSpecFile(dir, Map.of("apposition-pressure", 150.0)));
+        IllegalArgumentException app = assertThrows(IllegalArgumentException.class,
+                () -> viaCommandLine(List.of("--apposition-pressure", "-20")));
+        assertTrue(app.getMessage().contains("--apposition-pressure") && app.getMessage().contains("-20")
+                && app.getMessage().contains("0..5000"), app.getMessage());
     }
 
     @Test

@@ -244,6 +244,9 @@ public final class DiaphragmReport {
             summary.put("diaphragm_area_mm2", round(1e6 * scene.surfaces().mesh().totalArea() / 2, 1));
             summary.put("contact_pairs", scene.topology().contacts().size());
             summary.put("contact_pairs_per_bone", scene.contactPairsPerBone());
+            summary.put("apposition_pressure_pa", scene.appositionAreaM2() > 0
+                    ? scene.spec().cage().appositionPressurePa() : 0.0);
+            summary.put("apposition_area_mm2", round(1e6 * scene.appositionAreaM2(), 1));
         }
         summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
     }

@@ -26,15 +26,19 @@ final class AbdominalPressure {
     }
 
     /**
-     * Applies the pressure's force laws to the builder's free lower-surface nodes; returns how many nodes carry one.
+     * Applies the pressure's force laws to the builder's free lower-surface nodes, or to those of them in
+     * {@code only}; returns the lower-face area they carry, m^2.
      *
      * @param areaM2 per vertex, its share of its own face's area (a third of each triangle's), m^2
+     * @param only   per vertex, whether the pressure acts there (the zone of apposition, {@link AppositionZone});
+     *               null: on the whole lower face
      */
-    static int add(Topology t, TwoSurfaces surfaces, double[] areaM2, BreathingCycle cycle, double pressurePa) {
-        int n = 0;
+    static double add(Topology t, TwoSurfaces surfaces, double[] areaM2, BreathingCycle cycle, double pressurePa,
+            boolean[] only) {
+        double pressed = 0;
         for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
             Node node = t.node(v);
-            if (surfaces.isUpper(v) || node.isFixed() || node.isDriven()) {
+            if (surfaces.isUpper(v) || node.isFixed() || node.isDriven() || only != null && !only[v]) {
                 continue;
             }
             Vec3 d = t.node(surfaces.partner(v)).position().minus(node.position());
@@ -52,8 +56,8 @@ final class AbdominalPressure {
                 f[o + 1] += fy * s;
                 f[o + 2] += fz * s;
             });
-            n++;
+            pressed += areaM2[v];
         }
-        return n;
+        return pressed;
     }
 }

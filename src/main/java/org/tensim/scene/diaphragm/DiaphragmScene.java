@@ -179,6 +179,14 @@ public final class DiaphragmScene {
         return parts.attachedPerBone();
     }
 
+    /**
+     * The lower-face area that the abdominal pressure on the zone of apposition presses on the chest wall, m^2
+     * ({@link DiaphragmSpec.Cage#appositionPressurePa}); 0 without bone surfaces, contact or that pressure.
+     */
+    public double appositionAreaM2() {
+        return parts.appositionAreaM2();
+    }
+
     /** Per bone (by name), the number of node-bone contact pairs; empty without contact. */
     public Map<String, Integer> contactPairsPerBone() {
         return parts.contactPairsPerBone();

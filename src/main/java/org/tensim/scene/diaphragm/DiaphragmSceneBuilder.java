@@ -40,12 +40,13 @@ final class DiaphragmSceneBuilder {
      * @param tendonAreaFraction tendon's share of the upper surface's area
      * @param firstAnchor        id of the first anchor node (-1: none)
      * @param addedMassKg        mass added by the mass floor, kg
+     * @param appositionAreaM2   lower-face area pressed by the pressure on the zone of apposition, m^2 (0: none)
      */
     record Parts(DiaphragmParameters parameters, Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage,
             int apex, DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
             int attachedToCartilage, int attachedToSpine, boolean[] attached, ModalBounds modes,
             double tendonAreaFraction, int firstAnchor, double addedMassKg, Map<String, double[]> attachedPerBone,
-            Map<String, Integer> contactPairsPerBone) {
+            Map<String, Integer> contactPairsPerBone, double appositionAreaM2) {
     }
 
     /** Runs every step, in its order, and returns what the scene holds. */
@@ -80,13 +81,17 @@ final class DiaphragmSceneBuilder {
         b.columnLinks();
         b.muscle(actionLines);
         if (spec.breathing().abdominalPressurePa() > 0) {
-            AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.breathing().abdominalPressurePa());
+            AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.breathing().abdominalPressurePa(), null);
+        }
+        if (bones != null && spec.cage().contact() && spec.cage().appositionPressurePa() > 0) {
+            b.appositionArea = AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.cage().appositionPressurePa(),
+                    AppositionZone.lowerVertices(surfaces, bones));
         }
         b.support();
         b.damping();
         return new Parts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
                 b.attachedCartilage, b.attachedSpine, b.attached, b.modes, b.tendonFraction, b.firstAnchor,
-                b.addedMass, b.attachedPerBone, b.contactPairs);
+                b.addedMass, b.attachedPerBone, b.contactPairs, b.appositionArea);
     }
 
     // Inputs.
@@ -112,6 +117,8 @@ final class DiaphragmSceneBuilder {
     private org.tensim.model.RigidMotion[] boneMotions;
     private Map<String, double[]> attachedPerBone = Map.of();
     private Map<String, Integer> contactPairs = Map.of();
+    /** The lower-face area the pressure on the zone of apposition acts on, m^2 (0: none). */
+    private double appositionArea;
 
     // Built by the steps; the attachment strategies read and extend the package-visible ones.
     final Topology t = new Topology();

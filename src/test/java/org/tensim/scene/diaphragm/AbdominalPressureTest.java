@@ -51,9 +51,9 @@ class AbdominalPressureTest {
         double[] area = SurfaceGeometry.vertexAreas(m);
         BreathingCycle cycle = BreathingCycle.quiet();
         double p = 300;
-        int loaded = AbdominalPressure.add(t, s, area, cycle, p);
-        assertEquals(s.lowerCount() - 1, loaded, "every lower node but the fixed one, no upper node");
+        double loaded = AbdominalPressure.add(t, s, area, cycle, p, null);
         double lowerArea = 4 * halfSide * halfSide;
+        assertEquals(lowerArea - area[fixedLower], loaded, 1e-12, "every lower node but the fixed one, no upper node");
         double expected = p * (lowerArea - area[fixedLower]);
         double[] atPeak = total(t, cycle.inspirationS());
         assertEquals(expected, atPeak[2], 1e-9 * expected, "towards the upper face, the pressure times the area");
@@ -62,6 +62,32 @@ class AbdominalPressureTest {
         assertEquals(0, total(t, 0)[2], 1e-12, "none at end-expiration");
         double half = cycle.inspirationS() / 2;
         assertEquals(expected * cycle.level(half), total(t, half)[2], 1e-9 * expected, "it follows the level");
+    }
+
+    @Test
+    void onAZoneItPressesTheZonesLowerNodesOnly() {
+        // The same flat shell; the zone is the lower face's half with x > 0 (and the upper nodes, which never count).
+        TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(0.04, 8), 0.003);
+        TriangleMesh m = s.mesh();
+        Topology t = new Topology();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
+        }
+        boolean[] zone = new boolean[m.vertexCount()];
+        double[] area = SurfaceGeometry.vertexAreas(m);
+        double inZone = 0;
+        for (int v = 0; v < m.vertexCount(); v++) {
+            zone[v] = m.coord(v, 0) > 1e-9 || s.isUpper(v);
+            inZone += zone[v] && !s.isUpper(v) ? area[v] : 0;
+        }
+        BreathingCycle cycle = BreathingCycle.quiet();
+        double loaded = AbdominalPressure.add(t, s, area, cycle, 500, zone);
+        assertEquals(inZone, loaded, 1e-15, "the zone's lower area");
+        assertTrue(inZone > 0.3 * 0.0064 && inZone < 0.5 * 0.0064, "about a half of the face: " + inZone);
+        assertEquals(500 * inZone, total(t, cycle.inspirationS())[2], 1e-9 * 500 * inZone);
+        for (Topology.NodalForce nf : t.forces()) {
+            assertTrue(zone[nf.node()] && !s.isUpper(nf.node()), "a force on node " + nf.node() + " outside the zone");
+        }
     }
 
     @Test

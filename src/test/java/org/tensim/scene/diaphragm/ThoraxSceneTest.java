@@ -143,6 +143,33 @@ class ThoraxSceneTest {
     }
 
     @Test
+    void theZoneOfAppositionIsAPartOfTheLowerFaceAndTheSameAtEveryResolution() {
+        DiaphragmScene given = scene(full);
+        double zone = given.appositionAreaM2();
+        double lower = 0;
+        double[] area = SurfaceGeometry.vertexAreas(full.mesh());
+        for (int v = 0; v < full.mesh().vertexCount(); v++) {
+            lower += full.isUpper(v) ? 0 : area[v];
+        }
+        double fine = scene(DiaphragmSetup.surfaces(MidpointSubdivision.refine(full.mesh(), 1), 0.0025).surfaces())
+                .appositionAreaM2();
+        double half = scene(full.decimated(0.0045)).appositionAreaM2();
+        System.out.println("zone of apposition: " + Math.round(zone * 1e6) + " of " + Math.round(lower * 1e6)
+                + " mm^2 of the lower face; refined " + Math.round(fine * 1e6) + ", decimated at 4.5 mm "
+                + Math.round(half * 1e6));
+        assertTrue(zone > 0.1 * lower && zone < 0.8 * lower, "the zone is a part of the lower face: " + zone + " of "
+                + lower + " m^2");
+        // Its edge moves by up to an edge's length with the vertices: half an edge (2-3 mm) along an edge some 1.5 m
+        // long is about 5 % of the zone.
+        assertEquals(fine, zone, 0.05 * fine, "the zone at two resolutions");
+        assertEquals(zone, half, 0.05 * zone, "the zone, full and decimated to half the triangles");
+        DiaphragmSpec off = DiaphragmSpec.defaults().withCage(DiaphragmSpec.Cage.defaults().withThorax(THORAX)
+                .withAppositionPressure(0));
+        assertEquals(0, DiaphragmScene.build(full, off, Map.of(), bones, null, off.newControls()).appositionAreaM2(),
+                0, "0 Pa: no zone pressed");
+    }
+
+    @Test
     void theAttachedAreaDoesNotGrowWhenTheResolutionStudyDecimates() {
         // the study's coarsest model in the thorax: 6 mm cells, 40 % of the triangles (docs/thorax.md)
         TwoSurfaces coarse = full.decimated(0.006);
