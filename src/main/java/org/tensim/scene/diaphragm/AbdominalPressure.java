@@ -35,6 +35,20 @@ final class AbdominalPressure {
      */
     static double add(Topology t, TwoSurfaces surfaces, double[] areaM2, BreathingCycle cycle, double pressurePa,
             boolean[] only) {
+        return add(t, surfaces, areaM2, cycle, pressurePa, only, null, 1);
+    }
+
+    /**
+     * As {@link #add(Topology, TwoSurfaces, double[], BreathingCycle, double, boolean[])}, the pressure scaled by the
+     * muscle's live action: {@code P m(t) / m_ref}, with m the muscle amplitude of {@code controls} (read at every
+     * evaluation, so a GUI's change takes effect at the next step) and {@code m_ref} the amplitude P was given for.
+     * The abdominal pressure rises because the dome descends into the abdomen: with the muscle off there is none.
+     *
+     * @param controls      the live controls (null: the pressure as given)
+     * @param referenceMusclePa the muscle amplitude at which the rise is P, Pa (&gt; 0)
+     */
+    static double add(Topology t, TwoSurfaces surfaces, double[] areaM2, BreathingCycle cycle, double pressurePa,
+            boolean[] only, DiaphragmControls controls, double referenceMusclePa) {
         double pressed = 0;
         for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
             Node node = t.node(v);
@@ -51,7 +65,8 @@ final class AbdominalPressure {
             double fy = scale * d.y();
             double fz = scale * d.z();
             t.applyForce(node, (time, f, o) -> {
-                double s = cycle.level(time);
+                double s = cycle.level(time)
+                        * (controls == null ? 1 : controls.muscleAmplitudePa() / referenceMusclePa);
                 f[o] += fx * s;
                 f[o + 1] += fy * s;
                 f[o + 2] += fz * s;

@@ -84,8 +84,10 @@ final class DiaphragmSceneBuilder {
             AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.breathing().abdominalPressurePa(), null);
         }
         if (bones != null && spec.cage().contact() && spec.cage().appositionPressurePa() > 0) {
+            // The rise follows the muscle's live action: P at the load's default amplitude, none with the muscle off.
             b.appositionArea = AbdominalPressure.add(b.t, surfaces, b.area, cycle, spec.cage().appositionPressurePa(),
-                    AppositionZone.lowerVertices(surfaces, bones));
+                    AppositionZone.lowerVertices(surfaces, bones), controls,
+                    DiaphragmSetup.defaultMusclePa(spec.boundary().muscleLoad()));
         }
         b.support();
         b.damping();

@@ -187,7 +187,8 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
      * @param appositionPressurePa rise of the abdominal pressure on the zone of apposition at end-inspiration, Pa
      *                             (bone surfaces, contact on; 0 turns it off): it presses the muscle that lies against
      *                             the ribs, cartilages and sternum onto them ({@link AppositionZone}), following the
-     *                             breathing level
+     *                             breathing level and, as the dome's descent that raises it, the muscle's live action
+     *                             (this rise at the muscle load's default amplitude, none with the muscle off)
      */
     public record Cage(Path boxes, Path thorax, boolean contact, double contactStiffnessPaPerM,
             double liverSupportPaPerM, boolean surfaces, double appositionPressurePa) {

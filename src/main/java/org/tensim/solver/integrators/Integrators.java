@@ -77,9 +77,9 @@ public final class Integrators {
      */
     public static final String CONTACT_REAL_TIME = "bdf2-contact-realtime";
     /** Newton iterations per step of {@link #CONTACT_REAL_TIME}. */
-    public static final int CONTACT_REAL_TIME_NEWTON = 2;
+    public static final int CONTACT_REAL_TIME_NEWTON = 1;
     /** CG iterations per Newton iteration of {@link #CONTACT_REAL_TIME}. */
-    public static final int CONTACT_REAL_TIME_KRYLOV = 10;
+    public static final int CONTACT_REAL_TIME_KRYLOV = 8;
 
     private static final Map<String, Supplier<Integrator>> METHODS = new LinkedHashMap<>();
     private static final Map<String, IntegratorChoice> BY_NAME = new LinkedHashMap<>();
@@ -107,7 +107,7 @@ public final class Integrators {
         add(new IntegratorChoice(CONTACT, "bdf2, 3 Newton x 20 CG (contact with bone surfaces)",
                 () -> new PrefactoredBdf2().setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS)
                         .setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS)));
-        add(new IntegratorChoice(CONTACT_REAL_TIME, "bdf2, 2 Newton x 10 CG, links tied in the preconditioner (contact"
+        add(new IntegratorChoice(CONTACT_REAL_TIME, "bdf2, 1 Newton x 8 CG, links tied in the preconditioner (contact"
                 + " with bone surfaces at 25 ms)", () -> new PrefactoredBdf2()
                         .setNewtonIterations(CONTACT_REAL_TIME_NEWTON).setKrylovIterations(CONTACT_REAL_TIME_KRYLOV)
                         .setLinkCoupling(PrefactoredBdf2.CONTACT_LINK_COUPLING)));

@@ -19,7 +19,7 @@ import org.tensim.testsupport.CoarseMeshes;
  * {@code tensim gui --thorax}: the decimated BodyParts3D diaphragm of {@code ThoraxCommandTest} in the shared thorax
  * opens, plays two seconds of wall time (or until its first step) and reports the live readouts (dome descent, contact area, penetration,
  * attached area) in its closing line. With a thorax the window opens with the thorax's real-time setting
- * ({@code bdf2-contact-realtime}: 2 Newton x 10 CG at 25 ms, the links tied in the preconditioner; docs/thorax.md,
+ * ({@code bdf2-contact-realtime}: 1 Newton x 8 CG at 25 ms, the links tied in the preconditioner; docs/thorax.md,
  * "Real time in the thorax"), not the double dome's real-time step that drifts there. Skipped where
  * {@code ../shared} or a display is absent.
  */

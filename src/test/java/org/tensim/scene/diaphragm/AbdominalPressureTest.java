@@ -91,6 +91,26 @@ class AbdominalPressureTest {
     }
 
     @Test
+    void onTheZoneItFollowsTheMusclesLiveAction() {
+        TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(0.04, 8), 0.003);
+        TriangleMesh m = s.mesh();
+        Topology t = new Topology();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
+        }
+        double[] area = SurfaceGeometry.vertexAreas(m);
+        BreathingCycle cycle = BreathingCycle.quiet();
+        DiaphragmControls controls = new DiaphragmControls(1, 19000);
+        double loaded = AbdominalPressure.add(t, s, area, cycle, 300, null, controls, 19000);
+        double peak = cycle.inspirationS();
+        assertEquals(300 * loaded, total(t, peak)[2], 1e-9 * 300 * loaded, "at the reference action, P");
+        controls.setMuscleAmplitudePa(9500);
+        assertEquals(150 * loaded, total(t, peak)[2], 1e-9 * 300 * loaded, "half the action, half the rise");
+        controls.setMuscleAmplitudePa(0);
+        assertEquals(0, total(t, peak)[2], 1e-12, "the muscle off: no rise");
+    }
+
+    @Test
     void onTheDoubleDomeAPressureUnderItHoldsTheDomeUp() throws Exception {
         double[] descent = new double[2];
         double[] pressures = {0, 1000};

@@ -79,8 +79,8 @@ class IntegratorsTest {
                 org.tensim.solver.prefactored.PrefactoredBdf2 b =
                         (org.tensim.solver.prefactored.PrefactoredBdf2) Integrators.create(c.name());
                 assertEquals("bdf2", b.name());
-                assertEquals(2, b.newtonIterations());
-                assertEquals(10, b.krylovIterations());
+                assertEquals(1, b.newtonIterations());
+                assertEquals(8, b.krylovIterations());
                 assertEquals(1, b.linkCoupling());
             } else {
                 assertEquals(c.name(), c.create().name());
