@@ -31,16 +31,22 @@ class AbdominalPressureTest {
         return sum;
     }
 
+    /** A topology of the mesh's vertices, 1 g each, no springs. */
+    private static Topology nodesOf(TriangleMesh m) {
+        Topology t = new Topology();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
+        }
+        return t;
+    }
+
     @Test
     void theForcesSumToThePressureTimesTheFreeLowerAreaUpwardsAndFollowTheBreath() {
         double halfSide = 0.04;
         // A flat 8 x 8 square at z = 0, offset 3 mm down into a shell.
         TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(halfSide, 8), 0.003);
         TriangleMesh m = s.mesh();
-        Topology t = new Topology();
-        for (int v = 0; v < m.vertexCount(); v++) {
-            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
-        }
+        Topology t = nodesOf(m);
         int fixedLower = -1;
         for (int v = 0; v < m.vertexCount() && fixedLower < 0; v++) {
             if (!s.isUpper(v)) {
@@ -69,10 +75,7 @@ class AbdominalPressureTest {
         // The same flat shell; the zone is the lower face's half with x > 0 (and the upper nodes, which never count).
         TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(0.04, 8), 0.003);
         TriangleMesh m = s.mesh();
-        Topology t = new Topology();
-        for (int v = 0; v < m.vertexCount(); v++) {
-            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
-        }
+        Topology t = nodesOf(m);
         boolean[] zone = new boolean[m.vertexCount()];
         double[] area = SurfaceGeometry.vertexAreas(m);
         double inZone = 0;
@@ -94,10 +97,7 @@ class AbdominalPressureTest {
     void onTheZoneItFollowsTheMusclesLiveAction() {
         TwoSurfaces s = TwoSurfaces.offset(FlatMeshes.square(0.04, 8), 0.003);
         TriangleMesh m = s.mesh();
-        Topology t = new Topology();
-        for (int v = 0; v < m.vertexCount(); v++) {
-            t.addNode(m.coord(v, 0), m.coord(v, 1), m.coord(v, 2), 1e-3);
-        }
+        Topology t = nodesOf(m);
         double[] area = SurfaceGeometry.vertexAreas(m);
         BreathingCycle cycle = BreathingCycle.quiet();
         DiaphragmControls controls = new DiaphragmControls(1, 19000);
