@@ -20,6 +20,10 @@ import org.tensim.model.Vec3;
  * the upper face at rest, the face's inward normal across the thickness. The forces sum to P s(t) times the lower
  * face's area projected on each direction. It is a dead load: its direction is the rest one, which the diaphragm's
  * rotations of a few degrees in a quiet breath leave about right (a follower pressure would turn with the face).
+ *
+ * <p>Two uses: on the whole lower face ({@link DiaphragmSpec.Breathing#abdominalPressurePa}, off by default), and on
+ * the zone of apposition only ({@link DiaphragmSpec.Cage#appositionPressurePa}, with bone surfaces), where the rise
+ * also follows the muscle's live action.
  */
 final class AbdominalPressure {
     private AbdominalPressure() {
