@@ -53,7 +53,8 @@ class PresetSceneTest {
                 "--action-line", "0,-10,40", "--cage", "surfaces");
         List<String> inThorax = List.of("--mesh", mesh.toString(), "--labels", labels.toString(), "--thorax",
                 thorax.toString(), "--no-contact", "--contact-stiffness", "2e6", "--liver-support", "1e5",
-                "--abdominal-support", "8e4", "--abdominal-pressure", "250", "--muscle-load", "pressure");
+                "--abdominal-support", "8e4", "--abdominal-pressure", "250", "--apposition-pressure", "120",
+                "--muscle-load", "pressure");
         return List.of(ribs, inThorax);
     }
 
