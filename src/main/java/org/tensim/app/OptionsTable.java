@@ -117,8 +117,8 @@ public final class OptionsTable {
                         + " `summary.json` key that echoes the value a run used. Units and\ndefaults are the"
                         + " options' own (`./tensim CMD --help`).\n\n")
                 .append("## The diaphragm's scene\n\n")
-                .append("One option set for `tensim diaphragm`, `tensim gui`, the studies (`diaphragm resolution-study`,"
-                        + " `realtime-study`),\nthe `\"diaphragm\"` object of sweep and calibration specs and of GUI"
+                .append("One option set for `tensim diaphragm`, `tensim gui`, the studies (`diaphragm"
+                        + " resolution-study`, `realtime-study`),\nthe `\"diaphragm\"` object of sweep and calibration specs and of GUI"
                         + " presets (the name without the dashes).\n\n");
         table(b, "diaphragm", scene, sceneKeys);
         b.append("\n## The diaphragm's run (`tensim diaphragm`)\n\n");
