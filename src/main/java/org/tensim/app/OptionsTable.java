@@ -118,8 +118,8 @@ public final class OptionsTable {
                         + " options' own (`./tensim CMD --help`).\n\n")
                 .append("## The diaphragm's scene\n\n")
                 .append("One option set for `tensim diaphragm`, `tensim gui`, the studies (`diaphragm"
-                        + " resolution-study`, `realtime-study`),\nthe `\"diaphragm\"` object of sweep and calibration specs and of GUI"
-                        + " presets (the name without the dashes).\n\n");
+                        + " resolution-study`, `realtime-study`),\nthe `\"diaphragm\"` object of sweep and calibration"
+                        + " specs and of GUI presets (the name without the dashes).\n\n");
         table(b, "diaphragm", scene, sceneKeys);
         b.append("\n## The diaphragm's run (`tensim diaphragm`)\n\n");
         table(b, "diaphragm", run, sceneKeys);
