@@ -247,7 +247,8 @@ public final class DiaphragmOptions {
                     + " --muscle-load pressure or paper-nodes");
         }
         if (rings != null && rings < 4) {
-            throw new IllegalArgumentException("--rings (rings per face of the generated dome) must be 4 or more, got " + rings);
+            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4 or more,"
+                    + " got " + rings);
         }
         if (thicknessMm != null && !(thicknessMm > 0 && Double.isFinite(thicknessMm))) {
             throw new IllegalArgumentException("--thickness must be a finite number of mm > 0, got " + thicknessMm);
