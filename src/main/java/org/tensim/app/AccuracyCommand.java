@@ -41,7 +41,8 @@ public final class AccuracyCommand implements Callable<Integer> {
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "Scenes, comma-separated (default: all of ${COMPLETION-CANDIDATES}).", completionCandidates = SceneNames.class)
+            description = "Scenes, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
+            completionCandidates = SceneNames.class)
     List<String> scenes = AccuracyScenes.names();
 
     @Option(names = {"--integrator", "--integrators"}, split = ",", paramLabel = "NAME[,NAME...]",
@@ -49,14 +50,17 @@ public final class AccuracyCommand implements Callable<Integer> {
             completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
-    @Option(names = "--dt", paramLabel = "S", description = "Largest time step of the ladder, s (default: the scene's).")
+    @Option(names = "--dt", paramLabel = "S",
+            description = "Largest time step of the ladder, s (default: the scene's).")
     Double largestDt;
 
-    @Option(names = "--rungs", paramLabel = "N", description = "Number of time steps in the ladder (default: the scene's).")
+    @Option(names = "--rungs", paramLabel = "N",
+            description = "Number of time steps in the ladder (default: the scene's).")
     Integer rungs;
 
     @Option(names = "--shell", paramLabel = "MODEL",
-            description = "Tissue model of the shell statics section: material, springs, paper or none (default: ${DEFAULT-VALUE}).")
+            description = "Tissue model of the shell statics section: material, springs, paper or none"
+                    + " (default: ${DEFAULT-VALUE}).")
     String shell = "material";
 
     @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]",

@@ -53,7 +53,8 @@ public final class CalibrateCommand implements Callable<Integer> {
             description = "--make-target: Gaussian noise per coordinate, mm (default: ${DEFAULT-VALUE}).")
     double noiseMm = 0;
 
-    @Option(names = "--seed", paramLabel = "N", description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", paramLabel = "N",
+            description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
     @Override

@@ -29,7 +29,8 @@ public final class CubeCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "cube"));
 
-    @Option(names = {"--seconds", "--duration"}, paramLabel = "S", description = "Simulated time, s (default: ${DEFAULT-VALUE}).")
+    @Option(names = {"--seconds", "--duration"}, paramLabel = "S",
+            description = "Simulated time, s (default: ${DEFAULT-VALUE}).")
     double duration = D.durationS();
 
     @picocli.CommandLine.Mixin
@@ -46,7 +47,8 @@ public final class CubeCommand implements Callable<Integer> {
             description = "Force angle from straight down towards +x, degrees (default: ${DEFAULT-VALUE}).")
     double tilt = D.forceTiltDeg();
 
-    @Option(names = "--stiffness", paramLabel = "N/M", description = "Spring stiffness, N/m (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--stiffness", paramLabel = "N/M",
+            description = "Spring stiffness, N/m (default: ${DEFAULT-VALUE}).")
     double stiffness = D.stiffnessNPerM();
 
     @Option(names = "--damping", paramLabel = "NS/M",

@@ -69,7 +69,8 @@ public final class BenchCommand implements Callable<Integer> {
                     + " evaluations (10 to 5000), or 20 per round with --compare (default: ${DEFAULT-VALUE}).")
     int steps = 0;
 
-    @Option(names = "--repeats", paramLabel = "R", description = "Repetitions; best and median reported (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--repeats", paramLabel = "R",
+            description = "Repetitions; best and median reported (default: ${DEFAULT-VALUE}).")
     int repeats = 5;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Also write DIR/bench.jsonl and DIR/scaling.png.")
@@ -77,12 +78,12 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--compare", split = ",", paramLabel = "A,B",
             description = {"With --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
-                + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (20 when --steps is "
-                + "0, its default) after as many warm-up steps, on the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
-                + "time and load), then the median ratios and how far apart the two ended; a name may end in "
-                + "':serial' or ':shared' (bdf2 with its solves and products' fibres and shear elements on the "
-                + "calling thread, or always shared among the threads; by default shared while measured faster) and "
-                + "in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)."})
+                + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (20 when --steps "
+                + "is 0, its default) after as many warm-up steps, on the first --threads count; one JSON line per "
+                + "round (step and solve ms of each, their ratio A/B, time and load), then the median ratios and how "
+                + "far apart the two ended; a name may end in ':serial' or ':shared' (bdf2 with its solves and "
+                + "products' fibres and shear elements on the calling thread, or always shared among the threads; by "
+                + "default shared while measured faster) and in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)."})
     List<String> compare;
 
     @Override

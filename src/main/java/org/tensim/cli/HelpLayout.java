@@ -14,8 +14,9 @@ import picocli.CommandLine.Model.PositionalParamSpec;
  * The usage help of every command (a picocli help factory, {@link #install}): picocli's layout with two changes.
  * Text is wrapped at spaces only, so that no word or value ({@code ~/.config}, {@code mm.json}, {@code 0..3}) is
  * split across two lines: picocli wraps where {@link java.text.BreakIterator} allows, which includes after a
- * '.', a '/' or a ','. And an option's former names ({@link #FORMER_NAMES}), still accepted so that scripts keep
- * working, are left out of the option list.
+ * '.', a '/' or a ','. Paragraphs (the elements of a description) are set apart by a blank line. And an
+ * option's former names ({@link #FORMER_NAMES}), still accepted so that scripts keep working, are left out of
+ * the help.
  */
 public final class HelpLayout extends CommandLine.Help {
     /** Former option names, still accepted, each to the name that replaced it (the one the help shows). */
@@ -59,14 +60,23 @@ public final class HelpLayout extends CommandLine.Help {
         return paragraphs(commandSpec().usageMessage().customSynopsis(), params);
     }
 
-    /** Each element a paragraph over the whole width, as picocli's own join does. */
+    /**
+     * Each element a paragraph over the whole width, as picocli's own join does, with a blank line between two
+     * paragraphs.
+     */
     private String paragraphs(String[] values, Object... params) {
         StringBuilder sb = new StringBuilder();
         if (values != null) {
             TextTable t = new SpaceWrapped(colorScheme(), new Column(width(), 0, Column.Overflow.WRAP));
             t.indentWrappedLines = 0;
+            String previous = "";
             for (String v : values) {
-                t.addRowValues(format(v, params));
+                String text = format(v, params);
+                if (!previous.isBlank() && !text.isBlank()) {
+                    t.addRowValues("");
+                }
+                t.addRowValues(text);
+                previous = text;
             }
             t.toString(sb);
         }
@@ -122,8 +132,8 @@ public final class HelpLayout extends CommandLine.Help {
     }
 
     @Override
-    public Layout createDefaultLayout(java.util.List<OptionSpec> options, java.util.List<PositionalParamSpec> positionals,
-            ColorScheme scheme) {
+    public Layout createDefaultLayout(java.util.List<OptionSpec> options,
+            java.util.List<PositionalParamSpec> positionals, ColorScheme scheme) {
         TextTable made = TextTable.forDefaultColumns(scheme, calcLongOptionColumnWidth(options, positionals, scheme),
                 width());
         Column[] columns = made.columns();

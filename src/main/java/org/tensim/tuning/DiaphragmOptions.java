@@ -105,10 +105,12 @@ public final class DiaphragmOptions {
     Double appositionPa;
 
     @Option(names = "--model", paramLabel = "NAME",
-            description = "The model: default (the material shell, the attachment band, the fibres' active tension) or paper"
+            description = "The model: default (the material shell, the attachment band, the fibres' active"
+                    + " tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
                     + " vertical action lines with per-node forces, no contact); the paper's model sets"
-                    + " --tissue-model, --attachment and --muscle-load, which must then be left out (default: default).")
+                    + " --tissue-model, --attachment and --muscle-load, which must then be left out (default:"
+                    + " default).")
     public String model;
 
     @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
@@ -132,7 +134,8 @@ public final class DiaphragmOptions {
     Double attachMm;
 
     @Option(names = "--attachment", paramLabel = "MODEL", converter = ModelNames.Attachments.class,
-            description = "The attachment: band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
+            description = "The attachment: band (elastic ties, a stiffness per unit area) or paper-threshold"
+                    + " (the paper's: nodes"
                     + " within the threshold driven with the ribs) (default: band).")
     BoundaryConditions.Attachment attachment;
 
@@ -147,7 +150,8 @@ public final class DiaphragmOptions {
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL", converter = ModelNames.MuscleLoads.class,
-            description = "The muscle load: fibres (active tension along the fibres to the central tendon, 19 kPa of fibre stress),"
+            description = "The muscle load: fibres (active tension along the fibres to the central tendon, 19"
+                    + " kPa of fibre stress),"
                     + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
                     + " paper's per-node forces, 2.6 kPa) (default: fibres).")
     public BoundaryConditions.MuscleLoad muscleLoad;
@@ -247,8 +251,8 @@ public final class DiaphragmOptions {
                     + " --muscle-load pressure or paper-nodes");
         }
         if (rings != null && rings < 4) {
-            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4 or more,"
-                    + " got " + rings);
+            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4"
+                    + " or more, got " + rings);
         }
         if (thicknessMm != null && !(thicknessMm > 0 && Double.isFinite(thicknessMm))) {
             throw new IllegalArgumentException("--thickness must be a finite number of mm > 0, got " + thicknessMm);

@@ -111,7 +111,8 @@ class FormerOptionNamesTest {
         assertEquals(12, now.mesh().rings());
         // The former names are still options of the diaphragm but not listed as its keys.
         assertTrue(DiaphragmOptions.names().contains("muscle-action") && DiaphragmOptions.names().contains("rings"));
-        assertTrue(!DiaphragmOptions.names().contains("muscle-force") && !DiaphragmOptions.names().contains("resolution"));
+        assertTrue(!DiaphragmOptions.names().contains("muscle-force")
+                && !DiaphragmOptions.names().contains("resolution"));
     }
 
     @Test

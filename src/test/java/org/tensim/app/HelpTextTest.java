@@ -167,7 +167,8 @@ class HelpTextTest {
 
     @Test
     void theChecksRefuseFragments() {
-        assertEquals("ends mid-sentence ('e')", notWhole("The paper's cube experiment: a mass-spring and a tensegrity cube"));
+        assertEquals("ends mid-sentence ('e')",
+                notWhole("The paper's cube experiment: a mass-spring and a tensegrity cube"));
         assertTrue(notWhole("(10 x 10 x 10 m, bottom fixed), identical but for the six rigid links, under") != null);
         assertTrue(notWhole("central tendon as tensegrity (docs/diaphragm.md.") != null, "an open bracket");
         assertTrue(notWhole("simulated time, s (default: 0.5)") != null);
@@ -176,7 +177,8 @@ class HelpTextTest {
         assertEquals(null, notWhole(""));
         assertFalse(words("restored from ~/.\nconfig/tensim/").equals(words("restored from ~/.config/tensim/")));
         assertEquals(words("a  b\n   c"), List.of("a", "b", "c"));
-        String list = "Usage: x\nCommands:\n  cube   The paper's cube, a mass-spring and a\n           tensegrity cube.\n"
+        String list = "Usage: x\nCommands:\n  cube   The paper's cube, a mass-spring and a\n"
+                + "           tensegrity cube.\n"
                 + "  gui    Interactive.\n";
         assertEquals("The paper's cube, a mass-spring and a tensegrity cube.", summaryIn(list, "cube"));
         assertEquals("Interactive.", summaryIn(list, "gui"));
@@ -210,7 +212,8 @@ class HelpTextTest {
         assertTrue(all.contains("bad description: ends mid-sentence"), all);
         assertTrue(all.contains("bad --boxes: ends mid-sentence"), all);
         assertTrue(all.contains("sub: the first paragraph of the description, its summary, must be"), all);
-        assertTrue(all.contains("bad: the words at 80 columns differ"), "picocli's own wrapping splits a value: " + all);
+        assertTrue(all.contains("bad: the words at 80 columns differ"),
+                "picocli's own wrapping splits a value: " + all);
         // The project's layout keeps every word whole; the fragments are still fragments.
         String ours = String.join("\n", problems(HelpLayout.install(new CommandLine(new Bad()))));
         assertFalse(ours.contains("the words at 80 columns differ"), ours);

@@ -33,14 +33,16 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--scene", paramLabel = "NAME", description = "Scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).",
+    @Option(names = "--scene", paramLabel = "NAME",
+            description = "Scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).",
             completionCandidates = SceneNames.class)
     String scene = TunableScenes.names().get(0);
 
     @picocli.CommandLine.Mixin
     DiaphragmOptions options = new DiaphragmOptions();
 
-    @Option(names = "--preset", paramLabel = "FILE", description = "Load this JSON preset at start (after the last-used parameters).")
+    @Option(names = "--preset", paramLabel = "FILE",
+            description = "Load this JSON preset at start (after the last-used parameters).")
     Path preset;
 
     @Option(names = "--fresh", description = "Start from the defaults: do not restore the last-used parameters.")
@@ -57,11 +59,13 @@ public final class GuiCommand implements Callable<Integer> {
             description = "Save a PNG of the window once --after simulated seconds have run, then exit.")
     Path screenshot;
 
-    @Option(names = "--after", paramLabel = "S", description = "Simulated time before --screenshot, s (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--after", paramLabel = "S",
+            description = "Simulated time before --screenshot, s (default: ${DEFAULT-VALUE}).")
     double after = 2;
 
     @Option(names = "--run-for", paramLabel = "S",
-            description = {"Play for S seconds of wall time once the view shows (on until the first step if none was done"
+            description = {"Play for S seconds of wall time once the view shows (on until the first step if none was"
+                    + " done"
                     + " by then), close the window and print a JSON"
                     + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
                     + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)."})
