@@ -40,12 +40,13 @@ public final class AccuracyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
+    @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]", hideParamSyntax = true,
             description = "Scenes, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
             completionCandidates = SceneNames.class)
     List<String> scenes = AccuracyScenes.names();
 
     @Option(names = {"--integrator", "--integrators"}, split = ",", paramLabel = "NAME[,NAME...]",
+            hideParamSyntax = true,
             description = "Integrators, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
             completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
@@ -63,7 +64,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE}).")
     String shell = "material";
 
-    @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]",
+    @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
             description = "Ring counts of the clamped plate, coarsest first (default: 6,10,14,20,28,43; 43 is the "
                     + "default diaphragm's element size).")
     int[] shellRings = ShellStudy.PLATE_RINGS;

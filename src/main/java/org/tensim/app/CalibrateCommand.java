@@ -42,7 +42,7 @@ public final class CalibrateCommand implements Callable<Integer> {
                     + " with --noise-mm, as an OBJ in mm.")
     Path makeTarget;
 
-    @Option(names = "--truth", paramLabel = "NAME=VALUE", split = ",",
+    @Option(names = "--truth", paramLabel = "NAME=VALUE[,NAME=VALUE...]", split = ",", hideParamSyntax = true,
             description = "--make-target: parameter values of the run (others: the spec's fixed values or defaults).")
     Map<String, Double> truth = new LinkedHashMap<>();
 

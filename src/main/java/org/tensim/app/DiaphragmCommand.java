@@ -58,7 +58,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "Scale of the mid-inspiration displacement vectors (default: ${DEFAULT-VALUE}, as Fig. 5).")
     double vectorScale = 100;
 
-    @Option(names = "--csv-times", paramLabel = "S", split = ",",
+    @Option(names = "--csv-times", paramLabel = "S[,S...]", split = ",", hideParamSyntax = true,
             description = "Times of displacements.csv, s (default: end-inspiration and end of the last cycle).")
     double[] csvTimes;
 

@@ -44,7 +44,7 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
             + " ${DEFAULT-VALUE}).")
     double seconds = 4;
 
-    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
             description = "Ring counts, ascending (default: 10,14,20,28,43).")
     int[] studyRings;
 

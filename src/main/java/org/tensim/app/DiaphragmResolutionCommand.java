@@ -46,7 +46,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             + " inspiration (default: one inspiration).")
     double seconds = 4;
 
-    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
             description = "Ring counts of the generated double domes, ascending, the finest as reference, no pick"
                     + " (default: 10,14,20,28,43 with the pick).")
     int[] studyRings;
@@ -55,7 +55,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             description = "Relative RMS error under which a coarser model is accepted (default: ${DEFAULT-VALUE}).")
     double tolerance = ResolutionStudy.TOLERANCE;
 
-    @Option(names = "--cells", paramLabel = "MM", split = ",",
+    @Option(names = "--cells", paramLabel = "MM[,MM...]", split = ",", hideParamSyntax = true,
             description = "With --mesh: vertex-clustering cell sizes or, with --decimation quadric, target edge"
                     + " lengths, mm (default: 4, 2.8 and 2 times the mesh's mean edge length).")
     double[] cellsMm;

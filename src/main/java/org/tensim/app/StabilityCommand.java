@@ -37,15 +37,16 @@ public final class StabilityCommand implements Callable<Integer> {
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = {"--integrator", "--integrators"}, split = ",", paramLabel = "NAME[,NAME...]",
+            hideParamSyntax = true,
             description = "Integrators, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
             completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
-    @Option(names = "--omega", split = ",", paramLabel = "W[,W...]",
+    @Option(names = "--omega", split = ",", paramLabel = "W[,W...]", hideParamSyntax = true,
             description = "Natural frequencies sqrt(k/m), rad/s, undamped (default: ${DEFAULT-VALUE}).")
     List<Double> omegas = List.of(1.0, 10.0, 100.0, 1000.0);
 
-    @Option(names = "--zeta", split = ",", paramLabel = "Z[,Z...]",
+    @Option(names = "--zeta", split = ",", paramLabel = "Z[,Z...]", hideParamSyntax = true,
             description = "Damping ratios at w = 10 rad/s (default: ${DEFAULT-VALUE}).")
     List<Double> zetas = List.of(0.0, 0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0);
 

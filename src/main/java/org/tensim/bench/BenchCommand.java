@@ -33,11 +33,11 @@ public final class BenchCommand implements Callable<Integer> {
             description = "Scene: lattice or diaphragm (default: ${DEFAULT-VALUE}).")
     String scene = "lattice";
 
-    @Option(names = {"--size", "--n"}, split = ",", paramLabel = "N[,N...]",
+    @Option(names = {"--size", "--n"}, split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
             description = "Lattice sizes, nodes per side (default: ${DEFAULT-VALUE}).")
     List<Integer> sizes = List.of(11, 21, 31);
 
-    @Option(names = "--threads", split = ",", paramLabel = "T[,T...]",
+    @Option(names = "--threads", split = ",", paramLabel = "T[,T...]", hideParamSyntax = true,
             description = "Thread counts (default: all cores, here ${DEFAULT-VALUE}).")
     List<Integer> threads = List.of(Parallelism.availableCores());
 
@@ -76,7 +76,7 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "Also write DIR/bench.jsonl and DIR/scaling.png.")
     Path out;
 
-    @Option(names = "--compare", split = ",", paramLabel = "A,B",
+    @Option(names = "--compare", split = ",", paramLabel = "A,B", hideParamSyntax = true,
             description = {"With --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
                 + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (20 when --steps "
                 + "is 0, its default) after as many warm-up steps, on the first --threads count; one JSON line per "

@@ -165,11 +165,11 @@ public final class DiaphragmOptions {
                     + " dropped; 0 keeps every piece (default: 0.01).")
     Double minPieceFraction;
 
-    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",",
+    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",", hideParamSyntax = true,
             description = "Normal of the muscle/tendon plane, pointing to the tendon (default: 0,0,1, superior).")
     double[] tendonNormal;
 
-    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",",
+    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",", hideParamSyntax = true,
             description = "A point of the muscle/tendon plane, mm, mesh frame (default: placed so that the tendon"
                     + " has --tendon-fraction of the upper surface).")
     double[] tendonPointMm;
