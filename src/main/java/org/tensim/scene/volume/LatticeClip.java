@@ -15,13 +15,24 @@ import org.tensim.scene.thorax.TriangleTree;
  * a cell the surface may cross is sampled at the centres of {@code s^3} sub-cells, and its fraction is the share of
  * them inside. Features thinner than a sub-cell can be missed.
  *
- * <p>Closedness: at the centres of cells more than two cells from the surface, a closed surface has w within
- * {@value #WINDING_TOLERANCE} of 0 or 1 (the tolerance {@code DistanceGrid} uses); the largest deviation is
- * reported, and a larger one means the inside is ambiguous (an open surface).
+ * <p>Closedness: at the centres of cells far from the surface (more than two cells, and more than
+ * {@value #FAR_FRACTION} of the bounds' diagonal), a closed surface has w within
+ * {@value #WINDING_TOLERANCE} of 0 or 1; the largest deviation is reported, and a larger one means the inside is
+ * ambiguous (an open surface).
  */
 final class LatticeClip {
-    /** Largest deviation of |w| from 0 or 1, two cells off the surface, of a surface taken as closed. */
-    static final double WINDING_TOLERANCE = 0.05;
+    /**
+     * Largest deviation of |w| from 0 or 1, two cells off the surface, of a surface taken as closed. The dipole
+     * approximation alone leaves up to 0.024 on the closed shared rib r7, and the shared lobes' and liver's few
+     * boundary edges up to 0.04-0.07; an open sheet or a box without a face leaves 0.17 or more.
+     */
+    static final double WINDING_TOLERANCE = 0.1;
+    /**
+     * The closedness check looks at cells farther from the surface than this fraction of its bounds' diagonal (and
+     * than two cells): a small hole's effect on w fades with the square of the distance, so a finer lattice does not
+     * bring the check closer to the holes.
+     */
+    static final double FAR_FRACTION = 0.1;
     /** Most cells the lattice's box may have (8 bytes each while building). */
     static final long MAX_CELLS = 20_000_000L;
     /** Far-field ratio of the winding number's dipole approximation (as DistanceGrid's). */
@@ -58,51 +69,80 @@ final class LatticeClip {
         }
         double[] o = {b[0], b[1], b[2]};
         TriangleTree tree = new TriangleTree(mesh.coordinates(), mesh.triangles(), BETA);
-        int[] stack = tree.newStack();
         double[] fill = new double[(int) total];
         boolean[] holds = new boolean[(int) total];
         for (int v = 0; v < mesh.vertexCount(); v++) {
             holds[cellOf(mesh, v, o, h, n)] = true;
         }
         double halfDiagonal = h * Math.sqrt(3) / 2 * (1 + 1e-9);
+        double far = Math.max(2 * h, FAR_FRACTION * Math.sqrt(sq(b[3] - b[0]) + sq(b[4] - b[1]) + sq(b[5] - b[2])));
+        // slabs of constant k in parallel, each with its own traversal stack; the cells' results do not depend on
+        // the order, and the slabs' tallies are merged in k order, so the result is the same on any thread count
+        Slab[] slabs = new Slab[n[2]];
+        java.util.stream.IntStream.range(0, n[2]).parallel().forEach(k -> slabs[k] = slab(tree, k, n, o, h, samples,
+                halfDiagonal, far, fill));
         double worst = 0;
         double[] worstPoint = null;
         long positive = 0;
         long negative = 0;
         int crossed = 0;
-        int c = 0;
-        for (int k = 0; k < n[2]; k++) {
-            for (int j = 0; j < n[1]; j++) {
-                for (int i = 0; i < n[0]; i++, c++) {
-                    double x = o[0] + (i + 0.5) * h;
-                    double y = o[1] + (j + 0.5) * h;
-                    double z = o[2] + (k + 0.5) * h;
-                    double d = tree.distance(x, y, z, stack);
-                    if (d <= halfDiagonal) {
-                        crossed++;
-                        fill[c] = sampled(tree, stack, x - h / 2, y - h / 2, z - h / 2, h, samples);
-                        continue;
+        for (Slab sl : slabs) {
+            if (sl.worstPoint != null && sl.worst > worst) {
+                worst = sl.worst;
+                worstPoint = sl.worstPoint;
+            }
+            positive += sl.positive;
+            negative += sl.negative;
+            crossed += sl.crossed;
+        }
+        return new Result(o, n[0], n[1], n[2], h, fill, holds, crossed, worst, worstPoint, negative > positive);
+    }
+
+    /** What one slab of cells found. */
+    private static final class Slab {
+        double worst;
+        double[] worstPoint;
+        long positive;
+        long negative;
+        int crossed;
+    }
+
+    /** Fills the cells of slab k (constant z index) and tallies what they show. */
+    private static Slab slab(TriangleTree tree, int k, int[] n, double[] o, double h, int samples, double halfDiagonal,
+            double far, double[] fill) {
+        Slab s = new Slab();
+        int[] stack = tree.newStack();
+        int c = k * n[1] * n[0];
+        for (int j = 0; j < n[1]; j++) {
+            for (int i = 0; i < n[0]; i++, c++) {
+                double x = o[0] + (i + 0.5) * h;
+                double y = o[1] + (j + 0.5) * h;
+                double z = o[2] + (k + 0.5) * h;
+                double d = tree.distance(x, y, z, stack);
+                if (d <= halfDiagonal) {
+                    s.crossed++;
+                    fill[c] = sampled(tree, stack, x - h / 2, y - h / 2, z - h / 2, h, samples);
+                    continue;
+                }
+                double w = tree.winding(x, y, z, stack);
+                if (Math.abs(w) > 0.5) {
+                    fill[c] = 1;
+                    if (w > 0) {
+                        s.positive++;
+                    } else {
+                        s.negative++;
                     }
-                    double w = tree.winding(x, y, z, stack);
-                    if (Math.abs(w) > 0.5) {
-                        fill[c] = 1;
-                        if (w > 0) {
-                            positive++;
-                        } else {
-                            negative++;
-                        }
-                    }
-                    if (d > 2 * h) {
-                        double dev = Math.min(Math.abs(w), Math.abs(Math.abs(w) - 1));
-                        if (dev > worst) {
-                            worst = dev;
-                            worstPoint = new double[] {x, y, z, w};
-                        }
+                }
+                if (d > far) {
+                    double dev = Math.min(Math.abs(w), Math.abs(Math.abs(w) - 1));
+                    if (dev > s.worst) {
+                        s.worst = dev;
+                        s.worstPoint = new double[] {x, y, z, w};
                     }
                 }
             }
         }
-        return new Result(o, n[0], n[1], n[2], h, fill, holds, crossed, worst, worstPoint, negative > positive);
+        return s;
     }
 
     /** The share of a cell's s^3 sub-cell centres inside (|w| &gt; 1/2); the cell's low corner at (x, y, z). */
@@ -127,6 +167,10 @@ final class LatticeClip {
             ijk[a] = cellIndex(mesh.coord(v, a), o[a], h, n[a]);
         }
         return (ijk[2] * n[1] + ijk[1]) * n[0] + ijk[0];
+    }
+
+    private static double sq(double v) {
+        return v * v;
     }
 
     /** floor((x - o) / h), clamped to [0, n - 1] (a point on the lattice's far face belongs to its last cell). */

@@ -139,7 +139,7 @@ public final class VolumeBody {
         if (clip.maxWindingDeviation() >= LatticeClip.WINDING_TOLERANCE) {
             double[] w = clip.worstPoint();
             throw new IllegalArgumentException(String.format(Locale.ROOT, "%s is open: its winding number is %.3f"
-                    + " at (%.4g, %.4g, %.4g) mm, more than two cells from it, where a closed surface gives 0 or 1"
+                    + " at (%.4g, %.4g, %.4g) mm, far from it, where a closed surface gives 0 or 1"
                     + " (it has %d boundary edges): expected a closed surface, or holes smaller than a few cells",
                     name, w[3], w[0] * 1e3, w[1] * 1e3, w[2] * 1e3, boundary));
         }

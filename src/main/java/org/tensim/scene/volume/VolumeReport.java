@@ -11,8 +11,9 @@ import java.util.Map;
  * @param surfaceTriangles     triangles of the surface
  * @param boundaryEdges        edges of the surface used by one triangle only (holes; tolerated while the winding
  *                             number stays unambiguous)
- * @param maxWindingDeviation  largest distance of |w| from 0 or 1 at cell centres more than two cells from the
- *                             surface (0 for a closed surface; NaN when no cell is that far)
+ * @param maxWindingDeviation  largest distance of |w| from 0 or 1 at cell centres far from the surface (more than
+ *                             two cells and a tenth of its bounds' diagonal): near 0 for a closed surface; NaN when
+ *                             no cell is that far
  * @param inwardWound          whether the surface's triangles face inwards (w near -1 inside); filled all the same
  * @param cellSizeM            h, m
  * @param latticeCells         cells of the lattice's box, nx ny nz
@@ -63,7 +64,7 @@ public record VolumeReport(int surfaceVertices, int surfaceTriangles, int bounda
                 nodes, springs, cells, cellSizeM * 1e3, crossedCells, latticeVolumeM3 * 1e6, surfaceVolumeM3 * 1e6,
                 massKg, surfaceVertices, surfaceTriangles, boundaryEdges,
                 Double.isFinite(maxWindingDeviation) ? String.format(Locale.ROOT, "within %.3f of 0 or 1",
-                        maxWindingDeviation) : "not checked (no cell two cells from the surface)",
+                        maxWindingDeviation) : "not checked (no cell far from the surface)",
                 inwardWound ? ", triangles wound inwards" : "", fit.key(), modelPoisson, requestedPoisson);
     }
 }
