@@ -91,9 +91,10 @@ public final class VolumeStudy {
         double d = depthM;
         double len = 10 * d;
         double h = d / cellsAcross;
-        TriangleMesh surface = BoxSurface.of(len, d, d, h / 2);
+        TriangleMesh surface = BoxSurface.of(len, d, d, h);
         Topology t = new Topology();
-        VolumeBody body = VolumeBody.build(t, surface, p.withCellSize(h), "the cantilever");
+        // the beam fits the lattice: every cell is full, which one sample at its centre tells
+        VolumeBody body = VolumeBody.build(t, surface, p.withCellSize(h).withFillSamples(1), "the cantilever");
         boolean[] fixed = new boolean[3 * t.nodeCount()];
         for (int axis = 0; axis < 3; axis++) {
             VolumeStatics.fixPlane(t, fixed, 0, 0, axis, len);

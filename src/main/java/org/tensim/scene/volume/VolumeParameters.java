@@ -53,6 +53,11 @@ public record VolumeParameters(double cellSizeM, double youngPa, double poisson,
         return new VolumeParameters(cellSizeM, youngPa, poisson, densityKgPerM3, s, fit, fillSamples);
     }
 
+    /** The same with another number of fill samples per cell axis (1 to 16). */
+    public VolumeParameters withFillSamples(int n) {
+        return new VolumeParameters(cellSizeM, youngPa, poisson, densityKgPerM3, dampingTimeS, fit, n);
+    }
+
     /** The springs' material. */
     public LatticeMaterial material() {
         return new LatticeMaterial(youngPa, poisson, fit);
