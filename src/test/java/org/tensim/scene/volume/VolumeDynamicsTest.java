@@ -1,6 +1,7 @@
 package org.tensim.scene.volume;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -19,7 +20,8 @@ import org.tensim.solver.integrators.Integrators;
  */
 class VolumeDynamicsTest {
     private static final double H = 0.01;
-    private static final double G = 0.2;
+    /** A small gravity, m/s^2: the sag (0.8 mm on 80 mm) stays in the small-displacement range. */
+    private static final double G = 0.02;
 
     static List<String> names() {
         return Integrators.names();
@@ -69,7 +71,10 @@ class VolumeDynamicsTest {
         body[0].surfaceMapping().apply(moved, surface);
         double tip = lowest(staticSurface);
         double reached = lowest(surface);
-        assertEquals(tip, reached, 0.01 * Math.abs(tip), integrator + ": the surface's lowest sag at rest, m");
+        System.out.printf("%s: lowest surface sag at rest %.6g m, statics %.6g m (%d steps of %.3g ms)%n", integrator,
+                reached, tip, sim.steps(), dt * 1e3);
+        assertTrue(tip < -1e-4, "the beam sags: " + tip);
+        assertEquals(tip, reached, 0.002 * Math.abs(tip), integrator + ": the surface's lowest sag at rest, m");
     }
 
     private static double lowest(double[] u) {
