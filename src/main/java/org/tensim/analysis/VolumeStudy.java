@@ -85,6 +85,21 @@ public final class VolumeStudy {
      * @param forceN F, N (&gt; 0)
      */
     public static Cantilever cantilever(VolumeParameters p, double depthM, double forceN, int cellsAcross) {
+        return cantilever(p, depthM, forceN, cellsAcross, false);
+    }
+
+    /**
+     * As {@link #cantilever(VolumeParameters, double, double, int)}; with {@code slidingRoot} the root's nodes hold
+     * only their axial displacement (and the root's mid-planes their transverse ones), so that the root can contract
+     * sideways as the beam's fibres do: the root of Euler-Bernoulli's and Timoshenko's beams (needs an even
+     * {@code cellsAcross}, for nodes on the mid-planes).
+     */
+    public static Cantilever cantilever(VolumeParameters p, double depthM, double forceN, int cellsAcross,
+            boolean slidingRoot) {
+        if (slidingRoot && cellsAcross % 2 != 0) {
+            throw new IllegalArgumentException("a sliding root needs an even number of cells across, got "
+                    + cellsAcross);
+        }
         Check.positive("cantilever depth", "m", depthM);
         Check.positive("cantilever tip force", "N", forceN);
         Check.atLeast("cantilever cells across", cellsAcross, 1);
@@ -96,8 +111,18 @@ public final class VolumeStudy {
         // the beam fits the lattice: every cell is full, which one sample at its centre tells
         VolumeBody body = VolumeBody.build(t, surface, p.withCellSize(h).withFillSamples(1), "the cantilever");
         boolean[] fixed = new boolean[3 * t.nodeCount()];
-        for (int axis = 0; axis < 3; axis++) {
-            VolumeStatics.fixPlane(t, fixed, 0, 0, axis, len);
+        if (slidingRoot) {
+            boolean[] root = new boolean[fixed.length];
+            VolumeStatics.fixPlane(t, fixed, 0, 0, 0, len);
+            VolumeStatics.fixPlane(t, root, 1, d / 2, 1, len);
+            VolumeStatics.fixPlane(t, root, 2, d / 2, 2, len);
+            for (int i = 0; i < fixed.length; i++) {
+                fixed[i] |= root[i] && fixed[i - i % 3];
+            }
+        } else {
+            for (int axis = 0; axis < 3; axis++) {
+                VolumeStatics.fixPlane(t, fixed, 0, 0, axis, len);
+            }
         }
         double eps = 1e-9 * len;
         double[] f = VolumeStatics.traction(surface, (x, y, z) -> x >= len - eps, new double[] {0, 0,

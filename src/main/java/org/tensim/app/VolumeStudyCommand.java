@@ -15,6 +15,12 @@ import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
+import org.tensim.io.mesh.MeshLoader;
+import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.model.Topology;
+import org.tensim.scene.volume.VolumeBody;
+import org.tensim.scene.volume.VolumeReport;
 import org.tensim.scene.volume.SpringFit;
 import org.tensim.scene.volume.VolumeParameters;
 import picocli.CommandLine.Command;
@@ -30,7 +36,8 @@ import picocli.CommandLine.Option;
             "against nu. Prints the tables and the measured orders. Writes",
             "volume-cantilever.csv, volume-block.csv and volume-convergence.png to --out.",
             "The last line is one JSON object with, per spring fit, the errors, the orders",
-            "and the lateral strains (the summary's fields)."})
+            "and the lateral strains (the summary's fields). With --mesh, fills each surface",
+            "at each --cell size instead and reports the builds (volume-meshes.csv)."})
 public final class VolumeStudyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -55,12 +62,29 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             description = "spring fits: isotropic, axial (default: ${DEFAULT-VALUE})")
     List<String> fits = List.of("isotropic", "axial");
 
+    @Option(names = "--sliding-root", description = "hold the cantilever's root only along the beam (and its"
+            + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does")
+    boolean slidingRoot;
+
+    @Option(names = "--mesh", split = ",", paramLabel = "FILE[,FILE...]",
+            description = "closed surfaces (OBJ, STL, OFF) to fill at each --cell size, reporting the build instead of"
+                    + " the known answers")
+    List<Path> meshes = List.of();
+
+    @Option(names = "--units", paramLabel = "UNITS", description = "length unit of --mesh files: mm or m (default:"
+            + " ${DEFAULT-VALUE})")
+    String units = "mm";
+
+    @Option(names = "--cell", split = ",", paramLabel = "M[,M...]",
+            description = "cell sizes for --mesh, m (default: ${DEFAULT-VALUE})")
+    List<Double> cells = List.of(0.01, 0.005);
+
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "volume-study"));
 
     /** The files this command writes into --out (docs/outputs.md). */
     static final List<String> OUTPUTS = List.of("volume-cantilever.csv", "volume-block.csv",
-            "volume-convergence.png");
+            "volume-convergence.png", "volume-meshes.csv");
 
     /** Beam depth, m, and tip force, N (linear statics: the errors do not depend on them). */
     private static final double DEPTH_M = 0.02;
@@ -81,12 +105,59 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                         + " last, got " + cantileverCells);
             }
         }
+        if (slidingRoot && cantileverCells.stream().anyMatch(n -> n % 2 != 0)) {
+            throw new IllegalArgumentException("--sliding-root needs even --cantilever-cells, got " + cantileverCells);
+        }
         for (double c : blockCells) {
             if (!(c > 0)) {
                 throw new IllegalArgumentException("--block-cells must be > 0, got " + c);
             }
         }
+        if (!meshes.isEmpty()) {
+            MeshUnits u = MeshUnits.parse(units);
+            for (double c : cells) {
+                if (!(c > 0)) {
+                    throw new IllegalArgumentException("--cell must be > 0 m, got " + c);
+                }
+            }
+            return RunFolder.run(out.folder(spec), "volume-study", OUTPUTS, run -> fill(run, params, u));
+        }
         return RunFolder.run(out.folder(spec), "volume-study", OUTPUTS, run -> study(run, params));
+    }
+
+    /** Fills each mesh at each cell size with the first fit, and reports the builds. */
+    private void fill(RunFolder run, List<VolumeParameters> params, MeshUnits u) throws Exception {
+        List<Map<String, Object>> rows = new ArrayList<>();
+        try (CsvWriter csv = run.csv("volume-meshes.csv", List.of("mesh", "cell_m", "nodes", "springs", "cells",
+                "crossed_cells", "boundary_edges", "max_winding_deviation", "lattice_volume_m3", "surface_volume_m3",
+                "build_s"), 1)) {
+            for (Path file : meshes) {
+                TriangleMesh mesh = MeshLoader.load(file, u).mesh();
+                for (double c : cells) {
+                    long t0 = System.nanoTime();
+                    VolumeBody body = VolumeBody.build(new Topology(), mesh, params.get(0).withCellSize(c),
+                            file.toString());
+                    double seconds = (System.nanoTime() - t0) * 1e-9;
+                    VolumeReport r = body.report();
+                    csv.rowText(file.getFileName().toString(), Double.toString(c), Integer.toString(r.nodes()),
+                            Integer.toString(r.springs()), Integer.toString(r.cells()),
+                            Integer.toString(r.crossedCells()), Integer.toString(r.boundaryEdges()),
+                            Double.toString(r.maxWindingDeviation()), Double.toString(r.latticeVolumeM3()),
+                            Double.toString(r.surfaceVolumeM3()), Double.toString(seconds));
+                    System.out.printf("%s at %.3g mm (%.1f s): %s%n", file.getFileName(), c * 1e3, seconds,
+                            r.describe());
+                    Map<String, Object> m = new LinkedHashMap<>();
+                    m.put("mesh", file.toString());
+                    m.put("build_s", seconds);
+                    m.putAll(r.toMap());
+                    rows.add(m);
+                }
+            }
+        }
+        Map<String, Object> json = new LinkedHashMap<>();
+        json.put("meshes", rows);
+        run.finish(RunStatus.OK, json);
+        System.out.println(Json.line(json));
     }
 
     private void study(RunFolder run, List<VolumeParameters> params) throws IOException {
@@ -122,7 +193,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         List<Double> err = new ArrayList<>();
         List<Double> size = new ArrayList<>();
         for (int n : cantileverCells) {
-            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n);
+            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n, slidingRoot);
             csv.rowText(fit, Integer.toString(n), Double.toString(c.cellM()), Integer.toString(c.nodes()),
                     Integer.toString(c.springs()), Double.toString(c.deflectionM()),
                     Double.toString(c.eulerBernoulliM()), Double.toString(c.timoshenkoM()),
@@ -136,6 +207,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             size.add(1.0 / n);
         }
         Map<String, Object> m = new LinkedHashMap<>();
+        m.put("root", slidingRoot ? "sliding" : "clamped");
         m.put("cells_across", cantileverCells);
         m.put("error_vs_euler_bernoulli", err);
         m.put("finest_error", err.get(err.size() - 1));
