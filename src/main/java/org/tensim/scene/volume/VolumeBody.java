@@ -1,10 +1,6 @@
 package org.tensim.scene.volume;
 
-import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
@@ -21,8 +17,9 @@ import org.tensim.model.Topology;
  * a cell of its own; a kept cell counts with {@code phi_eff = max(phi, 1 / s^3)}, s the fill samples per axis;</li>
  * <li>adds a node at every corner of a kept cell, of mass {@code sum over its cells rho phi_eff h^3 / 8}, so that
  * the masses sum to rho times the lattice volume {@code sum phi_eff h^3};</li>
- * <li>adds the springs of every kept cell ({@link LatticeMaterial}; none of zero stiffness), scaled by phi_eff, a shared spring summing its
- * cells' shares: stiffness and mass scale alike, so a clipped cell's stable time step is a full cell's;</li>
+ * <li>adds the springs of every kept cell ({@link LatticeMaterial}; none of zero stiffness), scaled by phi_eff, a
+ * shared spring summing its cells' shares: stiffness and mass scale alike, so a clipped cell's stable time step is a
+ * full cell's;</li>
  * <li>embeds the surface's vertices ({@link #surfaceMapping}).</li>
  * </ol>
  * A surface whose winding number is ambiguous (an open surface) or that encloses nothing is refused with a message
@@ -150,50 +147,110 @@ public final class VolumeBody {
         return ((k + (corner >> 2 & 1)) * py + j + (corner >> 1 & 1)) * px + i + (corner & 1);
     }
 
-    /** Every kept cell's 28 springs, scaled by its phi_eff; a spring shared by cells sums their shares. */
+    /**
+     * The 13 lattice directions of a half-space (the first non-zero of dz, dy, dx positive): every spring of the
+     * lattice joins a node to its neighbour along one of them.
+     */
+    private static final int[][] DIRECTIONS = halfSpace();
+
+    private static int[][] halfSpace() {
+        int[][] d = new int[13][];
+        int n = 0;
+        for (int dz = -1; dz <= 1; dz++) {
+            for (int dy = -1; dy <= 1; dy++) {
+                for (int dx = -1; dx <= 1; dx++) {
+                    boolean positive = dz > 0 || dz == 0 && (dy > 0 || dy == 0 && dx > 0);
+                    if (positive) {
+                        d[n++] = new int[] {dx, dy, dz};
+                    }
+                }
+            }
+        }
+        return d;
+    }
+
+    private static int direction(int dx, int dy, int dz) {
+        for (int i = 0; i < DIRECTIONS.length; i++) {
+            if (DIRECTIONS[i][0] == dx && DIRECTIONS[i][1] == dy && DIRECTIONS[i][2] == dz) {
+                return i;
+            }
+        }
+        throw new IllegalStateException("not a half-space direction: " + dx + ", " + dy + ", " + dz);
+    }
+
+    /**
+     * Every kept cell's springs, scaled by its phi_eff; a spring shared by cells sums their shares. The shares are
+     * summed in an array of 13 directions a node (no map: a fine lattice has millions of springs), then added node
+     * by node, direction by direction.
+     */
     private static int addSprings(Topology t, VolumeParameters p, double[] phi, LatticeClip.Result clip,
             int[] nodeOf, int px, int py) {
         LatticeMaterial m = p.material();
         double h = p.cellSizeM();
         double[] share = {0, m.edgeStiffness(h), m.faceDiagonalStiffness(h), m.bodyDiagonalStiffness(h)};
-        double[] rest = {0, h, h * Math.sqrt(2), h * Math.sqrt(3)};
-        Map<Long, Integer> index = new HashMap<>();
-        List<long[]> ends = new ArrayList<>();
-        List<double[]> stiffness = new ArrayList<>();
-        long stride = (long) nodeOf.length;
-        for (int k = 0; k < clip.nz(); k++) {
+        int first = Integer.MAX_VALUE;
+        int last = -1;
+        for (int id : nodeOf) {
+            if (id >= 0) {
+                first = Math.min(first, id);
+                last = Math.max(last, id);
+            }
+        }
+        double[] k = new double[13 * (last - first + 1)];
+        int[] pairDirection = new int[64];
+        boolean[] pairFlip = new boolean[64];
+        for (int a = 0; a < 8; a++) {
+            for (int b = 0; b < 8; b++) {
+                int dx = (b & 1) - (a & 1);
+                int dy = (b >> 1 & 1) - (a >> 1 & 1);
+                int dz = (b >> 2 & 1) - (a >> 2 & 1);
+                boolean positive = dz > 0 || dz == 0 && (dy > 0 || dy == 0 && dx > 0);
+                pairFlip[8 * a + b] = !positive;
+                pairDirection[8 * a + b] = a == b ? -1 : positive ? direction(dx, dy, dz) : direction(-dx, -dy, -dz);
+            }
+        }
+        for (int kz = 0; kz < clip.nz(); kz++) {
             for (int j = 0; j < clip.ny(); j++) {
                 for (int i = 0; i < clip.nx(); i++) {
-                    double f = phi[clip.cell(i, j, k)];
+                    double f = phi[clip.cell(i, j, kz)];
                     if (f == 0) {
                         continue;
                     }
                     for (int a = 0; a < 8; a++) {
                         for (int b = a + 1; b < 8; b++) {
-                            long qa = point(i, j, k, a, px, py);
-                            long qb = point(i, j, k, b, px, py);
-                            int kind = Integer.bitCount(a ^ b);
-                            if (share[kind] == 0) {
+                            double s = share[Integer.bitCount(a ^ b)];
+                            if (s == 0) {
                                 continue;
                             }
-                            Integer s = index.putIfAbsent(qa * stride + qb, ends.size());
-                            if (s == null) {
-                                ends.add(new long[] {qa, qb, kind});
-                                stiffness.add(new double[] {0});
-                                s = ends.size() - 1;
-                            }
-                            stiffness.get(s)[0] += f * share[kind];
+                            int from = pairFlip[8 * a + b] ? b : a;
+                            int node = nodeOf[point(i, j, kz, from, px, py)];
+                            k[13 * (node - first) + pairDirection[8 * a + b]] += f * s;
                         }
                     }
                 }
             }
         }
-        for (int s = 0; s < ends.size(); s++) {
-            long[] e = ends.get(s);
-            double k = stiffness.get(s)[0];
-            t.addSpring(nodeOf[(int) e[0]], nodeOf[(int) e[1]], k, rest[(int) e[2]], p.dampingTimeS() * k);
+        int springs = 0;
+        for (int q = 0; q < nodeOf.length; q++) {
+            if (nodeOf[q] < 0) {
+                continue;
+            }
+            int i = q % px;
+            int j = (q / px) % py;
+            int kz = q / (px * py);
+            for (int d = 0; d < 13; d++) {
+                double stiffness = k[13 * (nodeOf[q] - first) + d];
+                if (stiffness == 0) {
+                    continue;
+                }
+                int[] o = DIRECTIONS[d];
+                int other = nodeOf[((kz + o[2]) * py + j + o[1]) * px + i + o[0]];
+                double rest = h * Math.sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+                t.addSpring(nodeOf[q], other, stiffness, rest, p.dampingTimeS() * stiffness);
+                springs++;
+            }
         }
-        return ends.size();
+        return springs;
     }
 
     /** Each surface vertex on the 8 nodes of its cell, with the trilinear weights of its place in the cell. */
