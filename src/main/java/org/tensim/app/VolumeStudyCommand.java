@@ -21,6 +21,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.scene.volume.VolumeBody;
 import org.tensim.scene.volume.VolumeReport;
+import org.tensim.solver.SystemState;
 import org.tensim.scene.volume.SpringFit;
 import org.tensim.scene.volume.VolumeParameters;
 import picocli.CommandLine.Command;
@@ -57,6 +58,10 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     @Option(names = "--poisson", paramLabel = "NU", description = "Poisson's ratio asked for (default: "
             + "${DEFAULT-VALUE}; the isotropic fit gives 1/4 whatever is asked)")
     double poisson = 0.4;
+
+    @Option(names = "--density", paramLabel = "KG_M3", description = "density, kg/m^3 (default: ${DEFAULT-VALUE};"
+            + " statics does not depend on it, --mesh's critical time step does)")
+    double densityKgPerM3 = 1000;
 
     @Option(names = "--fits", split = ",", paramLabel = "FIT[,FIT...]",
             description = "spring fits: isotropic, axial (default: ${DEFAULT-VALUE})")
@@ -97,7 +102,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         List<VolumeParameters> params = new ArrayList<>();
         for (String f : fits) {
-            params.add(VolumeParameters.of(0.01, youngPa, poisson, 1000).withFit(SpringFit.parse(f)));
+            params.add(VolumeParameters.of(0.01, youngPa, poisson, densityKgPerM3).withFit(SpringFit.parse(f)));
         }
         for (int i = 0; i < cantileverCells.size(); i++) {
             if (cantileverCells.get(i) < 1 || i > 0 && cantileverCells.get(i) != 2 * cantileverCells.get(i - 1)) {
@@ -130,25 +135,29 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         List<Map<String, Object>> rows = new ArrayList<>();
         try (CsvWriter csv = run.csv("volume-meshes.csv", List.of("mesh", "cell_m", "nodes", "springs", "cells",
                 "crossed_cells", "boundary_edges", "max_winding_deviation", "lattice_volume_m3", "surface_volume_m3",
-                "build_s"), 1)) {
+                "critical_step_s", "build_s"), 1)) {
             for (Path file : meshes) {
                 TriangleMesh mesh = MeshLoader.load(file, u).mesh();
                 for (double c : cells) {
                     long t0 = System.nanoTime();
-                    VolumeBody body = VolumeBody.build(new Topology(), mesh, params.get(0).withCellSize(c),
-                            file.toString());
+                    Topology t = new Topology();
+                    VolumeBody body = VolumeBody.build(t, mesh, params.get(0).withCellSize(c), file.toString());
                     double seconds = (System.nanoTime() - t0) * 1e-9;
                     VolumeReport r = body.report();
+                    // the leapfrog limit 2 / w_max of the free lattice (power iteration): what an explicit step meets
+                    double critical = SystemState.compile(t).criticalTimeStep().stepSeconds();
                     csv.rowText(file.getFileName().toString(), Double.toString(c), Integer.toString(r.nodes()),
                             Integer.toString(r.springs()), Integer.toString(r.cells()),
                             Integer.toString(r.crossedCells()), Integer.toString(r.boundaryEdges()),
                             Double.toString(r.maxWindingDeviation()), Double.toString(r.latticeVolumeM3()),
-                            Double.toString(r.surfaceVolumeM3()), Double.toString(seconds));
-                    System.out.printf("%s at %.3g mm (%.1f s): %s%n", file.getFileName(), c * 1e3, seconds,
-                            r.describe());
+                            Double.toString(r.surfaceVolumeM3()), Double.toString(critical),
+                            Double.toString(seconds));
+                    System.out.printf("%s at %.3g mm (%.1f s): %s; critical (leapfrog) step %.3g ms%n",
+                            file.getFileName(), c * 1e3, seconds, r.describe(), critical * 1e3);
                     Map<String, Object> m = new LinkedHashMap<>();
                     m.put("mesh", file.toString());
                     m.put("build_s", seconds);
+                    m.put("critical_step_s", critical);
                     m.putAll(r.toMap());
                     rows.add(m);
                 }
