@@ -69,6 +69,50 @@ public final class LinearMapping {
         this.weight = weight.clone();
     }
 
+    /**
+     * Collects a mapping point by point (a coarse shell's barycentric weights, say), then {@link #build}s it,
+     * checked as the constructor checks.
+     */
+    public static final class Builder {
+        private final int nodeCount;
+        private int[] start = new int[17];
+        private int[] node = new int[64];
+        private double[] weight = new double[64];
+        private int points;
+
+        /** @param nodeCount the number of nodes of the carrying model */
+        public Builder(int nodeCount) {
+            this.nodeCount = nodeCount;
+        }
+
+        /** Adds the next point on the given nodes with the given weights (summing to 1); returns its index. */
+        public int add(int[] nodes, double[] weights) {
+            if (nodes.length != weights.length) {
+                throw new IllegalArgumentException("mapped point " + points + " has " + nodes.length + " nodes but "
+                        + weights.length + " weights");
+            }
+            int at = start[points];
+            if (at + nodes.length > node.length) {
+                node = Arrays.copyOf(node, Math.max(2 * node.length, at + nodes.length));
+                weight = Arrays.copyOf(weight, node.length);
+            }
+            System.arraycopy(nodes, 0, node, at, nodes.length);
+            System.arraycopy(weights, 0, weight, at, weights.length);
+            if (points + 2 > start.length) {
+                start = Arrays.copyOf(start, 2 * start.length);
+            }
+            start[points + 1] = at + nodes.length;
+            return points++;
+        }
+
+        /** The mapping of the points added. */
+        public LinearMapping build() {
+            int entries = start[points];
+            return new LinearMapping(nodeCount, Arrays.copyOf(start, points + 1), Arrays.copyOf(node, entries),
+                    Arrays.copyOf(weight, entries));
+        }
+    }
+
     /** Number of mapped (fine) points. */
     public int pointCount() {
         return start.length - 1;

@@ -116,6 +116,26 @@ class LinearMappingTest {
     }
 
     @Test
+    void theBuilderMakesTheMappingOfItsRows() {
+        LinearMapping.Builder b = new LinearMapping.Builder(3);
+        for (int i = 0; i < 40; i++) {
+            assertEquals(i, b.add(new int[] {i % 3, (i + 1) % 3, (i + 2) % 3}, new double[] {0.2, 0.3, 0.5}));
+        }
+        LinearMapping m = b.build();
+        assertEquals(40, m.pointCount());
+        assertEquals(3, m.entries(39));
+        assertEquals(39 % 3, m.node(39, 0));
+        assertEquals(0.5, m.weight(39, 2), 0);
+        double[] p = new double[3 * 40];
+        m.apply(new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, p);
+        assertEquals(0.2, p[0], 1e-15);
+        assertEquals(0.3, p[1], 1e-15);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new LinearMapping.Builder(2).add(new int[] {0, 1}, new double[] {1}));
+        assertTrue(e.getMessage().contains("2 nodes but 1 weights"), e.getMessage());
+    }
+
+    @Test
     void badWeightsAreRefusedNamingThePoint() {
         IllegalArgumentException sum = assertThrows(IllegalArgumentException.class, () -> new LinearMapping(2,
                 new int[] {0, 1, 3}, new int[] {0, 0, 1}, new double[] {1, 0.5, 0.4}));
