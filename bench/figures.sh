@@ -26,6 +26,8 @@ run cube ./tensim cube
 run accuracy ./tensim accuracy
 run accuracy-diaphragm ./tensim accuracy --scene diaphragm
 run stability ./tensim stability
+run volume-study ./tensim volume-study --cantilever-cells 2,4,8,16 --block-cells 2.5,4.5,8.5,16.5
+run volume-study-sliding ./tensim volume-study --sliding-root
 run diaphragm ./tensim diaphragm
 run diaphragm-paper ./tensim diaphragm --model paper
 run resolution ./tensim diaphragm resolution-study --study-rings 14,20,28,43 --no-pick

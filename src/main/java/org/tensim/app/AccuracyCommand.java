@@ -25,44 +25,48 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim accuracy}: work-precision of every integrator on named scenes. */
 @Command(name = "accuracy", mixinStandardHelpOptions = true,
-        description = {"Runs every integrator on a ladder of time steps (each half the previous)",
-            "and measures the largest node position error at the end time against a",
-            "reference (exact; Hipparchus Dormand-Prince 8(5,3); or, with rigid links,",
-            "RK4 at the finest step), the wall time and the force evaluations.",
-            "Writes per scene to --out: accuracy-SCENE.csv, SCENE-work-precision.png",
-            "(error against wall time), SCENE-evaluations.png (error against force",
-            "evaluations), SCENE-convergence.png (error against dt). Prints the measured",
-            "order of each method. Then the shell's statics against element size",
-            "(--shell): the patch test and the clamped circular plate against Kirchhoff,",
-            "shell-MODEL.csv and shell-MODEL-convergence.png, with the measured orders.",
-            "The last line is one JSON object with, per integrator, `order` (first",
-            "scene), `expected_order` and `order_by_scene`, and `shell` (the static section)."})
+        description = {"Measures the error, wall time and force evaluations of every integrator over a ladder of time"
+            + " steps.",
+            "Each step of the ladder is half the previous. The error is the largest node position error at the end"
+                + " time against a reference (exact; Hipparchus Dormand-Prince 8(5,3); or, with rigid links, RK4 at"
+                + " the finest step). Writes per scene to --out: accuracy-SCENE.csv, SCENE-work-precision.png (error"
+                + " against wall time), SCENE-evaluations.png (error against force evaluations) and"
+                + " SCENE-convergence.png (error against dt), and prints the measured order of each method.",
+            "Then the shell's statics against element size (--shell): the patch test and the clamped circular plate"
+                + " against Kirchhoff, in shell-MODEL.csv and shell-MODEL-convergence.png, with the measured orders.",
+            "The last line is one JSON object with, per integrator, `order` (first scene), `expected_order` and"
+                + " `order_by_scene`, and `shell` (the static section)."})
 public final class AccuracyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "scenes (default: all of ${COMPLETION-CANDIDATES})", completionCandidates = SceneNames.class)
+    @Option(names = "--scene", split = ",", paramLabel = "NAME[,NAME...]", hideParamSyntax = true,
+            description = "Scenes, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
+            completionCandidates = SceneNames.class)
     List<String> scenes = AccuracyScenes.names();
 
-    @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+    @Option(names = {"--integrator", "--integrators"}, split = ",", paramLabel = "NAME[,NAME...]",
+            hideParamSyntax = true,
+            description = "Integrators, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
             completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
-    @Option(names = "--dt", paramLabel = "S", description = "largest time step of the ladder, s (default: the scene's)")
+    @Option(names = "--dt", paramLabel = "S",
+            description = "Largest time step of the ladder, s (default: the scene's).")
     Double largestDt;
 
-    @Option(names = "--rungs", paramLabel = "N", description = "number of time steps in the ladder (default: the scene's)")
+    @Option(names = "--rungs", paramLabel = "N",
+            description = "Number of time steps in the ladder (default: the scene's).")
     Integer rungs;
 
     @Option(names = "--shell", paramLabel = "MODEL",
-            description = "tissue model of the shell statics section: material, springs, paper or none (default: ${DEFAULT-VALUE})")
+            description = "Tissue model of the shell statics section: material, springs, paper or none"
+                    + " (default: ${DEFAULT-VALUE}).")
     String shell = "material";
 
-    @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]",
-            description = "ring counts of the clamped plate, coarsest first (default: 6,10,14,20,28,43; 43 is the "
-                    + "default diaphragm's element size)")
+    @Option(names = "--shell-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
+            description = "Ring counts of the clamped plate, coarsest first (default: 6,10,14,20,28,43; 43 is the "
+                    + "default diaphragm's element size).")
     int[] shellRings = ShellStudy.PLATE_RINGS;
 
     @picocli.CommandLine.Mixin

@@ -18,17 +18,17 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim calibrate}: fits parameters to targets with CMA-ES over the sweep engines. */
 @Command(name = "calibrate", mixinStandardHelpOptions = true,
-        description = {"Fits chosen parameters within bounds (CMA-ES, Hipparchus), each generation's candidates",
-            "run at once on the sweep engine, to weighted targets: summary figures with tolerances,",
-            "landmark trajectories (CSV id,t,x,y,z), a target surface at a breathing phase",
-            "(OBJ/STL/OFF; mean and 95th-percentile distance). Writes best-preset.json (for",
-            "./tensim gui --preset), history.csv, convergence.png, residuals.json and evaluations.csv",
-            "to --out. With --make-target, writes a synthetic target surface instead. docs/calibration.md."})
+        description = {"Fits chosen parameters within bounds to weighted targets (CMA-ES, Hipparchus).",
+            "Each generation's candidates run at once on the sweep engine. The targets are summary figures with"
+                + " tolerances, landmark trajectories (CSV id,t,x,y,z) or a target surface at a breathing phase"
+                + " (OBJ, STL or OFF; mean and 95th-percentile distance). Writes best-preset.json (for ./tensim gui"
+                + " --preset), history.csv, convergence.png, residuals.json and evaluations.csv to --out.",
+            "With --make-target it writes a synthetic target surface instead. Guide: docs/calibration.md."})
 public final class CalibrateCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the calibration spec (JSON)")
+    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "The calibration spec (JSON).")
     Path specFile;
 
     @picocli.CommandLine.Mixin
@@ -38,22 +38,23 @@ public final class CalibrateCommand implements Callable<Integer> {
     EngineOptions engines = new EngineOptions();
 
     @Option(names = "--make-target", paramLabel = "FILE.obj",
-            description = "instead of calibrating: run the spec's scene at --truth and write its surface at --phase-s,"
-                    + " with --noise-mm, as an OBJ in mm")
+            description = "Instead of calibrating: run the spec's scene at --truth and write its surface at --phase-s,"
+                    + " with --noise-mm, as an OBJ in mm.")
     Path makeTarget;
 
-    @Option(names = "--truth", paramLabel = "NAME=VALUE", split = ",",
-            description = "--make-target: parameter values of the run (others: the spec's fixed values or defaults)")
+    @Option(names = "--truth", paramLabel = "NAME=VALUE[,NAME=VALUE...]", split = ",", hideParamSyntax = true,
+            description = "--make-target: parameter values of the run (others: the spec's fixed values or defaults).")
     Map<String, Double> truth = new LinkedHashMap<>();
 
-    @Option(names = "--phase-s", paramLabel = "S", description = "--make-target: time of the surface, s")
+    @Option(names = "--phase-s", paramLabel = "S", description = "--make-target: time of the surface, s.")
     double phaseS = Double.NaN;
 
     @Option(names = "--noise-mm", paramLabel = "MM",
-            description = "--make-target: Gaussian noise per coordinate, mm (default: ${DEFAULT-VALUE})")
+            description = "--make-target: Gaussian noise per coordinate, mm (default: ${DEFAULT-VALUE}).")
     double noiseMm = 0;
 
-    @Option(names = "--seed", paramLabel = "N", description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seed", paramLabel = "N",
+            description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
     @Override

@@ -15,10 +15,11 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim cube}: the paper's Fig. 3 comparison, scripted. */
 @Command(name = "cube", mixinStandardHelpOptions = true,
-        description = {"The paper's cube experiment (Fig. 3): a mass-spring and a tensegrity cube",
-            "(10 x 10 x 10 m, bottom fixed), identical but for the six rigid links, under the same",
-            "sinusoidal force on two upper nodes. Writes cube.csv, cube.png and summary.json to --out",
-            "and prints the summary as the last line (JSON). Defaults: docs/cube.md."})
+        description = {"Runs the paper's cube experiment (Fig. 3): a mass-spring and a tensegrity cube under the same"
+            + " force.",
+            "The two cubes (10 x 10 x 10 m, bottom fixed) are identical but for the six rigid links, under the same"
+                + " sinusoidal force on two upper nodes. Writes cube.csv, cube.png and summary.json to --out and"
+                + " prints the summary as the last line (JSON). Defaults: docs/cube.md."})
 public final class CubeCommand implements Callable<Integer> {
     private static final CubeParameters D = CubeParameters.paper();
 
@@ -28,31 +29,33 @@ public final class CubeCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "cube"));
 
-    @Option(names = "--duration", paramLabel = "S", description = "simulated time, s (default: ${DEFAULT-VALUE})")
+    @Option(names = {"--seconds", "--duration"}, paramLabel = "S",
+            description = "Simulated time, s (default: ${DEFAULT-VALUE}).")
     double duration = D.durationS();
 
     @picocli.CommandLine.Mixin
     TimeStepOption dt = TimeStepOption.fixed(D.dtS());
 
     @Option(names = "--force", paramLabel = "N",
-            description = "peak of the sinusoidal force on each loaded node, N (default: ${DEFAULT-VALUE})")
+            description = "Peak of the sinusoidal force on each loaded node, N (default: ${DEFAULT-VALUE}).")
     double force = D.forceAmplitudeN();
 
-    @Option(names = "--frequency", paramLabel = "HZ", description = "force frequency, Hz (default: ${DEFAULT-VALUE})")
+    @Option(names = "--frequency", paramLabel = "HZ", description = "Force frequency, Hz (default: ${DEFAULT-VALUE}).")
     double frequency = D.forceFrequencyHz();
 
     @Option(names = "--tilt", paramLabel = "DEG",
-            description = "force angle from straight down towards +x, degrees (default: ${DEFAULT-VALUE})")
+            description = "Force angle from straight down towards +x, degrees (default: ${DEFAULT-VALUE}).")
     double tilt = D.forceTiltDeg();
 
-    @Option(names = "--stiffness", paramLabel = "N/M", description = "spring stiffness, N/m (default: ${DEFAULT-VALUE})")
+    @Option(names = "--stiffness", paramLabel = "N/M",
+            description = "Spring stiffness, N/m (default: ${DEFAULT-VALUE}).")
     double stiffness = D.stiffnessNPerM();
 
     @Option(names = "--damping", paramLabel = "NS/M",
-            description = "spring axial damping, N s/m (default: ${DEFAULT-VALUE})")
+            description = "Spring axial damping, N s/m (default: ${DEFAULT-VALUE}).")
     double damping = D.dampingNsPerM();
 
-    @Option(names = "--mass", paramLabel = "KG", description = "mass of every node, kg (default: ${DEFAULT-VALUE})")
+    @Option(names = "--mass", paramLabel = "KG", description = "Mass of every node, kg (default: ${DEFAULT-VALUE}).")
     double mass = D.nodeMassKg();
 
     @picocli.CommandLine.Mixin
@@ -61,9 +64,9 @@ public final class CubeCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         Path folder = out.folder(spec);
-        CommandChecks.positive(spec, "--duration", duration, "s");
+        CommandChecks.positive(spec, "--seconds", duration, "s");
         double step = dt.seconds(spec);
-        OptionChecks.stepFits(spec, "--dt", step, "--duration", duration);
+        OptionChecks.stepFits(spec, "--dt", step, "--seconds", duration);
         integrator.create(spec);
         CubeParameters p;
         try {

@@ -21,12 +21,12 @@ import picocli.CommandLine.Option;
 /** {@code tensim diaphragm}: the paper's second experiment, headless. */
 @Command(name = "diaphragm", mixinStandardHelpOptions = true,
         subcommands = {DiaphragmResolutionCommand.class, DiaphragmRealtimeStudyCommand.class},
-        description = {"The paper's diaphragm (section 3.2): muscle as mass-spring, central",
-            "tendon as tensegrity, driven by ribs (finite helical axes) and action",
-            "lines, for some breathing cycles. Writes PNG displacement slices,",
-            "displacements.csv, probe.csv, a VTK series and summary.json to --out and",
-            "prints the summary as the last line (JSON). Model: docs/diaphragm.md.",
-            "Its studies are subcommands: resolution-study, realtime-study."})
+        description = {"Runs the paper's diaphragm (section 3.2) headless for some breathing cycles.",
+            "The muscle is a mass-spring, the central tendon a tensegrity, driven by the ribs (finite helical axes)"
+                + " and the muscle's action. Writes PNG displacement slices, displacements.csv, probe.csv, a VTK"
+                + " series and summary.json to --out and prints the summary as the last line (JSON). Model:"
+                + " docs/diaphragm.md.",
+            "Its studies are subcommands: resolution-study and realtime-study."})
 public final class DiaphragmCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -37,29 +37,29 @@ public final class DiaphragmCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     DiaphragmSolverOptions solver = new DiaphragmSolverOptions();
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time, s; the breathing figures need one"
-            + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "Simulated time, s; the breathing figures need one"
+            + " inspiration (1.33 s at the default cycle) (default: ${DEFAULT-VALUE}).")
     double seconds = 4;
 
     @picocli.CommandLine.Mixin
     ThreadsOption threads = new ThreadsOption();
 
     @Option(names = "--realtime",
-            description = "run the real-time setting (bdf2 at 25 ms with the fibres' load: the real-time study's"
+            description = "Run the real-time setting (bdf2 at 25 ms with the fibres' load: the real-time study's"
                     + " choice on the default mesh, its error against RK2 in docs/performance.md; in a thorax "
-                    + "bdf2-contact-realtime, docs/thorax.md), on all cores; the summary names it (realtime_setting)")
+                    + "bdf2-contact-realtime, docs/thorax.md), on all cores; the summary names it (realtime_setting).")
     boolean realtime;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
-            description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE})")
+            description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE}).")
     int vtkPerCycle = 8;
 
     @Option(names = "--vector-scale", paramLabel = "X",
-            description = "scale of the mid-inspiration displacement vectors (default: ${DEFAULT-VALUE}, as Fig. 5)")
+            description = "Scale of the mid-inspiration displacement vectors (default: ${DEFAULT-VALUE}, as Fig. 5).")
     double vectorScale = 100;
 
-    @Option(names = "--csv-times", paramLabel = "S", split = ",",
-            description = "times of displacements.csv, s (default: end-inspiration and end of the last cycle)")
+    @Option(names = "--csv-times", paramLabel = "S[,S...]", split = ",", hideParamSyntax = true,
+            description = "Times of displacements.csv, s (default: end-inspiration and end of the last cycle).")
     double[] csvTimes;
 
     @picocli.CommandLine.Mixin

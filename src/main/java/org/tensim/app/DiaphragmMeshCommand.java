@@ -12,24 +12,23 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim diaphragm-mesh}: writes the project's parametric double-dome diaphragm as OBJ (mm). */
 @Command(name = "diaphragm-mesh", mixinStandardHelpOptions = true,
-        description = {"Generates the parametric double-dome diaphragm (a thin closed shell,",
-            "BodyParts3D frame, millimetres) and writes it as OBJ (mode 0644, written",
-            "whole then renamed). The defaults reproduce the committed",
-            "meshes/diaphragm-default.obj; the command writes under out/ unless --out says",
-            "otherwise."})
+        description = {"Generates the parametric double-dome diaphragm and writes it as an OBJ file.",
+            "The mesh is a thin closed shell in the BodyParts3D frame, in millimetres, written whole then renamed"
+                + " (mode 0644). The defaults reproduce the committed meshes/diaphragm-default.obj; the command"
+                + " writes under out/ unless --out says otherwise."})
 public final class DiaphragmMeshCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--rings", paramLabel = "N",
-            description = "rings per face (resolution; 43 gives about the paper's 11,359 nodes), 2 to "
-                    + DoubleDomeGenerator.MAX_RINGS + " (default: ${DEFAULT-VALUE})")
+            description = "Rings per face (resolution; 43 gives about the paper's 11,359 nodes), 2 to "
+                    + DoubleDomeGenerator.MAX_RINGS + " (default: ${DEFAULT-VALUE}).")
     int rings = 43;
 
-    @Option(names = "--thickness", paramLabel = "MM", description = "shell thickness, mm (default: ${DEFAULT-VALUE})")
+    @Option(names = "--thickness", paramLabel = "MM", description = "Shell thickness, mm (default: ${DEFAULT-VALUE}).")
     double thicknessMm = 2.5;
 
-    @Option(names = "--out", paramLabel = "FILE", description = "OBJ file to write (default: ${DEFAULT-VALUE})")
+    @Option(names = "--out", paramLabel = "FILE", description = "OBJ file to write (default: ${DEFAULT-VALUE}).")
     Path out = Path.of("out", "diaphragm-mesh", "diaphragm-default.obj");
 
     @Override

@@ -21,11 +21,15 @@ import picocli.CommandLine.ParameterException;
 
 /** {@code tensim diaphragm realtime-study}: speed against error over resolutions and integrators. */
 @Command(name = "realtime-study", mixinStandardHelpOptions = true,
-        description = {"The generated double dome at 10 to 43 rings, RK2 (1 and 2 threads), implicit Euler and bdf2",
-            "at several steps, one inspiration each: error against the paper's configuration against the real-time",
-            "factor, and the fastest setting within 5 %% of RK2. Writes realtime.csv, .png, .json. docs/diaphragm.md.",
-            "With --thorax: the real-time setting on the mesh in the thorax against the converged contact step at",
-            "5 ms, and its step's cost with and without contact (realtime.csv, .json; docs/thorax.md)."})
+        description = {"Measures speed against error over resolutions and integrators, and picks the fastest setting"
+            + " within 5 %% of RK2.",
+            "Runs the generated double dome at 10 to 43 rings with RK2 (1 and 2 threads), implicit Euler and bdf2"
+                + " at several steps, one inspiration each, and sets the error against the paper's configuration"
+                + " against the real-time factor. Writes realtime.csv, realtime.png and realtime.json"
+                + " (docs/diaphragm.md).",
+            "With --thorax it runs the real-time setting on the mesh in the thorax against the converged contact"
+                + " step at 5 ms, and measures its step's cost with and without contact (realtime.csv and"
+                + " realtime.json; docs/thorax.md)."})
 public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("realtime.csv", "realtime.png", "realtime.json");
@@ -36,17 +40,17 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
     @Mixin
     DiaphragmOptions scene = new DiaphragmOptions();
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time of each run, s (default:"
-            + " ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "Simulated time of each run, s (default:"
+            + " ${DEFAULT-VALUE}).")
     double seconds = 4;
 
-    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
-            description = "ring counts, ascending (default: 10,14,20,28,43)")
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
+            description = "Ring counts, ascending (default: 10,14,20,28,43).")
     int[] studyRings;
 
     @Option(names = "--study-configs", paramLabel = "REGEX",
-            description = "run the configurations whose label this finds (RK2 on two threads, the reference of each"
-                    + " resolution, always runs)")
+            description = "Run the configurations whose label this finds (RK2 on two threads, the reference of each"
+                    + " resolution, always runs).")
     String studyConfigs;
 
     @picocli.CommandLine.Mixin

@@ -22,10 +22,12 @@ import picocli.CommandLine.ParameterException;
 
 /** {@code tensim diaphragm resolution-study}: the same scene at several resolutions against the finest. */
 @Command(name = "resolution-study", mixinStandardHelpOptions = true,
-        description = {"The diaphragm at several resolutions, each against the finest: error, order, and the",
-            "coarsest model within --tolerance (the pick the GUI opens with, meshes/resolution-pick.json).",
-            "Generated double domes by --study-rings, or --mesh decimated (--cells) and refined (--refine);",
-            "with --thorax every model in that thorax. Writes resolution.csv, .png, .json. docs/diaphragm.md."})
+        description = {"Runs the diaphragm at several resolutions, each against the finest, and picks the coarsest"
+            + " within --tolerance.",
+            "It reports the error and the order, and the coarsest model within --tolerance (the pick the GUI opens"
+                + " with, meshes/resolution-pick.json). The models are generated double domes by --study-rings, or"
+                + " --mesh decimated (--cells) and refined (--refine); with --thorax every model is in that thorax."
+                + " Writes resolution.csv, resolution.png and resolution.json (docs/diaphragm.md)."})
 public final class DiaphragmResolutionCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
@@ -40,36 +42,36 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
     @Mixin
     DiaphragmSolverOptions solver = new DiaphragmSolverOptions();
 
-    @Option(names = "--seconds", paramLabel = "S", description = "simulated time of each model, s, at most one"
-            + " inspiration (default: one inspiration)")
+    @Option(names = "--seconds", paramLabel = "S", description = "Simulated time of each model, s, at most one"
+            + " inspiration (default: one inspiration).")
     double seconds = 4;
 
-    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]",
-            description = "ring counts of the generated double domes, ascending, the finest as reference, no pick"
-                    + " (default: 10,14,20,28,43 with the pick)")
+    @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
+            description = "Ring counts of the generated double domes, ascending, the finest as reference, no pick"
+                    + " (default: 10,14,20,28,43 with the pick).")
     int[] studyRings;
 
     @Option(names = "--tolerance", paramLabel = "E",
-            description = "relative RMS error under which a coarser model is accepted (default: ${DEFAULT-VALUE})")
+            description = "Relative RMS error under which a coarser model is accepted (default: ${DEFAULT-VALUE}).")
     double tolerance = ResolutionStudy.TOLERANCE;
 
-    @Option(names = "--cells", paramLabel = "MM", split = ",",
-            description = "with --mesh: vertex-clustering cell sizes or, with --decimation quadric, target edge"
-                    + " lengths, mm (default: 4, 2.8 and 2 times the mesh's mean edge length)")
+    @Option(names = "--cells", paramLabel = "MM[,MM...]", split = ",", hideParamSyntax = true,
+            description = "With --mesh: vertex-clustering cell sizes or, with --decimation quadric, target edge"
+                    + " lengths, mm (default: 4, 2.8 and 2 times the mesh's mean edge length).")
     double[] cellsMm;
 
     @Option(names = "--decimation", paramLabel = "KIND", converter = DecimationConverter.class,
-            description = "with --mesh: clustering (--cells are cube sizes) or quadric (edge collapse by quadric"
-                    + " error, --cells are target edge lengths) (default: clustering)")
+            description = "With --mesh: clustering (--cells are cube sizes) or quadric (edge collapse by quadric"
+                    + " error, --cells are target edge lengths) (default: clustering).")
     Decimation decimation = Decimation.CLUSTERING;
 
     @Option(names = "--refine", paramLabel = "N",
-            description = "with --mesh: also the mesh refined 1..N times by midpoint subdivision"
-                    + " (default: ${DEFAULT-VALUE})")
+            description = "With --mesh: also the mesh refined 1..N times by midpoint subdivision"
+                    + " (default: ${DEFAULT-VALUE}).")
     int refine;
 
-    @Option(names = "--no-pick", description = "do not write the pick to meshes/resolution-pick.json (it still goes"
-            + " to --out)")
+    @Option(names = "--no-pick", description = "Do not write the pick to meshes/resolution-pick.json (it still goes"
+            + " to --out).")
     boolean noPick;
 
     @picocli.CommandLine.Mixin

@@ -27,19 +27,19 @@ public final class DiaphragmSolverOptions {
 
     @Option(names = "--cg-tolerance", paramLabel = "R",
             description = "implicit-euler only: relative residual at which each step's CG solve stops"
-                    + " (default: 1e-12)")
+                    + " (default: 1e-12).")
     Double cgTolerance;
 
     @Option(names = "--newton", paramLabel = "N",
             description = "bdf2 only: Newton iterations per step (default: "
                     + PrefactoredBdf2.DEFAULT_NEWTON_ITERATIONS + "; with --thorax: "
-                    + PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS + ", docs/thorax.md)")
+                    + PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS + ", docs/thorax.md).")
     Integer newton;
 
     @Option(names = "--cg-iterations", paramLabel = "N",
             description = "bdf2 only: cap on CG iterations per Newton iteration (default: "
                     + PrefactoredBdf2.DEFAULT_KRYLOV_ITERATIONS + "; with --thorax: "
-                    + PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ")")
+                    + PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ").")
     Integer cgIterations;
 
     private double checkedDt;

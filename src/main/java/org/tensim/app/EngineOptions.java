@@ -7,15 +7,16 @@ import picocli.CommandLine.Option;
 /** The engine options shared by {@code sweep} and {@code calibrate} (a picocli mixin). */
 public final class EngineOptions {
     @Option(names = "--engine", paramLabel = "local|spark",
-            description = "local: all cores, one run per core (default); spark: Spark tasks (docs/scaling.md)")
+            description = "The engine: local (all cores, one run per core; the default) or spark (Spark tasks,"
+                    + " docs/scaling.md).")
     String engine = "local";
 
     @Option(names = "--master", paramLabel = "URL",
-            description = "Spark master, e.g. local[2] or spark://host:7077 (default: local[*]); spark only")
+            description = "Spark only: the Spark master, e.g. local[2] or spark://host:7077 (default: local[*]).")
     String master;
 
     @Option(names = "--workers", paramLabel = "N",
-            description = "local engine: runs at once (default: 0, one per core)")
+            description = "Local engine: runs at once (default: 0, one per core).")
     int workers = 0;
 
     /** The engine asked for; bad options are reported as usage errors of {@code cmd}. */

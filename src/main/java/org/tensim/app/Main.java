@@ -16,12 +16,13 @@ import picocli.CommandLine.Command;
  * printed as one clear message (no stack trace) with a non-zero exit code.
  */
 @Command(name = "tensim", mixinStandardHelpOptions = true, version = "tensim 0.1.0",
-        description = {"Soft-organ deformation with mass-springs and tensegrity",
-            "(Villard, Bourne, Bello, ISBMS 2008).", "",
-            "The launcher also has: ./tensim test (the whole test suite)."},
+        description = {"Soft-organ deformation with mass-springs and tensegrity (Villard, Bourne and Bello, ISBMS"
+            + " 2008)."},
+        footer = {"", "The launcher also runs the test suite: ./tensim test (its last line is \"N passed, N failed,"
+            + " N skipped\"; ./tensim test --help)."},
         subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
             DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class, SweepCommand.class,
-            CalibrateCommand.class})
+            CalibrateCommand.class, VolumeStudyCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -52,7 +53,7 @@ public final class Main implements Runnable {
             boolean usage = ex instanceof IllegalArgumentException && RunFolder.opened() == foldersBefore[0];
             return usage ? RunStatus.USAGE_EXIT : RunStatus.FAILED.exitCode();
         });
-        return cl;
+        return org.tensim.cli.HelpLayout.install(cl);
     }
 
     /**

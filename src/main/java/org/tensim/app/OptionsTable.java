@@ -52,7 +52,7 @@ public final class OptionsTable {
                     new Link("--abdominal-pressure", "Pa", null, null),
                     new Link("--apposition-pressure", "Pa", null, null),
                     new Link("--rib-amplitude", "x quiet", DiaphragmViewScene.RIB_AMPLITUDE, "rib_amplitude"),
-                    new Link("--muscle-force", "Pa", DiaphragmViewScene.MUSCLE_ACTION, "muscle_force_pa"),
+                    new Link("--muscle-action", "Pa", DiaphragmViewScene.MUSCLE_ACTION, "muscle_force_pa"),
                     new Link("--period", "s", DiaphragmViewScene.BREATHING_PERIOD, "breathing_period_s"),
                     new Link("--attach-threshold", "mm", null, null),
                     new Link("--band-stiffness", "Pa/m", null, null),
@@ -70,7 +70,7 @@ public final class OptionsTable {
                     new Link("--vector-scale", "", null, null),
                     new Link("--csv-times", "s", null, null)),
             "cube", List.of(
-                    new Link("--duration", "s", null, "duration_s"),
+                    new Link("--seconds", "s", null, "duration_s"),
                     new Link("--dt", "s", Tuning.TIME_STEP, "dt_s"),
                     new Link("--force", "N", CubeViewScene.FORCE_AMPLITUDE, "parameters.forceAmplitudeN"),
                     new Link("--frequency", "Hz", CubeViewScene.FORCE_FREQUENCY, "parameters.forceFrequencyHz"),
@@ -84,7 +84,9 @@ public final class OptionsTable {
     static final Map<String, String> SOLVER_SPEC_KEYS = Map.of("--integrator", "solver.integrator", "--dt",
             "solver.dtS", "--seconds", "solver.seconds", "--duration", "solver.seconds");
 
-    private static final Pattern DEFAULT = Pattern.compile("\\s*\\((default[: ][^()]*(\\([^()]*\\)[^()]*)*)\\)\\s*$");
+    /** A closing "(default: ...)" or "(default ...)", one level of parentheses inside, then an optional full stop. */
+    private static final Pattern DEFAULT = Pattern.compile(
+            "\\s*\\((default[: ][^()]*(\\([^()]*\\)[^()]*)*)\\)(\\.?)\\s*$");
 
     private OptionsTable() {
     }
@@ -209,22 +211,23 @@ public final class OptionsTable {
         }
     }
 
+    /** The option's name (and its negation), then its former names, which still work. */
     private static String flags(OptionSpec o) {
-        List<String> names = new ArrayList<>();
-        for (String n : o.names()) {
-            names.add("`" + n + (o.negatable() && n.startsWith("--") && !n.startsWith("--no-") ? "`, `--no-"
-                    + n.substring(2) : "") + "`");
+        String[] names = o.names();
+        String first = "`" + names[0] + "`" + (o.negatable() && !names[0].startsWith("--no-") ? ", `--no-"
+                + names[0].substring(2) + "`" : "");
+        List<String> former = new ArrayList<>();
+        for (int i = 1; i < names.length; i++) {
+            former.add("`" + names[i] + "`");
         }
         String label = o.arity().max() == 0 ? "" : " " + o.paramLabel();
-        return String.join(", ", names) + cell(label);
+        return first + cell(label) + (former.isEmpty() ? "" : " (also " + String.join(", ", former) + ")");
     }
 
     private static String specKey(String command, OptionSpec o, Set<String> sceneKeys, Link l) {
         List<String> keys = new ArrayList<>();
-        for (String n : o.names()) {
-            if (isScene(o, sceneKeys) && n.startsWith("--")) {
-                keys.add("`diaphragm." + n.substring(2) + "`");
-            }
+        if (isScene(o, sceneKeys)) {
+            keys.add("`diaphragm." + o.names()[0].substring(2) + "`");
         }
         for (String n : o.names()) {
             String k = SOLVER_SPEC_KEYS.get(n);
@@ -249,7 +252,7 @@ public final class OptionsTable {
         Matcher m = DEFAULT.matcher(text);
         if (m.find()) {
             def = m.group(1).replaceFirst("^default[: ]\\s*", "");
-            text = text.substring(0, m.start()).trim();
+            text = text.substring(0, m.start()).trim() + m.group(3);
         }
         if (o.defaultValue() != null && def.isEmpty()) {
             def = o.defaultValue();

@@ -23,33 +23,34 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim stability}: the largest stable step of every integrator, measured against theory. */
 @Command(name = "stability", mixinStandardHelpOptions = true,
-        description = {"Finds by bisection the largest stable time step of every integrator on",
-            "one spring (stable: finite, and the displacement over the last quarter of",
-            "the run at most twice that over the first, over --periods periods), across",
-            "stiffness-to-mass ratios (w = sqrt(k/m)) and damping ratios, against",
-            "linear stability theory (docs/physics.md). Writes stability.csv,",
-            "stability-omega.png and stability-damping.png to --out. The last line is",
-            "one JSON object with, per integrator, the measured `critical_omega_h` and",
-            "the `theory_omega_h` of the undamped spring (null = stable at every step",
-            "tried, flagged by `stable_at_every_step`)."})
+        description = {"Finds by bisection the largest stable time step of every integrator on one spring, against"
+            + " theory.",
+            "A run is stable when it stays finite and its displacement over the last quarter of the run is at most"
+                + " twice that over the first, over --periods periods. The search spans stiffness-to-mass ratios"
+                + " (w = sqrt(k/m)) and damping ratios, against linear stability theory (docs/physics.md). Writes"
+                + " stability.csv, stability-omega.png and stability-damping.png to --out.",
+            "The last line is one JSON object with, per integrator, the measured `critical_omega_h` and the"
+                + " `theory_omega_h` of the undamped spring (null: stable at every step tried, flagged by"
+                + " `stable_at_every_step`)."})
 public final class StabilityCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--integrators", split = ",", paramLabel = "NAME[,NAME...]",
-            description = "integrators (default: all of ${COMPLETION-CANDIDATES})",
+    @Option(names = {"--integrator", "--integrators"}, split = ",", paramLabel = "NAME[,NAME...]",
+            hideParamSyntax = true,
+            description = "Integrators, comma-separated (default: all of ${COMPLETION-CANDIDATES}).",
             completionCandidates = Integrators.Names.class)
     List<String> integrators = Integrators.names();
 
-    @Option(names = "--omega", split = ",", paramLabel = "W[,W...]",
-            description = "natural frequencies sqrt(k/m), rad/s, undamped (default: ${DEFAULT-VALUE})")
+    @Option(names = "--omega", split = ",", paramLabel = "W[,W...]", hideParamSyntax = true,
+            description = "Natural frequencies sqrt(k/m), rad/s, undamped (default: ${DEFAULT-VALUE}).")
     List<Double> omegas = List.of(1.0, 10.0, 100.0, 1000.0);
 
-    @Option(names = "--zeta", split = ",", paramLabel = "Z[,Z...]",
-            description = "damping ratios at w = 10 rad/s (default: ${DEFAULT-VALUE})")
+    @Option(names = "--zeta", split = ",", paramLabel = "Z[,Z...]", hideParamSyntax = true,
+            description = "Damping ratios at w = 10 rad/s (default: ${DEFAULT-VALUE}).")
     List<Double> zetas = List.of(0.0, 0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0);
 
-    @Option(names = "--periods", paramLabel = "P", description = "periods per trial run (default: ${DEFAULT-VALUE})")
+    @Option(names = "--periods", paramLabel = "P", description = "Periods per trial run (default: ${DEFAULT-VALUE}).")
     int periods = 50;
 
     @picocli.CommandLine.Mixin

@@ -13,16 +13,17 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim sweep}: a parameter sweep of headless runs, on all local cores or on Spark. */
 @Command(name = "sweep", mixinStandardHelpOptions = true,
-        description = {"A parameter sweep: every point of a grid or Latin hypercube is an independent headless",
-            "run of a scene (the GUI's parameters and ranges). Writes results.csv as points finish",
-            "(parameters, summary fields, status ok/diverged/refused with its message, wall time),",
-            "charts/OUTPUT-vs-PARAMETER.png and sweep.json to --out. Started again on the same --out it",
-            "resumes, skipping the points already done. Spec format and engines: docs/scaling.md."})
+        description = {"Runs a parameter sweep: every point of a grid or Latin hypercube is an independent headless"
+            + " run.",
+            "Each point is a run of a scene with the GUI's parameters and ranges. Writes results.csv as points"
+                + " finish (parameters, summary fields, status ok, diverged or refused with its message, wall time),"
+                + " charts/OUTPUT-vs-PARAMETER.png and sweep.json to --out. Started again on the same --out it"
+                + " resumes, skipping the points already done. Spec format and engines: docs/scaling.md."})
 public final class SweepCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "the sweep spec (JSON)")
+    @Option(names = "--spec", paramLabel = "FILE", required = true, description = "The sweep spec (JSON).")
     Path specFile;
 
     @picocli.CommandLine.Mixin

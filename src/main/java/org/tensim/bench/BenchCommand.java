@@ -20,43 +20,44 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim bench}: figures of the force pass and of whole steps, per scene, size and thread count. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = {"Benchmark on the lattice cube of n x n x n nodes (axis and face-diagonal",
-            "springs, bottom fixed, gravity). One JSON line per case (size x threads).",
-            "With --out: DIR/bench.jsonl, and DIR/scaling.png for two sizes or more.",
-            "Figures only: nothing is asserted. See docs/performance.md."})
+        description = {"Measures the force pass and whole steps per scene, size and thread count.",
+            "The lattice scene is a cube of n x n x n nodes (axis and face-diagonal springs, bottom fixed, gravity)."
+                + " Prints one JSON line per case (size x threads); with --out also writes DIR/bench.jsonl, and"
+                + " DIR/scaling.png for two sizes or more. Figures only: nothing is asserted. See"
+                + " docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--scene", paramLabel = "NAME",
-            description = "scene: lattice or diaphragm (default: ${DEFAULT-VALUE})")
+            description = "Scene: lattice or diaphragm (default: ${DEFAULT-VALUE}).")
     String scene = "lattice";
 
-    @Option(names = "--n", split = ",", paramLabel = "N[,N...]",
-            description = "lattice sizes, nodes per side (default: ${DEFAULT-VALUE})")
+    @Option(names = {"--size", "--n"}, split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
+            description = "Lattice sizes, nodes per side (default: ${DEFAULT-VALUE}).")
     List<Integer> sizes = List.of(11, 21, 31);
 
-    @Option(names = "--threads", split = ",", paramLabel = "T[,T...]",
-            description = "thread counts (default: all cores, here ${DEFAULT-VALUE})")
+    @Option(names = "--threads", split = ",", paramLabel = "T[,T...]", hideParamSyntax = true,
+            description = "Thread counts (default: all cores, here ${DEFAULT-VALUE}).")
     List<Integer> threads = List.of(Parallelism.availableCores());
 
     @picocli.CommandLine.Mixin
     IntegratorOption integrator = new IntegratorOption();
 
-    @Option(names = "--links", description = "add a rigid link along a body diagonal of every cell (default: off)")
+    @Option(names = "--links", description = "Add a rigid link along a body diagonal of every cell (default: off).")
     boolean links;
 
     @Option(names = "--order", paramLabel = "ORDER",
-            description = "internal node order: auto, authored or rcm (default: ${DEFAULT-VALUE})")
+            description = "Internal node order: auto, authored or rcm (default: ${DEFAULT-VALUE}).")
     String order = "auto";
 
     @Option(names = "--solver", paramLabel = "NAME",
-            description = "parallel (the multi-threaded step) or builtin (the single-threaded loops, for "
-                + "before/after figures; --threads and --order are then ignored) (default: ${DEFAULT-VALUE})")
+            description = "The solver: parallel (the multi-threaded step) or builtin (the single-threaded loops, for "
+                + "before/after figures; --threads and --order are then ignored) (default: ${DEFAULT-VALUE}).")
     String solver = "parallel";
 
-    @Option(names = "--shuffle", description = "number the scene's nodes, springs and links randomly first "
-            + "(an arbitrarily numbered mesh; default: off)")
+    @Option(names = "--shuffle", description = "Number the scene's nodes, springs and links randomly first "
+            + "(an arbitrarily numbered mesh; default: off).")
     boolean shuffle;
 
     @picocli.CommandLine.Mixin
@@ -64,23 +65,25 @@ public final class BenchCommand implements Callable<Integer> {
             + " on the diaphragm");
 
     @Option(names = "--steps", paramLabel = "K",
-            description = "timed steps per repetition; 0 = about 2e7 spring evaluations (default: ${DEFAULT-VALUE})")
+            description = "Timed steps per repetition; 0 lets the command choose: as many as make about 2e7 spring"
+                    + " evaluations (10 to 5000), or 20 per round with --compare (default: ${DEFAULT-VALUE}).")
     int steps = 0;
 
-    @Option(names = "--repeats", paramLabel = "R", description = "repetitions; best and median reported (default: ${DEFAULT-VALUE})")
+    @Option(names = "--repeats", paramLabel = "R",
+            description = "Repetitions; best and median reported (default: ${DEFAULT-VALUE}).")
     int repeats = 5;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "also write DIR/bench.jsonl and DIR/scaling.png")
+    @Option(names = "--out", paramLabel = "DIR", description = "Also write DIR/bench.jsonl and DIR/scaling.png.")
     Path out;
 
-    @Option(names = "--compare", split = ",", paramLabel = "A,B",
-            description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
-                + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (default 20) on "
-                + "the first --threads count; one JSON line per round (step and solve ms of each, their ratio A/B, "
-                + "time and load), then the median ratios and how far apart the two ended; a name may end in "
-                + "':serial' or ':shared' (bdf2 with its solves and products' fibres and shear elements on the "
-                + "calling thread, or always shared among the threads; by default shared while measured faster) and "
-                + "in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)"})
+    @Option(names = "--compare", split = ",", paramLabel = "A,B", hideParamSyntax = true,
+            description = {"With --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
+                + "its own copy of the scene, timed in --repeats alternating rounds of --steps steps (20 when --steps "
+                + "is 0, its default) after as many warm-up steps, on the first --threads count; one JSON line per "
+                + "round (step and solve ms of each, their ratio A/B, time and load), then the median ratios and how "
+                + "far apart the two ended; a name may end in ':serial' or ':shared' (bdf2 with its solves and "
+                + "products' fibres and shear elements on the calling thread, or always shared among the threads; by "
+                + "default shared while measured faster) and in '@T' (its own thread count, e.g. bdf2@1,bdf2@2)."})
     List<String> compare;
 
     @Override
@@ -96,7 +99,7 @@ public final class BenchCommand implements Callable<Integer> {
         }
         for (int n : sizes) {
             if (n < 2) {
-                throw new IllegalArgumentException("--n " + n + ": a lattice needs at least 2 nodes per side");
+                throw new IllegalArgumentException("--size " + n + ": a lattice needs at least 2 nodes per side");
             }
         }
         if (steps < 0 || repeats < 1) {

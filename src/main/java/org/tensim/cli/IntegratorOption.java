@@ -8,7 +8,7 @@ import picocli.CommandLine.Option;
 /** {@code --integrator NAME}, a setup of the integrator catalogue (a picocli mixin). */
 public final class IntegratorOption {
     @Option(names = "--integrator", paramLabel = "NAME", completionCandidates = Integrators.Names.class,
-            description = "integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE})")
+            description = "Integrator: ${COMPLETION-CANDIDATES}; rk2 is the paper's (default: ${DEFAULT-VALUE}).")
     String integrator = Integrators.DEFAULT;
 
     /** The name given (or the default), as given. */

@@ -12,7 +12,7 @@ public final class OutFolderOption {
     /** The last part of a default folder that the spec file's name replaces. */
     public static final String SPEC_NAME = "SPEC-NAME";
 
-    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default: ${DEFAULT-VALUE})")
+    @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).")
     Path out;
 
     /** The option with this default folder. */

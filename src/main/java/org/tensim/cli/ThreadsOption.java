@@ -7,8 +7,8 @@ import picocli.CommandLine.Option;
 /** {@code --threads N}, the threads that share each step, 0 for automatic (a picocli mixin). */
 public final class ThreadsOption {
     @Option(names = "--threads", paramLabel = "N",
-            description = "threads that share each step; 0 = automatic: all cores from "
-                    + Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE})")
+            description = "Threads that share each step; 0 = automatic: all cores from "
+                    + Parallelism.AUTO_PARALLEL_SPRINGS + " springs, else 1 (default: ${DEFAULT-VALUE}).")
     int threads = 0;
 
     /** The count asked for, 0 for automatic; refused (a usage error) beyond the machine's sensible range. */

@@ -29,7 +29,7 @@ public final class TimeStepOption {
     }
 
     @Option(names = "--dt", paramLabel = "S", converter = Parser.class,
-            description = "time step, s (default: ${DEFAULT-VALUE})")
+            description = "Time step, s (default: ${DEFAULT-VALUE}).")
     Step dt;
 
     private final boolean sceneChooses;

@@ -21,171 +21,175 @@ import picocli.CommandLine.Option;
  */
 public final class DiaphragmOptions {
     @Option(names = "--mesh", paramLabel = "FILE",
-            description = "diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
-                    + " (default: the generated double dome)")
+            description = "Diaphragm mesh (.obj, .stl, .off): a thin closed shell, or one surface to offset"
+                    + " (default: the generated double dome).")
     public Path mesh;
 
-    @Option(names = "--units", paramLabel = "mm|m", description = "units of the mesh file (default: mm)")
+    @Option(names = "--units", paramLabel = "mm|m", description = "Units of the mesh file (default: mm).")
     String units;
 
     @Option(names = "--thickness", paramLabel = "MM",
-            description = "thickness given to a single-surface mesh, mm (default: 2.5)")
+            description = "Thickness given to a single-surface mesh, mm (default: 2.5).")
     Double thicknessMm;
 
     @Option(names = {"--rings", "--resolution"}, paramLabel = "N",
-            description = "rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
+            description = "Rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
                     + " 2,500 (default: 43 in `diaphragm`; in the GUI and specs the resolution study's pick in"
-                    + " meshes/resolution-pick.json)")
+                    + " meshes/resolution-pick.json).")
     Integer rings;
 
     @Option(names = "--boxes", paramLabel = "FILE",
-            description = "rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's"
-                    + " ../shared/meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric"
-                    + " rib cage, placed on the generated dome)")
+            description = "Rib and sternum boxes, mm, BodyParts3D frame, e.g. BodyParts3D's in the shared folder,"
+                    + " meshes/bodyparts3d/rib-sternum-bounds-mm.json (default: the project's parametric rib cage,"
+                    + " placed on the generated dome).")
     public Path boxes;
 
     @Option(names = "--thorax", paramLabel = "DIR",
-            description = "a thorax of bone surfaces: a folder with a parts.json and its OBJ parts in the mesh's frame,"
+            description = "A thorax of bone surfaces: a folder with a parts.json and its OBJ parts in the mesh's frame,"
                     + " e.g. ../shared/meshes/thorax (ribs, cartilage, sternum and vertebrae; the diaphragm attached at"
-                    + " its origins and sliding on the bones elsewhere) (default: the parametric rib cage)")
+                    + " its origins and sliding on the bones elsewhere) (default: the parametric rib cage).")
     public Path thorax;
 
     @Option(names = "--cage", paramLabel = "segments|surfaces",
-            description = "how the diaphragm meets the parametric cage (or --boxes): segments (the attachment band to"
+            description = "How the diaphragm meets the parametric cage (or --boxes): segments (the attachment band to"
                     + " the rib, cartilage and spine lines) or surfaces (the cage's bones swept into closed surfaces,"
                     + " attached at the origins and sliding on the bones elsewhere, as with --thorax, whose bones are"
-                    + " always surfaces) (default: segments)")
+                    + " always surfaces) (default: segments).")
     String cage;
 
     @Option(names = "--labels", paramLabel = "FILE",
-            description = "per-vertex labels of the mesh (tendon, muscle, origin-sternal, origin-costal,"
-                    + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule)")
+            description = "Per-vertex labels of the mesh (tendon, muscle, origin-sternal, origin-costal,"
+                    + " origin-lumbar; 'tensim-labels 1' format) (default: derived by rule).")
     public Path labels;
 
     @Option(names = "--tendon-rule", paramLabel = "RULE", converter = ModelNames.TendonRules.class,
-            description = "how the central tendon is found without --labels: plane (the paper's: the cap above a"
+            description = "How the central tendon is found without --labels: plane (the paper's: the cap above a"
                     + " plane, --tendon-fraction of the upper surface) or geodesic (the region nearest the two dome"
                     + " tops and their midpoint along the surface, the same share) (default: geodesic; plane with"
-                    + " --model paper)")
+                    + " --model paper).")
     TendonRule tendonRule;
 
     @Option(names = "--contact", negatable = true,
-            description = "with --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
-                    + " not attached (default: on; off in the paper's model; --no-contact turns it off)")
+            description = "With --thorax: the muscle slides on the bones, frictionless and one-sided, where it is"
+                    + " not attached (default: on; off in the paper's model; --no-contact turns it off).")
     public Boolean contact;
 
     @Option(names = "--contact-stiffness", paramLabel = "PA_PER_M",
-            description = "contact penalty stiffness per unit area of diaphragm, Pa/m (default: "
-                    + DiaphragmSpec.Cage.DEFAULT_CONTACT_PA_PER_M + ")")
+            description = "Contact penalty stiffness per unit area of diaphragm, Pa/m (default: "
+                    + DiaphragmSpec.Cage.DEFAULT_CONTACT_PA_PER_M + ").")
     Double contactPaPerM;
 
     @Option(names = "--liver-support", paramLabel = "PA_PER_M",
-            description = "with --thorax and contact: stiffness per unit area of the liver's one-sided elastic support"
+            description = "With --thorax and contact: stiffness per unit area of the liver's one-sided elastic support"
                     + " under the right hemidiaphragm, Pa/m; 0 turns it off (default: "
-                    + DiaphragmSpec.Cage.DEFAULT_LIVER_PA_PER_M + ")")
+                    + DiaphragmSpec.Cage.DEFAULT_LIVER_PA_PER_M + ").")
     Double liverPaPerM;
 
     @Option(names = "--abdominal-support", paramLabel = "PA_PER_M",
-            description = "stiffness per unit area of the abdominal contents under the diaphragm, Pa/m: every free"
+            description = "Stiffness per unit area of the abdominal contents under the diaphragm, Pa/m: every free"
                     + " lower-surface node tied to its rest point by K A_i / 2; 0 turns it off (default: "
-                    + DiaphragmParameters.DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M + "; docs/thorax.md, \"Resolution\")")
+                    + DiaphragmParameters.DEFAULT_ABDOMINAL_SUPPORT_PA_PER_M + "; docs/thorax.md, \"Resolution\").")
     Double abdominalPaPerM;
 
     @Option(names = "--abdominal-pressure", paramLabel = "PA",
-            description = "rise of the abdominal pressure on the diaphragm's lower face at end-inspiration, Pa,"
+            description = "Rise of the abdominal pressure on the diaphragm's lower face at end-inspiration, Pa,"
                     + " 0..5000: it follows the breathing level and presses the zone of apposition on the chest wall"
-                    + " (default: 0, none; docs/thorax.md, \"Is the full mesh converged?\")")
+                    + " (default: 0, none; docs/thorax.md, \"Is the full mesh converged?\").")
     Double abdominalPressurePa;
 
     @Option(names = "--apposition-pressure", paramLabel = "PA",
-            description = "with bone surfaces and contact: rise of the abdominal pressure on the zone of apposition at"
+            description = "With bone surfaces and contact: rise of the abdominal pressure on the zone of apposition at"
                     + " end-inspiration, Pa, 0..5000; it presses the muscle lying against the ribs, cartilages and"
                     + " sternum onto them; 0 turns it off (default: " + DiaphragmSpec.Cage.DEFAULT_APPOSITION_PA
-                    + "; docs/thorax.md, \"The zone of apposition\")")
+                    + "; docs/thorax.md, \"The zone of apposition\").")
     Double appositionPa;
 
     @Option(names = "--model", paramLabel = "NAME",
-            description = "default (the material shell, the attachment band, the fibres' active tension) or paper"
+            description = "The model: default (the material shell, the attachment band, the fibres' active"
+                    + " tension) or paper"
                     + " (exactly the paper's section 3.2: its tissue springs, attachment by a distance threshold,"
                     + " vertical action lines with per-node forces, no contact); the paper's model sets"
-                    + " --tissue-model, --attachment and --muscle-load, which must then be left out (default: default)")
+                    + " --tissue-model, --attachment and --muscle-load, which must then be left out (default:"
+                    + " default).")
     public String model;
 
     @Option(names = "--rib-amplitude", paramLabel = "FACTOR",
-            description = "rib rotation, times the quiet-breathing value, 0..3 (default: 1)")
+            description = "Rib rotation, times the quiet-breathing value, 0..3 (default: 1).")
     Double ribAmplitude;
 
-    @Option(names = "--muscle-force", paramLabel = "PA",
-            description = "peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
-                    + " default 19000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600)")
+    @Option(names = {"--muscle-action", "--muscle-force"}, paramLabel = "PA",
+            description = "Peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
+                    + " default 19000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600).")
     Double musclePa;
 
-    @Option(names = "--period", paramLabel = "S", description = "breathing period, s (default: 4)")
+    @Option(names = "--period", paramLabel = "S", description = "Breathing period, s (default: 4).")
     Double periodS;
 
     @Option(names = "--ie-ratio", paramLabel = "R",
-            description = "expiration time over inspiration time, I:E = 1:R (default: 2)")
+            description = "Expiration time over inspiration time, I:E = 1:R (default: 2).")
     Double ieRatio;
 
     @Option(names = "--attach-threshold", paramLabel = "MM",
-            description = "attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm (default: 20)")
+            description = "Attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm (default: 20).")
     Double attachMm;
 
     @Option(names = "--attachment", paramLabel = "MODEL", converter = ModelNames.Attachments.class,
-            description = "band (elastic ties, a stiffness per unit area) or paper-threshold (the paper's: nodes"
-                    + " within the threshold driven with the ribs) (default: band)")
+            description = "The attachment: band (elastic ties, a stiffness per unit area) or paper-threshold"
+                    + " (the paper's: nodes"
+                    + " within the threshold driven with the ribs) (default: band).")
     BoundaryConditions.Attachment attachment;
 
     @Option(names = "--band-stiffness", paramLabel = "PA_PER_M",
-            description = "attachment band stiffness per unit area of diaphragm, Pa/m (default: "
-                    + BoundaryConditions.DEFAULT_BAND_PA_PER_M + ")")
+            description = "Attachment band stiffness per unit area of diaphragm, Pa/m (default: "
+                    + BoundaryConditions.DEFAULT_BAND_PA_PER_M + ").")
     Double bandPaPerM;
 
     @Option(names = "--band-all-segments",
-            description = "attachment band: attach to every cage segment within the threshold, not only to the"
-                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine)")
+            description = "Attachment band: attach to every cage segment within the threshold, not only to the"
+                    + " diaphragm's origins (ribs 7-12 and their cartilages, the xiphoid, the spine).")
     boolean allSegments;
 
     @Option(names = "--muscle-load", paramLabel = "MODEL", converter = ModelNames.MuscleLoads.class,
-            description = "fibres (active tension along the fibres to the central tendon, 19 kPa of fibre stress),"
+            description = "The muscle load: fibres (active tension along the fibres to the central tendon, 19"
+                    + " kPa of fibre stress),"
                     + " pressure (action-line traction integrated over the muscle's area, 2.6 kPa) or paper-nodes (the"
-                    + " paper's per-node forces, 2.6 kPa) (default: fibres)")
+                    + " paper's per-node forces, 2.6 kPa) (default: fibres).")
     public BoundaryConditions.MuscleLoad muscleLoad;
 
     @Option(names = "--weld-tolerance", paramLabel = "MM",
-            description = "mesh cleaning: vertices closer than this are merged, mm (default: 0.001)")
+            description = "Mesh cleaning: vertices closer than this are merged, mm (default: 0.001).")
     Double weldMm;
 
     @Option(names = "--min-piece-fraction", paramLabel = "F",
-            description = "mesh cleaning: disconnected pieces with fewer than this fraction of the triangles are"
-                    + " dropped; 0 keeps every piece (default: 0.01)")
+            description = "Mesh cleaning: disconnected pieces with fewer than this fraction of the triangles are"
+                    + " dropped; 0 keeps every piece (default: 0.01).")
     Double minPieceFraction;
 
-    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",",
-            description = "normal of the muscle/tendon plane, pointing to the tendon (default: 0,0,1, superior)")
+    @Option(names = "--tendon-normal", paramLabel = "X,Y,Z", split = ",", hideParamSyntax = true,
+            description = "Normal of the muscle/tendon plane, pointing to the tendon (default: 0,0,1, superior).")
     double[] tendonNormal;
 
-    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",",
-            description = "a point of the muscle/tendon plane, mm, mesh frame (default: placed so that the tendon"
-                    + " has --tendon-fraction of the upper surface)")
+    @Option(names = "--tendon-point", paramLabel = "X,Y,Z", split = ",", hideParamSyntax = true,
+            description = "A point of the muscle/tendon plane, mm, mesh frame (default: placed so that the tendon"
+                    + " has --tendon-fraction of the upper surface).")
     double[] tendonPointMm;
 
     @Option(names = "--tendon-fraction", paramLabel = "F",
-            description = "share of the upper surface's area given to the tendon when no --tendon-point is given"
-                    + " (default: 0.12)")
+            description = "Share of the upper surface's area given to the tendon when no --tendon-point is given"
+                    + " (default: 0.12).")
     Double tendonFraction;
 
     @Option(names = "--tissue-model", paramLabel = "NAME", converter = ModelNames.TissueModels.class,
-            description = "how the shell comes from the tissue: material (identified from E, nu and t: membrane"
+            description = "How the shell comes from the tissue: material (identified from E, nu and t: membrane"
                     + " triangles, Kirchhoff bending, rigid columns), springs (the same with edge springs only) or"
                     + " paper (the model the paper's figures were reproduced with) (default: material;"
-                    + " docs/diaphragm.md)")
+                    + " docs/diaphragm.md).")
     TissueModel tissueModel;
 
     @Option(names = "--action-line", paramLabel = "X,Y,R", converter = ActionLineConverter.class,
-            description = "a vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
+            description = "A vertical muscle action line through (X, Y) with radius of action R, mm; repeat for"
                     + " several (default: one through the top of each dome, R = 0.3 x the mesh width); for"
-                    + " --muscle-load pressure and paper-nodes (the fibres' tension has no action lines)")
+                    + " --muscle-load pressure and paper-nodes (the fibres' tension has no action lines).")
     List<ActionLines.Line> actionLines;
 
     /**
@@ -247,8 +251,8 @@ public final class DiaphragmOptions {
                     + " --muscle-load pressure or paper-nodes");
         }
         if (rings != null && rings < 4) {
-            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4 or more, got "
-                    + rings);
+            throw new IllegalArgumentException("--rings/--resolution (rings per face of the generated dome) must be 4"
+                    + " or more, got " + rings);
         }
         if (thicknessMm != null && !(thicknessMm > 0 && Double.isFinite(thicknessMm))) {
             throw new IllegalArgumentException("--thickness must be a finite number of mm > 0, got " + thicknessMm);

@@ -45,7 +45,7 @@ class CommandLineTest {
         assertTrue(!r[2].contains("\tat "), "no stack trace: " + r[2]);
         String[] b = run("bench", "--n", "1");
         assertEquals("2", b[0]);
-        assertTrue(b[2].contains("--n 1"), b[2]);
+        assertTrue(b[2].contains("--size 1"), b[2]);
     }
 
     /** bench --compare takes two names of the catalogue, on the diaphragm; anything else is refused at once. */

@@ -55,7 +55,7 @@ class DiaphragmOptionsTest {
         v.put("apposition-pressure", 150.0);
         v.put("model", "default");
         v.put("rib-amplitude", 0.5);
-        v.put("muscle-force", 2000.0);
+        v.put("muscle-action", 2000.0);
         v.put("period", 5.0);
         v.put("ie-ratio", 1.5);
         v.put("attach-threshold", 15.0);

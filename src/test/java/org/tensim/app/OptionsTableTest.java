@@ -83,7 +83,7 @@ class OptionsTableTest {
         Map<String, String> given = new LinkedHashMap<>();
         given.put("--mesh", mesh.toString());
         given.put("--rib-amplitude", "0.5");
-        given.put("--muscle-force", "12000");
+        given.put("--muscle-action", "12000");
         given.put("--period", "3");
         given.put("--muscle-load", "fibres");
         given.put("--tendon-fraction", "0.2");
@@ -114,7 +114,7 @@ class OptionsTableTest {
     @Test
     void theCubesSummaryKeysHoldTheValuesARunWasGiven() throws Exception {
         Map<String, String> given = new LinkedHashMap<>();
-        given.put("--duration", "0.02");
+        given.put("--seconds", "0.02");
         given.put("--dt", "0.001");
         given.put("--force", "300");
         given.put("--frequency", "0.5");

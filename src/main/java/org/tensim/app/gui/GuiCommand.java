@@ -23,57 +23,61 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim gui}: the interactive window. */
 @Command(name = "gui", mixinStandardHelpOptions = true,
-        description = {"Interactive simulation in a Java3D window: tune parameters while it runs,",
-            "watch a probe node's displacement, save and load presets.",
-            "Last-used parameters are restored from $XDG_CONFIG_HOME/tensim/ (or ~/.config/tensim/).",
-            "Guide: docs/gui.md"})
+        description = {"Opens the interactive simulation in a Java3D window.",
+            "Tune parameters while it runs, watch a probe node's displacement, save and load presets. Last-used"
+                + " parameters are restored from $XDG_CONFIG_HOME/tensim/ (or ~/.config/tensim/). Guide:"
+                + " docs/gui.md."})
 public final class GuiCommand implements Callable<Integer> {
     private static volatile boolean scripted;
 
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @Option(names = "--scene", paramLabel = "NAME", description = "scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})",
+    @Option(names = "--scene", paramLabel = "NAME",
+            description = "Scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).",
             completionCandidates = SceneNames.class)
     String scene = TunableScenes.names().get(0);
 
     @picocli.CommandLine.Mixin
     DiaphragmOptions options = new DiaphragmOptions();
 
-    @Option(names = "--preset", paramLabel = "FILE", description = "load this JSON preset at start (after the last-used parameters)")
+    @Option(names = "--preset", paramLabel = "FILE",
+            description = "Load this JSON preset at start (after the last-used parameters).")
     Path preset;
 
-    @Option(names = "--fresh", description = "start from the defaults: do not restore the last-used parameters")
+    @Option(names = "--fresh", description = "Start from the defaults: do not restore the last-used parameters.")
     boolean fresh;
 
     @Option(names = "--config-dir", paramLabel = "DIR",
-            description = "folder for last-used parameters (default: $XDG_CONFIG_HOME/tensim or ~/.config/tensim)")
+            description = "Folder for last-used parameters (default: $XDG_CONFIG_HOME/tensim or ~/.config/tensim).")
     Path configDir;
 
-    @Option(names = "--paused", description = "start paused (default: playing)")
+    @Option(names = "--paused", description = "Start paused (default: playing).")
     boolean paused;
 
     @Option(names = "--screenshot", paramLabel = "FILE",
-            description = "save a PNG of the window once --after simulated seconds have run, then exit")
+            description = "Save a PNG of the window once --after simulated seconds have run, then exit.")
     Path screenshot;
 
-    @Option(names = "--after", paramLabel = "S", description = "simulated time before --screenshot, s (default: ${DEFAULT-VALUE})")
+    @Option(names = "--after", paramLabel = "S",
+            description = "Simulated time before --screenshot, s (default: ${DEFAULT-VALUE}).")
     double after = 2;
 
     @Option(names = "--run-for", paramLabel = "S",
-            description = {"play for S seconds of wall time once the view shows (on until the first step if none was done"
+            description = {"Play for S seconds of wall time once the view shows (on until the first step if none was"
+                    + " done"
                     + " by then), close the window and print a JSON"
                     + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
-                    + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)"})
+                    + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)."})
     Double runFor;
 
-    @Option(names = "--unpaced", description = "start with \"Real time\" unticked: simulate as fast as possible"
-            + " instead of at most real time")
+    @Option(names = "--unpaced", description = "Start with \"Real time\" unticked: simulate as fast as possible"
+            + " instead of at most real time.")
     boolean unpaced;
 
     @Option(names = "--fps-cap", paramLabel = "N",
-            description = "draw at most N frames per second, 0 for no cap; the View menu changes it (default:"
-                    + " ${DEFAULT-VALUE}, which leaves the renderer's spare time to the simulation)")
+            description = "Draw at most N frames per second, 0 for no cap; the View menu changes it (default:"
+                    + " ${DEFAULT-VALUE}, which leaves the renderer's spare time to the simulation).")
     int fpsCap = org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS;
 
     @picocli.CommandLine.Mixin

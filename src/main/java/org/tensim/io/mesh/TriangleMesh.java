@@ -111,6 +111,41 @@ public final class TriangleMesh {
         return s;
     }
 
+    /** Edges used by exactly one triangle (the rims of holes); 0 for a closed surface. */
+    public int boundaryEdgeCount() {
+        java.util.Map<Long, Integer> uses = new java.util.HashMap<>();
+        for (int t = 0; t < triangleCount(); t++) {
+            for (int k = 0; k < 3; k++) {
+                long a = corner(t, k);
+                long c = corner(t, (k + 1) % 3);
+                uses.merge(Math.min(a, c) << 32 | Math.max(a, c), 1, Integer::sum);
+            }
+        }
+        int open = 0;
+        for (int u : uses.values()) {
+            open += u == 1 ? 1 : 0;
+        }
+        return open;
+    }
+
+    /**
+     * The volume the triangles enclose by the divergence theorem, {@code sum_t a . (b x c) / 6}, m^3: positive for a
+     * closed surface wound counter-clockwise seen from outside, negative when wound inwards; for an open surface it
+     * depends on the origin and means little.
+     */
+    public double signedVolume() {
+        double v = 0;
+        for (int t = 0; t < triangleCount(); t++) {
+            int a = 3 * tri[3 * t];
+            int b = 3 * tri[3 * t + 1];
+            int c = 3 * tri[3 * t + 2];
+            v += xyz[a] * (xyz[b + 1] * xyz[c + 2] - xyz[b + 2] * xyz[c + 1])
+                    - xyz[a + 1] * (xyz[b] * xyz[c + 2] - xyz[b + 2] * xyz[c])
+                    + xyz[a + 2] * (xyz[b] * xyz[c + 1] - xyz[b + 1] * xyz[c]);
+        }
+        return v / 6;
+    }
+
     @Override
     public String toString() {
         return "TriangleMesh[" + vertexCount() + " vertices, " + triangleCount() + " triangles, bounds (m) "

@@ -1,7 +1,5 @@
 package org.tensim.scene.thorax;
 
-import java.util.HashMap;
-import java.util.Map;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.SignedDistance;
 
@@ -145,26 +143,9 @@ public final class DistanceGrid implements SignedDistance {
         float[] d = samples.distance();
         double maxDev = samples.maxWindingDeviation();
         double seconds = (System.nanoTime() - t0) * 1e-9;
-        Report r = new Report(mesh.triangleCount(), boundaryEdges(mesh), n[0], n[1], n[2], cellM, marginM, seconds,
+        Report r = new Report(mesh.triangleCount(), mesh.boundaryEdgeCount(), n[0], n[1], n[2], cellM, marginM, seconds,
                 4L * total, maxDev);
         return new DistanceGrid(d, n[0], n[1], n[2], origin, cellM, b, r);
-    }
-
-    /** Edges used by exactly one triangle. */
-    private static int boundaryEdges(TriangleMesh m) {
-        Map<Long, Integer> uses = new HashMap<>();
-        for (int t = 0; t < m.triangleCount(); t++) {
-            for (int k = 0; k < 3; k++) {
-                long a = m.corner(t, k);
-                long c = m.corner(t, (k + 1) % 3);
-                uses.merge(Math.min(a, c) << 32 | Math.max(a, c), 1, Integer::sum);
-            }
-        }
-        int open = 0;
-        for (int u : uses.values()) {
-            open += u == 1 ? 1 : 0;
-        }
-        return open;
     }
 
     @Override

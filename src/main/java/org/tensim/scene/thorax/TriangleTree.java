@@ -11,10 +11,13 @@ import org.tensim.io.mesh.SurfaceDistance;
  * 1 inside a closed, outward-wound surface, 0 outside, and changes smoothly across a small hole, so "inside where
  * it exceeds 1/2" tolerates the holes and non-manifold edges of segmented bones.
  *
+ * <p>Used by {@link DistanceGrid} (signs of a bone's distance field) and by the volume body's clipping of a lattice
+ * to a closed surface ({@code org.tensim.scene.volume}).
+ *
  * <p>Queries do not allocate beyond the stack the caller passes ({@link #newStack()}), so one tree can be queried
  * from several threads, each with its own stack.
  */
-final class TriangleTree {
+public final class TriangleTree {
     private static final int LEAF = 8;
     private static final double FOUR_PI = 4 * Math.PI;
 
@@ -42,7 +45,7 @@ final class TriangleTree {
      * @param beta      far-field ratio: a cluster is summed as one dipole when the point is farther than beta times
      *                  its radius from its centroid (2 in Barill et al.; larger is more exact and slower)
      */
-    TriangleTree(double[] xyz, int[] triangles, double beta) {
+    public TriangleTree(double[] xyz, int[] triangles, double beta) {
         if (triangles.length == 0) {
             throw new IllegalArgumentException("a distance grid needs at least one triangle");
         }
@@ -74,7 +77,7 @@ final class TriangleTree {
     }
 
     /** A traversal stack for one thread's queries. */
-    int[] newStack() {
+    public int[] newStack() {
         return new int[Math.max(64, 2 * nodes)];
     }
 
@@ -191,7 +194,7 @@ final class TriangleTree {
     }
 
     /** Distance from the point to the nearest triangle, m. */
-    double distance(double px, double py, double pz, int[] stack) {
+    public double distance(double px, double py, double pz, int[] stack) {
         double best = Double.POSITIVE_INFINITY;
         int top = 0;
         stack[top++] = 0;
@@ -228,7 +231,7 @@ final class TriangleTree {
     }
 
     /** Generalised winding number at the point: about 1 inside, 0 outside (dimensionless). */
-    double winding(double px, double py, double pz, int[] stack) {
+    public double winding(double px, double py, double pz, int[] stack) {
         double w = 0;
         int top = 0;
         stack[top++] = 0;

@@ -1,0 +1,69 @@
+package org.tensim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/** {@code volume-study}: its files, its summary's figures, and one-line refusals. */
+class VolumeStudyCommandTest {
+    private static String[] run(String... args) {
+        CommandLine cl = Main.commandLine();
+        StringWriter err = new StringWriter();
+        cl.setErr(new PrintWriter(err));
+        PrintStream old = System.out;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+            code = cl.execute(args);
+        } finally {
+            System.setOut(old);
+        }
+        return new String[] {Integer.toString(code), out.toString(StandardCharsets.UTF_8), err.toString()};
+    }
+
+    @Test
+    void writesTheTablesAndASummaryWithTheErrorsAndOrders(@TempDir Path dir) throws Exception {
+        String[] r = run("volume-study", "--cantilever-cells", "1,2,4", "--block-cells", "1.5,2.5", "--fits",
+                "isotropic", "--out", dir.toString());
+        assertEquals("0", r[0], r[2]);
+        assertEquals(1 + 3, Files.readAllLines(dir.resolve("volume-cantilever.csv")).size());
+        assertEquals(1 + 2, Files.readAllLines(dir.resolve("volume-block.csv")).size());
+        assertTrue(Files.size(dir.resolve("volume-convergence.png")) > 1000);
+        JsonNode s = new ObjectMapper().readTree(dir.resolve("summary.json").toFile());
+        assertEquals("ok", s.get("status").asText());
+        JsonNode iso = s.get("isotropic");
+        assertEquals(0.25, iso.get("model_poisson").asDouble(), 1e-12);
+        JsonNode beam = iso.get("cantilever");
+        assertEquals(3, beam.get("error_vs_euler_bernoulli").size());
+        double coarse = beam.get("error_vs_euler_bernoulli").get(0).asDouble();
+        double fine = beam.get("finest_error").asDouble();
+        assertTrue(coarse < fine && fine < 0, "a finer beam is closer to Euler-Bernoulli, from below: " + beam);
+        assertTrue(beam.get("observed_order").get(0).asDouble() > 0, beam.toString());
+        assertEquals(0.25, iso.get("block").get("measured_poisson").get(1).asDouble(), 0.01);
+        assertEquals(0.4, iso.get("block").get("requested_poisson").asDouble(), 0);
+    }
+
+    @Test
+    void badOptionsAreRefusedInOneLine(@TempDir Path dir) {
+        String[] r = run("volume-study", "--cantilever-cells", "2,3", "--out", dir.toString());
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertTrue(r[2].contains("each twice the last") && !r[2].contains("\tat "), r[2]);
+        String[] f = run("volume-study", "--fits", "cubic", "--out", dir.toString());
+        assertTrue(f[2].contains("spring fit must be 'isotropic' or 'axial', got 'cubic'"), f[2]);
+        String[] m = run("volume-study", "--mesh", dir.resolve("none.obj").toString(), "--out", dir.toString());
+        assertTrue(!"0".equals(m[0]) && m[2].contains("none.obj") && !m[2].contains("\tat "), m[2]);
+    }
+}
