@@ -109,7 +109,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
-        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, sceneSpec, o,
+        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(), run -> simulate(run, sceneSpec, o,
                 integratorUsed, named, threadCount));
     }
 

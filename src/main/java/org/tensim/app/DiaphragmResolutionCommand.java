@@ -73,7 +73,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
     boolean noPick;
 
     @picocli.CommandLine.Mixin
-    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm-resolution"));
 
     @Override
     public Integer call() throws Exception {
@@ -113,7 +113,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             throw usage("--tolerance: " + e.getMessage());
         }
         DiaphragmSpec.Mesh m = s.mesh();
-        return RunFolder.run(folder, "diaphragm resolution-study", OUTPUTS, run -> {
+        return RunFolder.run(folder, "diaphragm resolution-study", OUTPUTS, out.overwrite(), run -> {
             for (String n : OUTPUTS) {
                 run.file(n);
             }

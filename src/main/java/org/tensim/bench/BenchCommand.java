@@ -22,7 +22,7 @@ import picocli.CommandLine.Option;
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Benchmark on the lattice cube of n x n x n nodes (axis and face-diagonal",
             "springs, bottom fixed, gravity). One JSON line per case (size x threads).",
-            "With --out: DIR/bench.jsonl, and DIR/scaling.png for two sizes or more.",
+            "Writes bench.jsonl, and scaling.png for two sizes or more, to --out.",
             "Figures only: nothing is asserted. See docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
@@ -70,8 +70,8 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--repeats", paramLabel = "R", description = "repetitions; best and median reported (default: ${DEFAULT-VALUE})")
     int repeats = 5;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "also write DIR/bench.jsonl and DIR/scaling.png")
-    Path out;
+    @picocli.CommandLine.Mixin
+    org.tensim.cli.OutFolderOption out = new org.tensim.cli.OutFolderOption(Path.of("out", "bench"));
 
     @Option(names = "--compare", split = ",", paramLabel = "A,B",
             description = {"with --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
@@ -91,9 +91,7 @@ public final class BenchCommand implements Callable<Integer> {
         for (int t : threads) {
             OptionChecks.threads(spec, "--threads", t, false);
         }
-        if (out != null) {
-            OptionChecks.outFolder(spec, out);
-        }
+        Path folder = out.folder(spec);
         for (int n : sizes) {
             if (n < 2) {
                 throw new IllegalArgumentException("--n " + n + ": a lattice needs at least 2 nodes per side");
@@ -122,11 +120,7 @@ public final class BenchCommand implements Callable<Integer> {
                     repeats, k, m -> System.out.println(Json.line(m)));
             return 0;
         }
-        if (out == null) {
-            measure(builtin, threadCounts, ord, step, null);
-            return 0;
-        }
-        return RunFolder.run(out, "bench", List.of("bench.jsonl", "scaling.png"), run -> {
+        return RunFolder.run(folder, "bench", List.of("bench.jsonl", "scaling.png"), out.overwrite(), run -> {
             List<Map<String, Object>> results = measure(builtin, threadCounts, ord, step, run.file("bench.jsonl"));
             if (sizes.size() >= 2 && !"diaphragm".equals(scene)) {
                 ScalingChart.write(results, run.file("scaling.png"));
