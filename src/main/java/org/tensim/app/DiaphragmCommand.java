@@ -120,8 +120,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
-        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(), run -> simulate(run, sceneSpec, o,
-                integratorUsed, named, threadCount));
+        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(),
+                run -> simulate(run, sceneSpec, o, integratorUsed, named, threadCount));
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {

@@ -67,7 +67,8 @@ public final class GuiCommand implements Callable<Integer> {
             description = {"play for S seconds of wall time once the view shows (on until the first step if none was done"
                     + " by then), close the window and print a JSON"
                     + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
-                    + " edt_longest_delay_ms, load averages, window_title... (with --screenshot: the picture is taken at the end)"})
+                    + " edt_longest_delay_ms, load averages, window_title... (with --screenshot: the picture is taken"
+                    + " at the end)"})
     Double runFor;
 
     @Option(names = "--unpaced", description = "start with \"Real time\" unticked: simulate as fast as possible"
@@ -124,7 +125,8 @@ public final class GuiCommand implements Callable<Integer> {
                 : java.util.List.of("--rings", String.valueOf(picked.rings())));
         if (picked != null && options.mesh != null) {
             throw new IllegalArgumentException("--pick " + pick.file() + " is a resolution of the generated double"
-                    + " dome, and the preset " + preset + " opens the mesh " + options.mesh + ": leave out one of them");
+                    + " dome, and the preset " + preset + " opens the mesh " + options.mesh
+                    + ": leave out one of them");
         }
         SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
@@ -269,7 +271,8 @@ public final class GuiCommand implements Callable<Integer> {
         if (!"diaphragm".equals(scene)) {
             return null;
         }
-        java.util.List<String> given = new java.util.ArrayList<>(PresetScene.given(spec.commandLine().getParseResult()));
+        java.util.List<String> given = new java.util.ArrayList<>(
+                PresetScene.given(spec.commandLine().getParseResult()));
         given.addAll(implied);
         if (preset == null) {
             return given;
