@@ -22,11 +22,12 @@ import picocli.CommandLine.ParameterException;
 
 /** {@code tensim diaphragm resolution-study}: the same scene at several resolutions against the finest. */
 @Command(name = "resolution-study", mixinStandardHelpOptions = true,
-        description = {"The diaphragm at several resolutions, each against the finest: error, order, and the",
-            "coarsest model within --tolerance (the pick: resolution-pick.json in --out, or --pick-out FILE;",
-            "diaphragm and gui open at it with --pick FILE).",
-            "Generated double domes by --study-rings, or --mesh decimated (--cells) and refined (--refine);",
-            "with --thorax every model in that thorax. Writes resolution.csv, .png, .json. docs/diaphragm.md."})
+        description = {"The diaphragm at several resolutions, each against the finest: error,",
+            "order, and the coarsest model within --tolerance (the pick, written to",
+            "resolution-pick.json in --out or to --pick-out FILE; diaphragm and gui",
+            "open at it with --pick FILE). Generated double domes by --study-rings, or",
+            "--mesh decimated (--cells) and refined (--refine); with --thorax every",
+            "model in that thorax. Writes resolution.csv, .png, .json. docs/diaphragm.md."})
 public final class DiaphragmResolutionCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
