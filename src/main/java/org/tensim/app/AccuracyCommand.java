@@ -105,7 +105,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                         AccuracyScenes.get(name).endTimeS());
             }
         }
-        return RunFolder.run(out.folder(spec), "accuracy", List.of(), run -> study(run, shellModel));
+        return RunFolder.run(out.folder(spec), "accuracy", List.of(), out.overwrite(), run -> study(run, shellModel));
     }
 
     private void study(RunFolder run, TissueModel shellModel) throws IOException {

@@ -57,6 +57,10 @@ public final class CalibrateCommand implements Callable<Integer> {
             description = "--make-target: seed of the noise (default: ${DEFAULT-VALUE}).")
     long seed = 1;
 
+    /** What a calibration writes into --out (it writes no summary.json: these names tell its folder). */
+    static final java.util.List<String> OUTPUTS = java.util.List.of("best-preset.json", "history.csv",
+            "convergence.png", "residuals.json", "evaluations.csv");
+
     @Override
     public Integer call() throws Exception {
         if (makeTarget != null) {
@@ -69,6 +73,7 @@ public final class CalibrateCommand implements Callable<Integer> {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         Path dir = out.folder(spec, specFile);
+        org.tensim.io.FolderClaim.check(dir, "calibrate", OUTPUTS, out.overwrite());
         try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("calibrating " + s.names() + " of " + s.setup().geometry() + " on " + e.describe()
                     + " into " + dir);

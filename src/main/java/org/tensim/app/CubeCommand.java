@@ -74,7 +74,7 @@ public final class CubeCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw CommandChecks.usage(spec, e.getMessage());
         }
-        return RunFolder.run(folder, "cube", CubeReport.OUTPUTS, run -> {
+        return RunFolder.run(folder, "cube", CubeReport.OUTPUTS, out.overwrite(), run -> {
             CubeReport report = CubeReport.run(p, integrator.name(), run);
             System.out.println("wrote " + report.csv() + ", " + report.chart() + ", " + report.summaryFile());
             if (report.status() == RunStatus.DIVERGED) {

@@ -35,6 +35,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     DiaphragmOptions scene = new DiaphragmOptions();
 
     @picocli.CommandLine.Mixin
+    org.tensim.tuning.PickOption pick = new org.tensim.tuning.PickOption();
+
+    @picocli.CommandLine.Mixin
     DiaphragmSolverOptions solver = new DiaphragmSolverOptions();
 
     @Option(names = "--seconds", paramLabel = "S", description = "Simulated time, s; the breathing figures need one"
@@ -82,8 +85,16 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         // Options are checked before the mesh is read, which takes seconds.
+        org.tensim.experiment.diaphragm.ResolutionPick picked;
+        try {
+            picked = pick.apply(scene);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage());
+        }
         final DiaphragmSpec sceneSpec = CommandChecks.scene(spec, scene,
-                Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH : null,
+                // --rings (or the pick's) asks for the generated dome at those rings, not the committed 43-ring mesh.
+                !scene.ringsGiven() && Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH
+                        : null,
                 DiaphragmSpec.PAPER_RINGS);
         solver.check(spec, sceneSpec, seconds);
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
@@ -109,8 +120,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
         DiaphragmReport.Options o = new DiaphragmReport.Options(seconds, dt, vtkPerCycle, vectorScale, 0.01, csvTimes);
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
-        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, run -> simulate(run, sceneSpec, o,
-                integratorUsed, named, threadCount));
+        return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(),
+                run -> simulate(run, sceneSpec, o, integratorUsed, named, threadCount));
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {
@@ -154,6 +165,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
         fields.put("muscle_load", BoundaryConditions.name(bc.muscleLoad()));
         if (setting != null) {
             fields.put("realtime_setting", setting.toMap());
+        }
+        if (pick.file() != null) {
+            fields.put("resolution_pick_file", pick.file().toString());
         }
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);

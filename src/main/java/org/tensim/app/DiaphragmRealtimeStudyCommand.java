@@ -54,7 +54,7 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
     String studyConfigs;
 
     @picocli.CommandLine.Mixin
-    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm-realtime"));
 
     @Override
     public Integer call() throws Exception {
@@ -81,7 +81,7 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
         }
         if (thorax) {
             final java.util.regex.Pattern configs = only;
-            return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, run -> {
+            return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, out.overwrite(), run -> {
                 run.file("realtime.csv");
                 run.file("realtime.json");
                 DiaphragmSetup.Inputs in = DiaphragmSetup.read(s);
@@ -100,7 +100,7 @@ public final class DiaphragmRealtimeStudyCommand implements Callable<Integer> {
                 System.out.println(Json.line(run.finish(RunStatus.OK, r)));
             });
         }
-        return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, run -> {
+        return RunFolder.run(folder, "diaphragm realtime-study", OUTPUTS, out.overwrite(), run -> {
             for (String n : OUTPUTS) {
                 run.file(n);
             }

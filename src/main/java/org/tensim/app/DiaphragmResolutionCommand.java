@@ -24,14 +24,15 @@ import picocli.CommandLine.ParameterException;
 @Command(name = "resolution-study", mixinStandardHelpOptions = true,
         description = {"Runs the diaphragm at several resolutions, each against the finest, and picks the coarsest"
             + " within --tolerance.",
-            "It reports the error and the order, and the coarsest model within --tolerance (the pick the GUI opens"
-                + " with, meshes/resolution-pick.json). The models are generated double domes by --study-rings, or"
-                + " --mesh decimated (--cells) and refined (--refine); with --thorax every model is in that thorax."
-                + " Writes resolution.csv, resolution.png and resolution.json (docs/diaphragm.md)."})
+            "It reports the error and the order, and the coarsest model within --tolerance (the pick, written to"
+                + " resolution-pick.json in --out or to --pick-out FILE; diaphragm and gui open at it with --pick FILE)."
+                + " The models are generated double domes by --study-rings, or --mesh decimated (--cells) and refined"
+                + " (--refine); with --thorax every model is in that thorax. Writes resolution.csv, resolution.png and"
+                + " resolution.json (docs/diaphragm.md)."})
 public final class DiaphragmResolutionCommand implements Callable<Integer> {
     /** Outputs, written by the study into --out. */
     static final List<String> OUTPUTS = List.of("resolution.csv", "resolution.png", "resolution.json",
-            "resolution-pick.json", "resolution-nodes.csv");
+            ResolutionPick.NAME, "resolution-nodes.csv");
 
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -70,12 +71,16 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE}).")
     int refine;
 
-    @Option(names = "--no-pick", description = "Do not write the pick to meshes/resolution-pick.json (it still goes"
-            + " to --out).")
-    boolean noPick;
+    @Option(names = "--pick-out", paramLabel = "FILE",
+            description = "Write the pick (the default study's) to FILE instead of resolution-pick.json in --out.")
+    Path pickOut;
+
+    /** Kept for scripts: the pick once also went to the project's meshes folder unless this was given. */
+    @Option(names = "--no-pick", hidden = true)
+    boolean formerNoPick;
 
     @picocli.CommandLine.Mixin
-    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
+    OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm-resolution"));
 
     @Override
     public Integer call() throws Exception {
@@ -84,6 +89,13 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
+        if (pickOut != null && (studyRings != null || scene.mesh != null)) {
+            throw usage("--pick-out: only the default study (the double domes at 10 to 43 rings) makes a pick; leave"
+                    + " out " + (studyRings != null ? "--study-rings" : "--mesh") + " or --pick-out");
+        }
+        if (pickOut != null && (pickOut.toString().isBlank() || java.nio.file.Files.isDirectory(pickOut))) {
+            throw usage("--pick-out must name a file to write, got '" + pickOut + "'");
+        }
         if (s.mesh().labels() != null) {
             throw usage("--labels cannot go with the resolution study: a label file names the vertices of one mesh,"
                     + " and the study decimates it");
@@ -115,7 +127,7 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             throw usage("--tolerance: " + e.getMessage());
         }
         DiaphragmSpec.Mesh m = s.mesh();
-        return RunFolder.run(folder, "diaphragm resolution-study", OUTPUTS, run -> {
+        return RunFolder.run(folder, "diaphragm resolution-study", OUTPUTS, out.overwrite(), run -> {
             for (String n : OUTPUTS) {
                 run.file(n);
             }
@@ -123,9 +135,14 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
                     ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm,
                             decimation, refine, rs, folder)
                     : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder)
-                    : ResolutionStudy.run(rs, folder, noPick ? null : ResolutionPick.FILE);
+                    : ResolutionStudy.run(rs, folder, pickFile(folder));
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
         });
+    }
+
+    /** Where the default study writes its pick: {@code --pick-out}, else resolution-pick.json in the run folder. */
+    Path pickFile(Path folder) {
+        return pickOut != null ? pickOut : folder.resolve(ResolutionPick.NAME);
     }
 
     /**

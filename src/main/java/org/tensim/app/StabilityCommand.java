@@ -77,7 +77,7 @@ public final class StabilityCommand implements Callable<Integer> {
         if (periods < 1) {
             throw new IllegalArgumentException("--periods must be at least 1, got " + periods);
         }
-        return RunFolder.run(out.folder(spec), "stability", OUTPUTS, this::study);
+        return RunFolder.run(out.folder(spec), "stability", OUTPUTS, out.overwrite(), this::study);
     }
 
     /** The files this command writes into --out (docs/outputs.md). */

@@ -32,6 +32,9 @@ public final class SweepCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     EngineOptions engines = new EngineOptions();
 
+    /** What a sweep writes into --out (it writes no summary.json: these names tell its folder, which it resumes). */
+    static final java.util.List<String> OUTPUTS = java.util.List.of("results.csv", "charts", "sweep.json");
+
     @Override
     public Integer call() throws Exception {
         SweepSpec s;
@@ -41,6 +44,7 @@ public final class SweepCommand implements Callable<Integer> {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         Path dir = out.folder(spec, specFile);
+        org.tensim.io.FolderClaim.check(dir, "sweep", OUTPUTS, out.overwrite());
         try (SweepEngine e = engines.create(spec.commandLine())) {
             System.out.println("sweep of " + s.setup().geometry() + " on " + e.describe() + " into " + dir);
             Sweep.Outcome o = Sweep.run(s, dir, e, System.console() != null, System.out);

@@ -29,59 +29,59 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim volume-study}: the volume body against the cantilever and the compressed block, under refinement. */
 @Command(name = "volume-study", mixinStandardHelpOptions = true,
-        description = {"The volume body (a lattice clipped to a closed surface, docs/volume.md) against",
-            "known answers, by small-displacement statics, at each resolution given:",
-            "a cantilever of depth D and length 10 D clamped at one end with a tip load,",
-            "against Euler-Bernoulli's F L^3 / (3 E I) (and Timoshenko's); and a block",
-            "compressed on rollers (uniaxial stress) against -sigma / E, its lateral strain",
-            "against nu. Prints the tables and the measured orders. Writes",
-            "volume-cantilever.csv, volume-block.csv and volume-convergence.png to --out.",
-            "The last line is one JSON object with, per spring fit, the errors, the orders",
-            "and the lateral strains (the summary's fields). With --mesh, fills each surface",
-            "at each --cell size instead and reports the builds (volume-meshes.csv)."})
+        description = {"Checks the volume body against known answers under refinement.",
+            "The volume body (a lattice clipped to a closed surface, docs/volume.md) is solved by small-displacement"
+                + " statics at each resolution given: a cantilever of depth D and length 10 D clamped at one end with"
+                + " a tip load, against Euler-Bernoulli's F L^3 / (3 E I) (and Timoshenko's); and a block compressed"
+                + " on rollers (uniaxial stress) against -sigma / E, its lateral strain against nu. Prints the tables"
+                + " and the measured orders, and writes volume-cantilever.csv, volume-block.csv and"
+                + " volume-convergence.png to --out.",
+            "The last line is one JSON object with, per spring fit, the errors, the orders and the lateral strains"
+                + " (the summary's fields). With --mesh, it fills each surface at each --cell size instead and reports"
+                + " the builds (volume-meshes.csv)."})
 public final class VolumeStudyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--cantilever-cells", split = ",", paramLabel = "N[,N...]",
-            description = "cells across the beam's depth, each twice the last (default: ${DEFAULT-VALUE})")
+            description = "Cells across the beam's depth, each twice the last (default: ${DEFAULT-VALUE}).")
     List<Integer> cantileverCells = List.of(2, 4, 8);
 
     @Option(names = "--block-cells", split = ",", paramLabel = "N[,N...]",
-            description = "cells across the block's side; a half cell more leaves its last layer half full, a"
-                    + " clipped lattice (default: ${DEFAULT-VALUE})")
+            description = "Cells across the block's side; a half cell more leaves its last layer half full, a"
+                    + " clipped lattice (default: ${DEFAULT-VALUE}).")
     List<Double> blockCells = List.of(2.5, 4.5, 8.5);
 
-    @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE})")
+    @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE}).")
     double youngPa = 1e3;
 
     @Option(names = "--poisson", paramLabel = "NU", description = "Poisson's ratio asked for (default: "
-            + "${DEFAULT-VALUE}; the isotropic fit gives 1/4 whatever is asked)")
+            + "${DEFAULT-VALUE}; the isotropic fit gives 1/4 whatever is asked).")
     double poisson = 0.4;
 
-    @Option(names = "--density", paramLabel = "KG_M3", description = "density, kg/m^3 (default: ${DEFAULT-VALUE};"
-            + " statics does not depend on it, --mesh's critical time step does)")
+    @Option(names = "--density", paramLabel = "KG_M3", description = "Density, kg/m^3 (default: ${DEFAULT-VALUE};"
+            + " statics does not depend on it, --mesh's critical time step does).")
     double densityKgPerM3 = 1000;
 
     @Option(names = "--fits", split = ",", paramLabel = "FIT[,FIT...]",
-            description = "spring fits: isotropic, axial (default: ${DEFAULT-VALUE})")
+            description = "Spring fits: isotropic, axial (default: ${DEFAULT-VALUE}).")
     List<String> fits = List.of("isotropic", "axial");
 
-    @Option(names = "--sliding-root", description = "hold the cantilever's root only along the beam (and its"
-            + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does")
+    @Option(names = "--sliding-root", description = "Hold the cantilever's root only along the beam (and its"
+            + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does.")
     boolean slidingRoot;
 
     @Option(names = "--mesh", split = ",", paramLabel = "FILE[,FILE...]",
-            description = "closed surfaces (OBJ, STL, OFF) to fill at each --cell size, reporting the build instead of"
-                    + " the known answers")
+            description = "Closed surfaces (OBJ, STL, OFF) to fill at each --cell size, reporting the build instead of"
+                    + " the known answers.")
     List<Path> meshes = List.of();
 
-    @Option(names = "--units", paramLabel = "UNITS", description = "length unit of --mesh files: mm or m (default:"
-            + " ${DEFAULT-VALUE})")
+    @Option(names = "--units", paramLabel = "UNITS", description = "Length unit of --mesh files: mm or m (default:"
+            + " ${DEFAULT-VALUE}).")
     String units = "mm";
 
     @Option(names = "--cell", split = ",", paramLabel = "M[,M...]",
-            description = "cell sizes for --mesh, m (default: ${DEFAULT-VALUE})")
+            description = "Cell sizes for --mesh, m (default: ${DEFAULT-VALUE}).")
     List<Double> cells = List.of(0.01, 0.005);
 
     @picocli.CommandLine.Mixin

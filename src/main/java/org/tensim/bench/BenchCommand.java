@@ -22,9 +22,8 @@ import picocli.CommandLine.Option;
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Measures the force pass and whole steps per scene, size and thread count.",
             "The lattice scene is a cube of n x n x n nodes (axis and face-diagonal springs, bottom fixed, gravity)."
-                + " Prints one JSON line per case (size x threads); with --out also writes DIR/bench.jsonl, and"
-                + " DIR/scaling.png for two sizes or more. Figures only: nothing is asserted. See"
-                + " docs/performance.md."})
+                + " Prints one JSON line per case (size x threads) and writes bench.jsonl, and scaling.png for two"
+                + " sizes or more, to --out. Figures only: nothing is asserted. See docs/performance.md."})
 public final class BenchCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -73,8 +72,8 @@ public final class BenchCommand implements Callable<Integer> {
             description = "Repetitions; best and median reported (default: ${DEFAULT-VALUE}).")
     int repeats = 5;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "Also write DIR/bench.jsonl and DIR/scaling.png.")
-    Path out;
+    @picocli.CommandLine.Mixin
+    org.tensim.cli.OutFolderOption out = new org.tensim.cli.OutFolderOption(Path.of("out", "bench"));
 
     @Option(names = "--compare", split = ",", paramLabel = "A,B", hideParamSyntax = true,
             description = {"With --scene diaphragm: two integrators of the catalogue (e.g. bdf2,bdf2-newton2), each on "
@@ -94,9 +93,7 @@ public final class BenchCommand implements Callable<Integer> {
         for (int t : threads) {
             OptionChecks.threads(spec, "--threads", t, false);
         }
-        if (out != null) {
-            OptionChecks.outFolder(spec, out);
-        }
+        Path folder = out.folder(spec);
         for (int n : sizes) {
             if (n < 2) {
                 throw new IllegalArgumentException("--size " + n + ": a lattice needs at least 2 nodes per side");
@@ -125,11 +122,7 @@ public final class BenchCommand implements Callable<Integer> {
                     repeats, k, m -> System.out.println(Json.line(m)));
             return 0;
         }
-        if (out == null) {
-            measure(builtin, threadCounts, ord, step, null);
-            return 0;
-        }
-        return RunFolder.run(out, "bench", List.of("bench.jsonl", "scaling.png"), run -> {
+        return RunFolder.run(folder, "bench", List.of("bench.jsonl", "scaling.png"), out.overwrite(), run -> {
             List<Map<String, Object>> results = measure(builtin, threadCounts, ord, step, run.file("bench.jsonl"));
             if (sizes.size() >= 2 && !"diaphragm".equals(scene)) {
                 ScalingChart.write(results, run.file("scaling.png"));

@@ -20,10 +20,12 @@ import java.util.stream.Stream;
  * One run's output folder ({@code --out}). Every command writes through one, so that
  * the folder holds this run's outputs only and says how the run ended:
  * <ol>
- * <li>{@link #open} removes the previous run's {@code summary.json} first, then every
+ * <li>{@link #open} refuses a folder that holds another command's results or files no tensim run wrote
+ * ({@link FolderClaim}), unless asked to overwrite; nothing is removed then.</li>
+ * <li>In a folder it may use, {@link #open} removes the previous run's {@code summary.json} first, then every
  * file and folder the previous run listed in its manifest ({@value #MANIFEST}, one
- * relative path a line, written as files are created, so a killed run's list is
- * there too), the names the command declares as its own (for folders written before
+ * relative path a line after a first line naming the command, written as files are
+ * created, so a killed run's list is there too), the names the command declares as its own (for folders written before
  * manifests existed), and left-over temporary files. Nothing else in the folder is
  * touched.</li>
  * <li>{@link #file} and {@link #csv} name each output and add it to the manifest before
@@ -70,7 +72,16 @@ public final class RunFolder {
      * @param ownNames names (relative to dir) this command writes, removed before the run
      */
     public static int run(Path dir, String command, List<String> ownNames, Body body) throws Exception {
-        RunFolder run = open(dir, command, ownNames);
+        return run(dir, command, ownNames, false, body);
+    }
+
+    /**
+     * As {@link #run(Path, String, List, Body)}; with {@code overwrite} a folder holding another command's results
+     * or files no tensim run wrote is used all the same ({@code --overwrite}).
+     */
+    public static int run(Path dir, String command, List<String> ownNames, boolean overwrite, Body body)
+            throws Exception {
+        RunFolder run = open(dir, command, ownNames, overwrite);
         try {
             body.run(run);
         } catch (Exception | Error e) {
@@ -87,11 +98,23 @@ public final class RunFolder {
         return run.status.exitCode();
     }
 
-    /** Checks and prepares the folder (see the class comment); the run is then the active one. */
+    /**
+     * Checks and prepares the folder (see the class comment); the run is then the active one.
+     *
+     * @throws IllegalArgumentException when the folder holds another command's results or files no tensim run
+     *                                  wrote ({@link FolderClaim#check}); nothing is changed then
+     */
     public static RunFolder open(Path dir, String command, List<String> ownNames) throws IOException {
+        return open(dir, command, ownNames, false);
+    }
+
+    /** As {@link #open(Path, String, List)}; with {@code overwrite} any folder is used ({@code --overwrite}). */
+    public static RunFolder open(Path dir, String command, List<String> ownNames, boolean overwrite)
+            throws IOException {
         if (dir == null || dir.toString().isBlank()) {
             throw new IllegalArgumentException("--out must name a folder, got an empty path");
         }
+        FolderClaim.check(dir, command, ownNames, overwrite);
         OutputFiles.createFolder(dir);
         if (!Files.isWritable(dir)) {
             throw new IOException("cannot write into " + dir + ": permission denied");
@@ -117,7 +140,7 @@ public final class RunFolder {
         }
         old.addAll(ownNames);
         for (String name : old) {
-            if (!name.isBlank()) {
+            if (!name.isBlank() && !name.startsWith(FolderClaim.HEADER)) {
                 remove(name);
             }
         }
@@ -130,6 +153,9 @@ public final class RunFolder {
             }
         }
         remove(MANIFEST);
+        // Written at once, so that even a run killed before its first output is known as this command's.
+        Files.writeString(dir.resolve(MANIFEST), FolderClaim.HEADER + command + "\n", StandardCharsets.UTF_8,
+                java.nio.file.StandardOpenOption.CREATE_NEW, LinkOption.NOFOLLOW_LINKS);
     }
 
     /** Deletes dir/name (a folder with what is in it); links are removed, never followed. */

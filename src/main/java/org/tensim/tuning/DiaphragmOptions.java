@@ -34,8 +34,7 @@ public final class DiaphragmOptions {
 
     @Option(names = {"--rings", "--resolution"}, paramLabel = "N",
             description = "Rings per face of the generated double dome: 43 is the paper's 11,354 nodes, 20 about"
-                    + " 2,500 (default: 43 in `diaphragm`; in the GUI and specs the resolution study's pick in"
-                    + " meshes/resolution-pick.json).")
+                    + " 2,500; --pick FILE takes a resolution study's pick instead (default: 43).")
     Integer rings;
 
     @Option(names = "--boxes", paramLabel = "FILE",
@@ -383,6 +382,11 @@ public final class DiaphragmOptions {
             throw new IllegalArgumentException("field '" + field + "' must be a string or a number, got " + v);
         }
         return isPath ? base.resolve(v.asText()).normalize().toString() : v.asText();
+    }
+
+    /** Whether {@code --rings} was given (or set by {@link PickOption#apply}). */
+    public boolean ringsGiven() {
+        return rings != null;
     }
 
     /** Whether the bones are surfaces ({@code --thorax} or {@code --cage surfaces}): contact is on the table. */

@@ -2,7 +2,7 @@ package org.tensim.tuning;
 
 import java.nio.file.Files;
 import java.util.List;
-import org.tensim.experiment.diaphragm.ResolutionPick;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.CubeViewScene;
 import org.tensim.scene.tunable.DiaphragmViewScene;
@@ -31,8 +31,9 @@ public final class TunableScenes {
     }
 
     /**
-     * The factory of a scene: the cube, or the diaphragm these options describe (the generated double dome at the
-     * resolution the resolution study picked, {@link ResolutionPick}, when no mesh is given).
+     * The factory of a scene: the cube, or the diaphragm these options describe (the generated double dome at
+     * {@code --rings}, or {@link #defaultRings()}, when no mesh is given; {@link PickOption} sets the rings from a
+     * resolution study's pick).
      *
      * @throws IllegalArgumentException for an unknown name, a diaphragm option given to the cube, or a bad option
      */
@@ -61,8 +62,11 @@ public final class TunableScenes {
         }
     }
 
-    /** Rings of the generated double dome in the GUI and specs: the resolution study's pick (43 without one). */
+    /**
+     * Rings of the generated double dome in the GUI and specs when neither {@code --rings} nor {@code --pick} is
+     * given: the paper's 43 (no pick is read unless named).
+     */
     public static int defaultRings() {
-        return ResolutionPick.read().rings();
+        return DiaphragmSpec.PAPER_RINGS;
     }
 }

@@ -93,9 +93,12 @@ class ProcessLevelTest {
     /** Starts the command, sends a random signal after a random delay, checks the folder; returns the signal. */
     static String killAndCheck(Path dir, SplittableRandom r, String... args) throws Exception {
         Path o = Files.createTempDirectory(dir, "kill");
-        // An old run's files first: none of them may survive.
-        Files.writeString(o.resolve("summary.json"), "{\"status\":\"ok\",\"steps\":4000}");
-        Files.writeString(o.resolve(".tensim-files"), "old.csv\n");
+        // An old run of the same command first (the folder is its own): none of its files may survive.
+        String command = String.join(" ", java.util.Arrays.stream(args).takeWhile(a -> !a.startsWith("-"))
+                .toList());
+        Files.writeString(o.resolve("summary.json"), "{\"status\":\"ok\",\"command\":\"" + command
+                + "\",\"steps\":4000}");
+        Files.writeString(o.resolve(".tensim-files"), "#command " + command + "\nold.csv\n");
         Files.writeString(o.resolve("old.csv"), "t_s\n1\n");
         String[] full = java.util.Arrays.copyOf(args, args.length + 2);
         full[args.length] = "--out";
@@ -110,20 +113,21 @@ class ProcessLevelTest {
         int code = p.waitFor(120);
         String what = String.join(" ", args) + ", " + (ended ? "ended by itself" : "SIG" + signal) + " after "
                 + delayMs + " ms, exit " + code + ": ";
-        if (!ended && Files.exists(o.resolve("old.csv")) && !Json.readMap(o.resolve("summary.json"))
-                .containsKey("command")) {
+        if (!ended && Files.exists(o.resolve("old.csv")) && Files.exists(o.resolve("summary.json"))
+                && Json.readMap(o.resolve("summary.json")).get("steps") instanceof Number n && n.intValue() == 4000) {
             // Stopped before the program reached its folder (during the JVM's start): the old run's
             // files are all there, untouched and consistent, and the exit code says it was a signal.
             assertTrue(code == 130 || code == 143 || code == 137, what + "a signal's exit code");
-            assertEquals(List.of("old.csv"), Files.readAllLines(o.resolve(".tensim-files")), what);
+            assertEquals(List.of("#command " + command, "old.csv"), Files.readAllLines(o.resolve(".tensim-files")),
+                    what);
             return "SIG" + signal + " before start";
         }
         List<String> problems = FolderCheck.problems(o, code, ended ? null : signal);
         assertEquals(List.of(), problems, what + p.err());
         assertFalse(Files.exists(o.resolve("old.csv")), what + "the old run's file is gone");
         if (Files.exists(o.resolve("summary.json"))) {
-            assertFalse(Long.valueOf(4000).equals(Json.readMap(o.resolve("summary.json")).get("steps")),
-                    what + "not the old summary");
+            assertFalse(Json.readMap(o.resolve("summary.json")).get("steps") instanceof Number n
+                    && n.intValue() == 4000, what + "not the old summary");
         }
         if (!ended && !signal.equals("KILL") && code == 130) {
             assertEquals("interrupted", Json.readMap(o.resolve("summary.json")).get("status"), what);

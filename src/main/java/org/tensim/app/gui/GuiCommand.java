@@ -41,6 +41,9 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     DiaphragmOptions options = new DiaphragmOptions();
 
+    @picocli.CommandLine.Mixin
+    org.tensim.tuning.PickOption pick = new org.tensim.tuning.PickOption();
+
     @Option(names = "--preset", paramLabel = "FILE",
             description = "Load this JSON preset at start (after the last-used parameters).")
     Path preset;
@@ -68,7 +71,8 @@ public final class GuiCommand implements Callable<Integer> {
                     + " done"
                     + " by then), close the window and print a JSON"
                     + " line last: realtime_factor, fps, steps_per_s, nodes, integrator, dt_s, threads, error_estimate,"
-                    + " edt_longest_delay_ms, load averages... (with --screenshot: the picture is taken at the end)."})
+                    + " edt_longest_delay_ms, load averages, window_title... (with --screenshot: the picture is taken"
+                    + " at the end)."})
     Double runFor;
 
     @Option(names = "--unpaced", description = "Start with \"Real time\" unticked: simulate as fast as possible"
@@ -115,7 +119,19 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--fps-cap must be 0 (no cap) to 1000 frames per second, got " + fpsCap);
         }
         // Bad names and files fail here, before any window.
-        java.util.List<String> sceneArgs = sceneFromPreset();
+        if (pick.file() != null && !"diaphragm".equals(scene)) {
+            throw new IllegalArgumentException("--pick " + pick.file() + " is a resolution of the diaphragm: leave it"
+                    + " out with --scene " + scene);
+        }
+        org.tensim.experiment.diaphragm.ResolutionPick picked = pick.apply(options);
+        // As if --rings had been given: a preset saved from this window reopens at the same rings, without the file.
+        java.util.List<String> sceneArgs = sceneFromPreset(picked == null ? java.util.List.of()
+                : java.util.List.of("--rings", String.valueOf(picked.rings())));
+        if (picked != null && options.mesh != null) {
+            throw new IllegalArgumentException("--pick " + pick.file() + " is a resolution of the generated double"
+                    + " dome, and the preset " + preset + " opens the mesh " + options.mesh
+                    + ": leave out one of them");
+        }
         SceneFactory factory = TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
@@ -127,9 +143,18 @@ public final class GuiCommand implements Callable<Integer> {
                 TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
         w.tuning().setSceneOptions(sceneArgs);
+        if (picked != null) {
+            String note = "pick " + pick.file() + ", " + picked.rings() + " rings";
+            SwingUtilities.invokeAndWait(() -> w.setTitleNote(note));
+        }
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
-            java.util.Map<String, Object> summary = TimedRun.run(w, runFor, !unpaced, screenshot, started);
+            java.util.Map<String, Object> summary = new java.util.LinkedHashMap<>(TimedRun.run(w, runFor, !unpaced,
+                    screenshot, started));
+            if (pick.file() != null) {
+                summary.put("resolution_pick_file", pick.file().toString());
+            }
+            summary.put("window_title", w.windowTitle());
             w.awaitClosed();
             System.out.println(org.tensim.io.Json.line(summary));
             return summary.get("diverged") == null ? 0 : 1;
@@ -243,12 +268,16 @@ public final class GuiCommand implements Callable<Integer> {
      * The diaphragm's options in command-line form (null for the cube): those given, or the scene a
      * {@code --preset} holds with the options given beside it changing it ({@link PresetScene#merge}), which then
      * replaces {@link #options}; a muscle load given applies over the preset's.
+     *
+     * @param implied options implied by others (the rings of {@code --pick}), counted as given
      */
-    private java.util.List<String> sceneFromPreset() {
+    private java.util.List<String> sceneFromPreset(java.util.List<String> implied) {
         if (!"diaphragm".equals(scene)) {
             return null;
         }
-        java.util.List<String> given = PresetScene.given(spec.commandLine().getParseResult());
+        java.util.List<String> given = new java.util.ArrayList<>(
+                PresetScene.given(spec.commandLine().getParseResult()));
+        given.addAll(implied);
         if (preset == null) {
             return given;
         }

@@ -59,6 +59,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
     private volatile ViewScene scene;
     private volatile boolean shutDown;
     private boolean layersSet;
+    private String sceneTitle;
+    private String titleNote;
 
     /**
      * Builds and shows the window and starts the simulation with {@code first}.
@@ -78,7 +80,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         JPopupMenu.setDefaultLightWeightPopupEnabled(false);
         ToolTipManager.sharedInstance().setLightWeightPopupEnabled(false);
 
-        frame = new JFrame("tensim: " + first.title());
+        sceneTitle = first.title();
+        frame = new JFrame(windowTitle());
         frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
@@ -189,8 +192,23 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             live.show(frames.live(), frames.readouts());
             saveLabels.setEnabled(s instanceof DiaphragmViewScene);
             brush.setVisible(s instanceof DiaphragmViewScene && factory instanceof DiaphragmViewFactory);
-            frame.setTitle("tensim: " + s.title());
+            sceneTitle = s.title();
+            frame.setTitle(windowTitle());
         });
+    }
+
+    /**
+     * A note the title keeps after the scene's own, over every scene change: what the scene was opened from, such
+     * as the resolution pick. Swing thread only.
+     */
+    void setTitleNote(String note) {
+        titleNote = note;
+        frame.setTitle(windowTitle());
+    }
+
+    /** The window's title: the scene's, then the note (if any). */
+    String windowTitle() {
+        return "tensim: " + sceneTitle + (titleNote == null ? "" : " | " + titleNote);
     }
 
     @Override

@@ -6,14 +6,14 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.tensim.io.Json;
-import org.tensim.io.ProjectFolder;
 
 /**
  * The resolution the resolution study picked for the interactive uses (the GUI and the
  * real-time mode): the coarsest double dome whose end-inspiration field is within the
  * tolerance of the finest model, and every finer one too. Written by
- * {@code ./tensim diaphragm resolution-study} to {@link #FILE} (committed, so that a fresh
- * checkout has it) and read by the GUI's default resolution; docs/diaphragm.md describes it.
+ * {@code ./tensim diaphragm resolution-study} to {@code resolution-pick.json} in its {@code --out}
+ * (or to {@code --pick-out FILE}); read only where a command is given the file
+ * ({@code --pick FILE} of {@code diaphragm} and {@code gui}). docs/diaphragm.md describes it.
  *
  * @param rings     rings per face of the generated double dome picked
  * @param error     its relative RMS error against the reference (0 when none passed and the reference
@@ -22,10 +22,8 @@ import org.tensim.io.ProjectFolder;
  * @param reason    one sentence: why this one
  */
 public record ResolutionPick(int rings, double error, double tolerance, String reason) {
-    /** Where the study writes the pick and the GUI reads it. */
-    public static final Path FILE = ProjectFolder.resolve("meshes", "resolution-pick.json");
-    /** The resolution used when no pick has been written: the paper's (43 rings). */
-    public static final int FALLBACK_RINGS = 43;
+    /** The pick's name in the study's output folder. */
+    public static final String NAME = "resolution-pick.json";
 
     public ResolutionPick {
         if (rings < 2) {
@@ -33,10 +31,15 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         }
     }
 
-    /** The pick in {@code file}, or the paper's resolution with a reason saying none was found. */
+    /**
+     * The pick in {@code file}.
+     *
+     * @throws IllegalStateException naming the file when it is missing or not a pick
+     */
     public static ResolutionPick read(Path file) {
         if (!Files.isRegularFile(file)) {
-            return new ResolutionPick(FALLBACK_RINGS, 0, 0, file + " not found: the paper's resolution");
+            throw new IllegalStateException("--pick " + file + ": no such file (expected the " + NAME + " that"
+                    + " `tensim diaphragm resolution-study` writes to its --out)");
         }
         try {
             Map<String, Object> m = Json.readMap(file);
@@ -49,11 +52,6 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         } catch (IOException | IllegalArgumentException e) {
             throw new IllegalStateException(file + ": not a resolution pick (" + e.getMessage() + ")", e);
         }
-    }
-
-    /** The committed pick ({@link #FILE}). */
-    public static ResolutionPick read() {
-        return read(FILE);
     }
 
     void write(Path file, Map<String, Object> details) throws IOException {

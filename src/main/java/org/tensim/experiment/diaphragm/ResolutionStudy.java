@@ -126,7 +126,9 @@ public final class ResolutionStudy {
 
     /**
      * The default study: the double dome family, then BodyParts3D's when present. Writes
-     * resolution.csv/json/png to {@code out} and the pick to {@code pickFile} (null: not written).
+     * resolution.csv/json/png to {@code out} and the pick to {@code pickFile} (the caller's choice:
+     * {@code out}/{@value ResolutionPick#NAME} unless the user names another file); the summary names it
+     * ({@code "resolution_pick_file"}).
      */
     public static Map<String, Object> run(Setup s, Path out, Path pickFile) throws IOException, MeshFormatException {
         Files.createDirectories(out);
@@ -165,11 +167,9 @@ public final class ResolutionStudy {
         details.put("wall_s_per_simulated_s", rows.get(i).get("wall_s_per_simulated_s"));
         details.put("measured_utc", Instant.now().toString());
         details.put("command", "./tensim diaphragm resolution-study");
-        pick.write(out.resolve("resolution-pick.json"), details);
-        if (pickFile != null) {
-            pick.write(pickFile, details);
-        }
+        pick.write(pickFile, details);
         summary.put("picked_rings", rings);
+        summary.put("resolution_pick_file", pickFile.toString());
         summary.put("pick_reason", reason);
         if (s.log() != null) {
             s.log().println("picked " + rings + " rings: " + reason);

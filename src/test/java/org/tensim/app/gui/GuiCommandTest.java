@@ -75,12 +75,12 @@ class GuiCommandTest {
     }
 
     @Test
-    void theDiaphragmOpensAtThePickedResolutionWithTheLargeStepSolver() {
+    void theDiaphragmOpensAtThePapersResolutionWithTheLargeStepSolver() {
         GuiCommand c = new GuiCommand();
         new CommandLine(c).parseArgs();
-        assertEquals(org.tensim.experiment.diaphragm.ResolutionPick.read().rings(),
+        assertEquals(org.tensim.scene.diaphragm.DiaphragmSpec.PAPER_RINGS,
                 c.options.spec(null, TunableScenes.defaultRings()).mesh().rings(),
-                "the resolution study's pick (the paper's 43 rings when none is committed)");
+                "no pick is read unless --pick names one: the paper's 43 rings");
         assertEquals("diaphragm", c.scene);
         assertTrue(TunableScenes.opensInRealTime("diaphragm") && !TunableScenes.opensInRealTime("cube"));
     }
@@ -124,6 +124,36 @@ class GuiCommandTest {
         assertEquals(((Number) m.get("frames")).doubleValue() / wall, fps, 1e-3 * fps + 0.1, m.toString());
         assertEquals(null, m.get("diverged"));
         assertTrue(m.containsKey("error_estimate") && m.containsKey("edt_longest_delay_ms"), m.toString());
+    }
+
+    /** A pick given with {@code --pick}: its rings, and its file in the title and the summary. */
+    @Test
+    @Tag("gui")
+    void aPickNamedOpensAtItsRingsAndTheWindowAndSummaryNameIt() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        Path pick = dir.resolve("picked.json");
+        org.tensim.io.Json.write(pick, java.util.Map.of("format", "tensim-resolution-pick", "rings", 6,
+                "relative_rms_error", 0.04, "tolerance", 0.1, "reason", "the coarsest within 10 %"));
+        java.util.Map<String, Object> m = scriptedSummary("gui", "--pick", pick.toString(), "--config-dir",
+                dir.toString(), "--fresh", "--run-for", "1");
+        assertEquals(pick.toString(), m.get("resolution_pick_file"));
+        assertTrue(String.valueOf(m.get("window_title")).contains(pick.toString()), m.toString());
+        java.util.Map<String, Object> six = scriptedSummary("gui", "--rings", "6", "--config-dir", dir.toString(),
+                "--fresh", "--run-for", "1");
+        assertEquals(six.get("nodes"), m.get("nodes"), "the pick's 6 rings, as --rings 6");
+        assertEquals(null, six.get("resolution_pick_file"));
+    }
+
+    @Test
+    void aPickWithRingsOrTheCubeOrMissingIsRefused() {
+        Path pick = dir.resolve("absent.json");
+        StringWriter err = new StringWriter();
+        assertEquals(USAGE, run(err, "gui", "--scene", "cube", "--pick", pick.toString()));
+        assertTrue(err.toString().contains("--pick") && err.toString().contains("cube"), err.toString());
+        StringWriter err2 = new StringWriter();
+        assertEquals(1, run(err2, "gui", "--pick", pick.toString()));
+        assertTrue(err2.toString().contains("absent.json") && err2.toString().contains("no such file"),
+                err2.toString());
     }
 
     /** {@code gui --model paper} opens the paper's model (its tissue springs) with the paper's RK2; the default not. */

@@ -52,9 +52,12 @@ class ResolutionAnalysisTest {
     }
 
     @Test
-    void thePickFileRoundTripsAndAMissingOneFallsBackToThePapersResolution(@TempDir Path dir) throws Exception {
+    void thePickFileRoundTripsAndAMissingOneIsRefusedByName(@TempDir Path dir) throws Exception {
         Path f = dir.resolve("pick.json");
-        assertEquals(ResolutionPick.FALLBACK_RINGS, ResolutionPick.read(f).rings());
+        IllegalStateException missing = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class,
+                () -> ResolutionPick.read(f), "a pick named but absent is an error, not a silent default");
+        assertTrue(missing.getMessage().contains(f.toString()) && missing.getMessage().contains("no such file"),
+                missing.getMessage());
         new ResolutionPick(20, 0.043, 0.05, "because").write(f, Map.of("nodes", 3766));
         ResolutionPick p = ResolutionPick.read(f);
         assertEquals(20, p.rings());
