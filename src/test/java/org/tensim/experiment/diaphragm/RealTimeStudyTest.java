@@ -42,24 +42,9 @@ class RealTimeStudyTest {
         for (Map<String, Object> r : runs) {
             assertTrue((double) r.get("realtime_factor") > 0, r.toString());
             String config = (String) r.get("config");
-            if (config.contains("sternum mass") && (boolean) r.get("diverged")) {
-                // Known limitation (docs/diaphragm.md, "Limitations"): with the membrane triangles the
-                // scaled sternum lets the policy's step grow 2.8 times at 8 rings (3 at 6), and RK2 diverges there
-                // (0.08 s; 0.31 s at 0.7 of the step, stable at 0.5) although the Gershgorin bound at rest
-                // holds (5,289 rad/s against 3,157 by power iteration); the springs and paper models diverge
-                // at their own steps too, later (1.33 s and 0.12 s). The run must still be reported, and
-                // reported as failed: infinite errors, outside the tolerance, chosen by neither of the picks.
-                System.out.println("known divergence: " + config + " at " + r.get("rings") + " rings");
-                assertEquals(Double.POSITIVE_INFINITY, (double) r.get("relative_rms_error"), r.toString());
-                assertEquals(Double.POSITIVE_INFINITY, (double) r.get("error_vs_rk2_same_resolution"), r.toString());
-                assertEquals(Double.POSITIVE_INFINITY, (double) r.get("worst_error_vs_rk2_same_resolution"),
-                        r.toString());
-                assertEquals(false, r.get("within_tolerance"), r.toString());
-                assertTrue(r != s.get("most_accurate_in_real_time")
-                        && r != s.get("fastest_within_tolerance_at_8_rings"), r.toString());
-                assertLargerStepThanUnscaled(runs, r);
-                continue;
-            }
+            // Every configuration runs to the end, the sternum-scaled RK2 included. With the membrane
+            // triangles its step was 2.8-3 times the unscaled one and RK2 diverged there (0.08 s at 8 rings);
+            // with the material springs it is 1.47 times, and it ran its 0.4 s at 6 and 8 rings (2026-12-01).
             assertTrue(!(boolean) r.get("diverged"), r.toString());
             double own = (double) r.get("error_vs_rk2_same_resolution");
             double worst = (double) r.get("worst_error_vs_rk2_same_resolution");
@@ -72,19 +57,13 @@ class RealTimeStudyTest {
                 assertTrue((double) r.get("cg_products_per_step") > 0, r.toString());
             }
             if (config.contains("sternum mass")) {
-                assertLargerStepThanUnscaled(runs, r);
+                // It lifts the sternum's limit on the step: a larger stable step than the unscaled RK2's
+                // (1.47 times at 8 rings since the material springs and the attachment band, 2026-11-23: the
+                // next modes are not far above the sternum's).
+                Map<String, Object> plain = runs.stream().filter(x -> x.get("rings").equals(r.get("rings"))
+                        && ((String) x.get("config")).startsWith("rk2 at the stable step / 1")).findFirst().get();
+                assertTrue((double) r.get("dt_s") > 1.3 * (double) plain.get("dt_s"), r + " vs " + plain);
             }
         }
-    }
-
-    /**
-     * The sternum's mass scaling lifts the sternum's limit on the step: a larger stable step than the unscaled
-     * RK2's (1.47 times at 8 rings since the material springs and the attachment band, 2026-11-23: the next
-     * modes are not far above the sternum's).
-     */
-    private static void assertLargerStepThanUnscaled(List<Map<String, Object>> runs, Map<String, Object> r) {
-        Map<String, Object> plain = runs.stream().filter(x -> x.get("rings").equals(r.get("rings"))
-                && ((String) x.get("config")).startsWith("rk2 at the stable step / 1")).findFirst().get();
-        assertTrue((double) r.get("dt_s") > 1.3 * (double) plain.get("dt_s"), r + " vs " + plain);
     }
 }
