@@ -21,7 +21,7 @@ import picocli.CommandLine.Command;
             "The launcher also has: ./tensim test (the whole test suite)."},
         subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
             DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class, SweepCommand.class,
-            CalibrateCommand.class})
+            CalibrateCommand.class, CheckCommand.class, RunCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

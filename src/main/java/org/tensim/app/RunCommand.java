@@ -1,0 +1,73 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.tensim.cli.IntegratorOption;
+import org.tensim.cli.OptionChecks;
+import org.tensim.cli.OutFolderOption;
+import org.tensim.cli.TimeStepOption;
+import org.tensim.experiment.SceneRunner;
+import org.tensim.io.Json;
+import org.tensim.io.RunFolder;
+import org.tensim.io.scene.RunSettings;
+import org.tensim.io.scene.Scene;
+import org.tensim.io.scene.SceneLoader;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code tensim run FILE}: runs a scene file headless and writes its probes' CSV and summary.json. */
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = {"Runs a scene file (docs/scenes.md) headless: writes the probes' CSV (the run block's",
+            "csv, units in the column names) and summary.json (the file's digest and every --set) to",
+            "--out, and prints the summary as the last line (JSON). The integrator, step and duration",
+            "come from the file's run block unless given here."})
+public final class RunCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "FILE", description = "the scene file (.yaml, .yml or .json)")
+    Path file;
+
+    @picocli.CommandLine.Mixin
+    OutFolderOption out = new OutFolderOption(Path.of("out", "run", OutFolderOption.SPEC_NAME));
+
+    @Option(names = "--set", paramLabel = "KEY.PATH=VALUE",
+            description = "replaces one value of the file, e.g. --set bodies.mss.stiffness=\"200 N/m\" (repeatable)")
+    List<String> sets = new ArrayList<>();
+
+    @picocli.CommandLine.Mixin
+    IntegratorOption integrator = new IntegratorOption();
+
+    @picocli.CommandLine.Mixin
+    TimeStepOption dt = TimeStepOption.chosenByScene("the file's run.dt");
+
+    @Option(names = "--duration", paramLabel = "S", description = "simulated time, s (default: the file's run.duration)")
+    Double duration;
+
+    @Override
+    public Integer call() throws Exception {
+        Path folder = out.folder(spec, file);
+        Scene scene = SceneLoader.load(file, sets);
+        var parsed = spec.commandLine().getParseResult();
+        String name = null;
+        if (parsed.hasMatchedOption("--integrator")) {
+            integrator.create(spec);
+            name = integrator.name();
+        }
+        double step = dt.seconds(spec);
+        if (duration != null) {
+            CommandChecks.positive(spec, "--duration", duration, "s");
+        }
+        RunSettings run = scene.run().with(name, step > 0 ? step : null, duration);
+        OptionChecks.stepFits(spec, "--dt", run.dtS(), "--duration", run.durationS());
+        return RunFolder.run(folder, "run", List.of(run.csv()), f -> {
+            Map<String, Object> s = SceneRunner.run(scene, run, f);
+            System.out.println("wrote " + f.dir().resolve(run.csv()) + ", " + f.dir().resolve(RunFolder.SUMMARY));
+            System.out.println(Json.line(s));
+        });
+    }
+}
