@@ -21,9 +21,9 @@ public final class MapReader {
         this.map = node;
         for (String key : node.entries().keySet()) {
             if (!accepted.contains(key)) {
-                SceneNode v = node.get(key);
-                throw SceneException.at(v, "unknown key '" + key + "'" + DidYouMean.suggest(key, accepted)
-                        + " (accepted here: " + String.join(", ", accepted) + ")");
+                throw new SceneException(node.keyWhere(key) + ": " + SceneNode.child(node.path(), key)
+                        + ": unknown key '" + key + "'" + DidYouMean.suggest(key, accepted) + " (accepted here: "
+                        + String.join(", ", accepted) + ")");
             }
         }
     }
@@ -41,7 +41,8 @@ public final class MapReader {
     /** The value of a key that must be there. */
     public SceneNode required(String key) {
         if (!has(key)) {
-            throw SceneException.at(map, "missing required key '" + key + "'");
+            throw new SceneException(map.where() + ": " + SceneNode.child(map.path(), key) + ": missing: the key is"
+                    + " required " + (map.path().isEmpty() ? "at the top level" : "in " + map.path()));
         }
         return map.get(key);
     }
@@ -70,8 +71,11 @@ public final class MapReader {
         return has(key) ? units.si(map.get(key), kind) : fallback;
     }
 
-    /** A quantity that must be > 0, SI, or {@code fallback}. */
+    /** A quantity that must be > 0, SI, or {@code fallback} (NaN: the key is required). */
     public double positive(String key, QuantityKind kind, SceneUnits units, double fallback) {
+        if (Double.isNaN(fallback)) {
+            required(key);
+        }
         double v = quantity(key, kind, units, fallback);
         if (!(v > 0)) {
             throw SceneException.at(has(key) ? map.get(key) : map, key + " must be > 0, got "
@@ -80,8 +84,11 @@ public final class MapReader {
         return v;
     }
 
-    /** A quantity that must be >= 0, SI, or {@code fallback}. */
+    /** A quantity that must be >= 0, SI, or {@code fallback} (NaN: the key is required). */
     public double nonNegative(String key, QuantityKind kind, SceneUnits units, double fallback) {
+        if (Double.isNaN(fallback)) {
+            required(key);
+        }
         double v = quantity(key, kind, units, fallback);
         if (!(v >= 0)) {
             throw SceneException.at(map.get(key), key + " must be >= 0, got " + map.get(key).describe());

@@ -26,6 +26,7 @@ public final class SceneNode {
     private final String path;
     private final Map<String, SceneNode> map;
     private final List<SceneNode> list;
+    private final Map<String, String> keyWhere;
 
     private SceneNode(Kind kind, Token token, String text, String where, String path) {
         this.kind = kind;
@@ -35,6 +36,7 @@ public final class SceneNode {
         this.path = path;
         this.map = kind == Kind.MAP ? new LinkedHashMap<>() : null;
         this.list = kind == Kind.LIST ? new ArrayList<>() : null;
+        this.keyWhere = kind == Kind.MAP ? new LinkedHashMap<>() : null;
     }
 
     static SceneNode map(String where, String path) {
@@ -105,7 +107,17 @@ public final class SceneNode {
     }
 
     void put(String key, SceneNode value) {
+        put(key, value, value.where());
+    }
+
+    void put(String key, SceneNode value, String keyPlace) {
         map.put(key, value);
+        keyWhere.put(key, keyPlace);
+    }
+
+    /** Where a map's key is written (its value's place for keys given by --set); null if there is no such key. */
+    public String keyWhere(String key) {
+        return keyWhere == null ? null : keyWhere.get(key);
     }
 
     void set(int index, SceneNode value) {

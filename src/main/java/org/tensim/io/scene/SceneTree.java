@@ -18,6 +18,9 @@ import java.util.Locale;
  * (Jackson's own tree drops it). Syntax errors are reported at the place Jackson gives; duplicate keys are refused.
  */
 public final class SceneTree {
+    /** The key path being read, for a syntax error's message. */
+    private String reading = "";
+
     private SceneTree() {
     }
 
@@ -34,13 +37,14 @@ public final class SceneTree {
         }
         boolean json = name.toLowerCase(Locale.ROOT).endsWith(".json");
         JsonFactory factory = json ? new JsonFactory() : new YAMLFactory();
+        SceneTree tree = new SceneTree();
         try (JsonParser p = factory.createParser(bytes)) {
             JsonToken t = p.nextToken();
             if (t == null) {
                 throw new SceneException(name + ":1:1: (top level): the file is empty; expected a map with"
                         + " 'version: 1' and 'bodies:'");
             }
-            SceneNode root = value(p, name, "");
+            SceneNode root = tree.value(p, name, "");
             if (p.nextToken() != null) {
                 throw new SceneException(where(name, p.currentTokenLocation()) + ": (top level): text after the"
                         + " end of the top-level value");
@@ -53,13 +57,15 @@ public final class SceneTree {
         } catch (JsonProcessingException e) {
             JsonLocation loc = e.getLocation();
             String at = loc == null ? name : where(name, loc);
-            throw new SceneException(at + ": syntax error: " + firstLine(e.getOriginalMessage()));
+            throw new SceneException(at + ": " + (tree.reading.isEmpty() ? "(top level)" : tree.reading)
+                    + ": syntax error: " + firstLine(e.getOriginalMessage()));
         } catch (IOException e) {
             throw new SceneException(file + ": cannot read the scene file (" + e.getMessage() + ")");
         }
     }
 
-    private static SceneNode value(JsonParser p, String file, String path) throws IOException {
+    private SceneNode value(JsonParser p, String file, String path) throws IOException {
+        reading = path;
         JsonToken t = p.currentToken();
         String at = where(file, p.currentTokenLocation());
         switch (t) {
@@ -71,10 +77,12 @@ public final class SceneTree {
                     String childPath = SceneNode.child(path, key);
                     if (m.get(key) != null) {
                         throw new SceneException(keyAt + ": " + childPath + ": the key is given twice (first at "
-                                + m.get(key).where() + ")");
+                                + m.keyWhere(key) + ")");
                     }
+                    reading = childPath;
                     p.nextToken();
-                    m.put(key, value(p, file, childPath));
+                    m.put(key, value(p, file, childPath), keyAt);
+                    reading = path;
                 }
                 return m;
             }
@@ -83,6 +91,7 @@ public final class SceneTree {
                 int i = 0;
                 while (p.nextToken() != JsonToken.END_ARRAY) {
                     l.add(value(p, file, path + "[" + i++ + "]"));
+                    reading = path;
                 }
                 return l;
             }
@@ -103,15 +112,23 @@ public final class SceneTree {
         return file + ":" + loc.getLineNr() + ":" + loc.getColumnNr();
     }
 
+    /**
+     * The parser's message on one line: snakeyaml's "while parsing ... / expected ..., but got ..." lines, without
+     * its quoted source lines, carets and "in 'reader'" places (the caller gives the place).
+     */
     private static String firstLine(String message) {
         if (message == null) {
             return "unreadable text";
         }
-        String m = message.strip();
-        int nl = m.indexOf('\n');
-        String first = nl < 0 ? m : m.substring(0, nl).strip();
-        // Jackson adds the source description and a location of its own; the caller gives the place.
-        int src = first.indexOf(" at [Source");
-        return src < 0 ? first : first.substring(0, src);
+        StringBuilder b = new StringBuilder();
+        for (String line : message.strip().split("\n")) {
+            String l = line.strip();
+            if (l.isEmpty() || l.startsWith("in 'reader'") || l.startsWith("^") || line.startsWith("    ")) {
+                continue;
+            }
+            int src = l.indexOf(" at [Source");
+            b.append(b.length() == 0 ? "" : ": ").append(src < 0 ? l : l.substring(0, src));
+        }
+        return b.length() == 0 ? "unreadable text" : b.toString();
     }
 }
