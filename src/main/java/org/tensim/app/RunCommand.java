@@ -12,9 +12,9 @@ import org.tensim.cli.TimeStepOption;
 import org.tensim.experiment.SceneRunner;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
-import org.tensim.io.scene.RunSettings;
-import org.tensim.io.scene.Scene;
-import org.tensim.io.scene.SceneLoader;
+import org.tensim.scene.file.RunSettings;
+import org.tensim.scene.file.Scene;
+import org.tensim.scene.file.SceneLoader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -45,7 +45,8 @@ public final class RunCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     TimeStepOption dt = TimeStepOption.chosenByScene("the file's run.dt");
 
-    @Option(names = "--duration", paramLabel = "S", description = "simulated time, s (default: the file's run.duration)")
+    @Option(names = "--duration", paramLabel = "S",
+            description = "simulated time, s (default: the file's run.duration)")
     Double duration;
 
     @Override

@@ -27,7 +27,8 @@ public final class OutFolderOption {
 
     /**
      * The folder given, or the default with its last part {@value #SPEC_NAME} replaced by the spec file's name
-     * without {@code .json}, {@code .yaml} or {@code .yml} (out/sweep/NAME for a spec NAME.json); refused as {@link #folder(CommandSpec)}.
+     * without {@code .json}, {@code .yaml} or {@code .yml} (out/sweep/NAME for a spec NAME.json); refused as
+     * {@link #folder(CommandSpec)}.
      */
     public Path folder(CommandSpec spec, Path specFile) {
         var parsed = spec.commandLine() == null ? null : spec.commandLine().getParseResult();

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import org.tensim.model.Node;
 import org.tensim.model.Topology;

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -20,7 +20,8 @@ class SceneRegionsTest {
     @TempDir
     Path dir;
 
-    static final String HEAD = "version: 1\nunits: {length: m}\nbodies:\n  c: {type: cube}\nrun: {dt: 1 ms, duration: 1 ms}\n";
+    static final String HEAD = "version: 1\nunits: {length: m}\nbodies:\n  c: {type: cube}\n"
+            + "run: {dt: 1 ms, duration: 1 ms}\n";
 
     /** The nodes of the cube (side 10 m, with its element) whose initial position passes {@code p}. */
     static BitSet where(Predicate<Vec3> p) {

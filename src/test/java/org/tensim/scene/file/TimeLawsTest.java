@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -14,8 +14,8 @@ class TimeLawsTest {
     Path dir;
 
     TimeLaw law(String laws, String name) {
-        Scene s = SceneFiles.load(dir, "l.yaml", "version: 1\nbodies: {c: {type: cube}}\nrun: {dt: 1 ms, duration: 1 s}\n"
-                + "laws:\n" + laws);
+        Scene s = SceneFiles.load(dir, "l.yaml", "version: 1\nbodies: {c: {type: cube}}\n"
+                + "run: {dt: 1 ms, duration: 1 s}\nlaws:\n" + laws);
         return s.laws().get(name);
     }
 

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import java.io.IOException;
 import java.nio.file.Path;

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import com.fasterxml.jackson.databind.MappingIterator;
 import com.fasterxml.jackson.dataformat.csv.CsvMapper;

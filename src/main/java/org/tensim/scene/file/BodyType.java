@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import java.util.List;
 import org.tensim.model.Topology;

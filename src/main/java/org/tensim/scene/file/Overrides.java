@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -35,7 +35,8 @@ public final class Overrides {
         for (int i = 0; i < steps.size(); i++) {
             Object step = steps.get(i);
             boolean last = i == steps.size() - 1;
-            String childPath = step instanceof Integer k ? walked + "[" + k + "]" : SceneNode.child(walked, (String) step);
+            String childPath = step instanceof Integer k ? walked + "[" + k + "]"
+                    : SceneNode.child(walked, (String) step);
             SceneNode next;
             if (step instanceof Integer k) {
                 if (!at.isList() || k >= at.items().size()) {

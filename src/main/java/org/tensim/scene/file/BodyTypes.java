@@ -1,10 +1,10 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.tensim.io.scene.bodies.CubeBody;
+import org.tensim.scene.file.bodies.CubeBody;
 
 /** The body types scene files may name, by their {@link BodyType#name()}: the built-in ones and any registered. */
 public final class BodyTypes {

@@ -1,4 +1,4 @@
-package org.tensim.io.scene;
+package org.tensim.scene.file;
 
 /**
  * A scene file that cannot be used. The message reads {@code file:line:column: key.path: what is wrong

@@ -1,10 +1,10 @@
-package org.tensim.io.scene.bodies;
+package org.tensim.scene.file.bodies;
 
 import java.util.List;
-import org.tensim.io.scene.BodyContext;
-import org.tensim.io.scene.BodyType;
-import org.tensim.io.scene.MapReader;
-import org.tensim.io.scene.QuantityKind;
+import org.tensim.scene.file.BodyContext;
+import org.tensim.scene.file.BodyType;
+import org.tensim.scene.file.MapReader;
+import org.tensim.scene.file.QuantityKind;
 import org.tensim.model.Topology;
 import org.tensim.scene.CubeParameters;
 import org.tensim.scene.CubeScene;
