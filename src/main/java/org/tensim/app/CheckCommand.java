@@ -17,6 +17,9 @@ import picocli.CommandLine.Parameters;
             "body's node count and each region's resolved node count and bounding box. A refusal names",
             "file:line:column and the key path, and exits with code 2."})
 public final class CheckCommand implements Callable<Integer> {
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Parameters(index = "0", paramLabel = "FILE", description = "the scene file (.yaml, .yml or .json)")
     Path file;
 
@@ -27,10 +30,12 @@ public final class CheckCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         Scene s = SceneLoader.load(file, sets);
+        java.io.PrintWriter out = spec.commandLine().getOut();
         for (String line : SceneCheck.report(s)) {
-            System.out.println(line);
+            out.println(line);
         }
-        System.out.println("ok");
+        out.println("ok");
+        out.flush();
         return 0;
     }
 }

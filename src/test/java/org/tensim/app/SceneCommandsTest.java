@@ -133,4 +133,19 @@ class SceneCommandsTest {
             assertEquals(0.1, v[5], 1e-12);
         }
     }
+
+    /** The scene files the README and docs/scenes.md show are accepted as they stand. */
+    @Test
+    void theDocsScenesAreAccepted() throws Exception {
+        for (String doc : List.of("README.md", "docs/scenes.md")) {
+            String text = Files.readString(Path.of(doc));
+            int start = text.indexOf("```yaml\n");
+            assertTrue(start >= 0, doc + " shows a scene");
+            String yaml = text.substring(start + 8, text.indexOf("```", start + 8));
+            Path f = Files.writeString(dir.resolve("doc.yaml"), yaml);
+            String[] r = run("check", f.toString());
+            assertEquals("0", r[0], doc + "'s scene: " + r[2]);
+            assertTrue(r[1].contains("region loaded on ts: 2 nodes"), r[1]);
+        }
+    }
 }
