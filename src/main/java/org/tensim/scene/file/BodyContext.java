@@ -79,7 +79,7 @@ public final class BodyContext {
         }
         try {
             MeshCleaner.Result res = MeshLoader.load(f, mu);
-            MeshExtent.refuseImplausibleSize(res.mesh(), f, mu, what, minM, maxM);
+            MeshExtent.refuseImplausibleSize(res.mesh(), f, mu, what, minM, maxM, "units: ");
             return res;
         } catch (MeshFormatException e) {
             throw SceneException.at(node, e.getMessage());

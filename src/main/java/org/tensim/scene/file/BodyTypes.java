@@ -22,6 +22,11 @@ public final class BodyTypes {
         TYPES.put(type.name(), type);
     }
 
+    /** Removes a registered type (a built-in one too); nothing if there is none of that name. */
+    public static synchronized void unregister(String name) {
+        TYPES.remove(name);
+    }
+
     /** The type of that name, or null. */
     public static synchronized BodyType get(String name) {
         return TYPES.get(name);
