@@ -148,4 +148,38 @@ class SceneCommandsTest {
             assertTrue(r[1].contains("region loaded on ts: 2 nodes"), r[1]);
         }
     }
+
+    /** The same scene written as JSON is read to the same scene. */
+    @Test
+    void jsonIsReadLikeYaml() throws Exception {
+        Object tree = new com.fasterxml.jackson.databind.ObjectMapper(
+                new com.fasterxml.jackson.dataformat.yaml.YAMLFactory()).readValue(Path.of("docs/examples/cube.yaml")
+                .toFile(), Object.class);
+        Path json = dir.resolve("cube.json");
+        Json.write(json, tree);
+        String[] y = run("check", "docs/examples/cube.yaml");
+        String[] j = run("check", json.toString());
+        assertEquals("0", j[0], j[2]);
+        assertEquals(y[1].substring(y[1].indexOf('\n')), j[1].substring(j[1].indexOf('\n')), "the same report");
+    }
+
+    /** A run that diverges stops with status "diverged" and exit code 1, keeping the rows it wrote. */
+    @Test
+    void aDivergingRunStopsCleanly() throws Exception {
+        Path f = Files.writeString(dir.resolve("blow.yaml"), String.join("\n",
+                "version: 1",
+                "bodies: {c: {type: cube, element: mass-spring, stiffness: 1e6 N/m, damping: 0}}",
+                "regions: {bottom: {box: {min: [0, 0, 0], max: [1, 0, 1], frame: relative}}}",
+                "conditions: [{type: fixed, region: bottom}, {type: gravity, acceleration: [0, -9.81, 0]}]",
+                "probes: {p: {node: 13}}",
+                "run: {integrator: euler, dt: 0.01 s, duration: 100 s}", ""));
+        Path out = dir.resolve("out");
+        String[] r = run("run", f.toString(), "--out", out.toString());
+        assertEquals("1", r[0], r[1] + r[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        assertEquals("diverged", s.get("status"));
+        List<String> lines = Files.readAllLines(out.resolve("probes.csv"));
+        assertTrue(lines.size() > 1 && lines.size() < 10_002, "rows until it diverged: " + lines.size());
+        assertEquals(4, lines.get(lines.size() - 1).split(",").length, "the last row is whole");
+    }
 }
