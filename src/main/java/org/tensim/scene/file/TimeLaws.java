@@ -127,7 +127,7 @@ public final class TimeLaws {
             boolean header = true;
             while (it.hasNext()) {
                 String[] row = it.next();
-                int line = it.getCurrentLocation().getLineNr() - 1;
+                int line = it.getParser().currentTokenLocation().getLineNr();
                 if (header) {
                     header = false;
                     continue;

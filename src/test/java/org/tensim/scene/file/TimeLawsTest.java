@@ -65,5 +65,11 @@ class TimeLawsTest {
         assertEquals(0, l.value(5), 0);
         SceneFiles.write(dir, "trace-ms.csv", "t,v\n0 ms,0\n500 ms,1\n");
         assertEquals(0.5, law("  f: {type: csv, file: trace-ms.csv}\n", "f").value(0.25), 1e-15);
+        // A refusal names the file's line, also after a blank line and without a final line break.
+        SceneFiles.write(dir, "back.csv", "t,v\n0,0\n\n1,1\n0.5,2");
+        SceneException e = org.junit.jupiter.api.Assertions.assertThrows(SceneException.class,
+                () -> law("  f: {type: csv, file: back.csv}\n", "f"));
+        org.junit.jupiter.api.Assertions.assertTrue(e.getMessage().startsWith(
+                "back.csv:5:1: laws.f.file (back.csv): the times must increase"), e.getMessage());
     }
 }
