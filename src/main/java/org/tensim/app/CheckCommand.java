@@ -13,9 +13,9 @@ import picocli.CommandLine.Parameters;
 
 /** {@code tensim check FILE}: reads a scene file and reports what it builds, without running it. */
 @Command(name = "check", mixinStandardHelpOptions = true,
-        description = {"Reads a scene file (docs/scenes.md) and validates it without running: prints each",
-            "body's node count and each region's resolved node count and bounding box. A refusal names",
-            "file:line:column and the key path, and exits with code 2."})
+        description = {"Validates a scene file (docs/scenes.md) without running it: prints each",
+            "body's node count and each region's resolved node count and bounding box.",
+            "A refusal names file:line:column and the key path, and exits with code 2."})
 public final class CheckCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;

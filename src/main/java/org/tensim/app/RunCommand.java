@@ -21,10 +21,11 @@ import picocli.CommandLine.Parameters;
 
 /** {@code tensim run FILE}: runs a scene file headless and writes its probes' CSV and summary.json. */
 @Command(name = "run", mixinStandardHelpOptions = true,
-        description = {"Runs a scene file (docs/scenes.md) headless: writes the probes' CSV (the run block's",
-            "csv, units in the column names) and summary.json (the file's digest and every --set) to",
-            "--out, and prints the summary as the last line (JSON). The integrator, step and duration",
-            "come from the file's run block unless given here."})
+        description = {"Runs a scene file (docs/scenes.md) headless. Writes to --out the probes'",
+            "CSV (the run block's csv; units in the column names) and summary.json (the",
+            "file's digest and every --set), and prints the summary as the last line",
+            "(JSON). Integrator, step and duration come from the file's run block",
+            "unless given here."})
 public final class RunCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
