@@ -76,6 +76,12 @@ class MalformedScenesTest {
                 "node 99 does not exist"},
             {"non-monotonic-table.yaml", "non-monotonic-table.yaml:7:35: laws.steps.points[2][0]",
                 "times must increase"},
+            {"fixed-and-driven.yaml", "fixed-and-driven.yaml:8:5: conditions[1]", "node 0 is fixed; it cannot also"
+                + " be driven (body 'c', region 'bottom')"},
+            {"unknown-condition-type.yaml", "unknown-condition-type.yaml:5:12: conditions[0].type",
+                "is not one of fixed, force, gravity, motion"},
+            {"unknown-region-in-union.yaml", "unknown-region-in-union.yaml:6:26: regions.both.union[1]",
+                "\"tops\" is not a region of this file"},
             {"non-monotonic-csv-law.yaml", "non-monotonic.csv:4:1: laws.trace.file (non-monotonic.csv)",
                 "times must increase"},
         });
