@@ -28,4 +28,23 @@ public interface BodyType {
      *         lists and label files select by; null when they are the topology's nodes in order
      */
     int[] build(BodyContext ctx, Topology topology);
+
+    /** The zone models this type supports ({@code zones:} with {@code model:}); none by default. */
+    default List<String> zoneModels() {
+        return List.of();
+    }
+
+    /** The keys of a zone's {@code material:} map for this type; none by default. */
+    default List<String> zoneMaterialKeys() {
+        return List.of();
+    }
+
+    /**
+     * Gives {@code nodes} of a body this type built the zone's {@code model} (one of {@link #zoneModels()}),
+     * after every body is built and every region resolved, before the conditions. Refusals name the zone
+     * ({@link ZoneContext#node()}).
+     */
+    default void applyZone(ZoneContext zone, Topology topology, java.util.BitSet nodes) {
+        throw SceneException.at(zone.node(), "body type '" + name() + "' has no zones");
+    }
 }

@@ -10,7 +10,7 @@ import org.tensim.scene.conditions.TimeLaw;
 /**
  * Reads a scene file (docs/scenes.md; schema docs/scene.schema.json) into a {@link Scene}: the tree with every
  * value's place ({@link SceneTree}), the {@code --set} overrides ({@link Overrides}), then, in this order, the
- * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the conditions, the probes and
+ * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the probes and
  * the run settings. Every refusal is a {@link SceneException} naming file, line, column and key path.
  */
 public final class SceneLoader {
@@ -18,7 +18,7 @@ public final class SceneLoader {
     public static final int VERSION = 1;
     /** The top-level keys. */
     public static final List<String> KEYS = List.of("version", "description", "units", "bodies", "laws", "regions",
-            "conditions", "probes", "run");
+            "zones", "conditions", "probes", "run");
 
     private SceneLoader() {
     }
@@ -43,6 +43,7 @@ public final class SceneLoader {
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
         Map<String, SceneBody> bodies = bodies(top, units, folder);
         Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder);
+        SceneZones.apply(top.optional("zones"), bodies, regions, units);
         SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units);
         List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions);
         RunSettings run = RunSettings.read(top, units);

@@ -32,6 +32,7 @@ class SceneSchemaTest {
         m.put("region", SceneRegions.KEYS);
         SceneRegions.KIND_KEYS.forEach((kind, k) -> m.put("region_" + kind, k));
         SceneConditions.KEYS.forEach((t, k) -> m.put("condition_" + t, k));
+        m.put("zone", SceneZones.KEYS);
         m.put("probe", SceneProbe.KEYS);
         return m;
     }
