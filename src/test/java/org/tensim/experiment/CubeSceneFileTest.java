@@ -73,4 +73,16 @@ class CubeSceneFileTest {
         }
         return out;
     }
+
+    /** The jar's copy of the file (for machines without the checkout) is the file, and loads to the same cubes. */
+    @Test
+    void theBuildsCopyIsTheFile() throws Exception {
+        assertArrayEquals(java.nio.file.Files.readAllBytes(CubeSceneFile.FILE), CubeSceneFile.builtIn());
+        Scene copy = org.tensim.scene.file.SceneLoader.load("cube.yaml", CubeSceneFile.builtIn(),
+                java.nio.file.Path.of("."), CubeSceneFile.overrides(OTHER));
+        Scene file = CubeSceneFile.load(OTHER);
+        for (String body : java.util.List.of(CubeSceneFile.MASS_SPRING, CubeSceneFile.TENSEGRITY)) {
+            assertSameStructure(file.bodies().get(body).topology(), copy.bodies().get(body).topology());
+        }
+    }
 }

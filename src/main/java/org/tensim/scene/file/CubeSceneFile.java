@@ -1,5 +1,9 @@
 package org.tensim.scene.file;
 
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -22,9 +26,28 @@ public final class CubeSceneFile {
     private CubeSceneFile() {
     }
 
-    /** The file's scene with {@code p}'s structure and force (its step and duration are the caller's). */
+    /**
+     * The file's scene with {@code p}'s values: docs/examples/cube.yaml in the project folder, or, where there is
+     * none (a machine with the jar alone, such as a Spark executor), the copy the build puts in the jar.
+     */
     public static Scene load(CubeParameters p) {
-        return SceneLoader.load(FILE, overrides(p));
+        if (Files.isRegularFile(FILE)) {
+            return SceneLoader.load(FILE, overrides(p));
+        }
+        return SceneLoader.load("cube.yaml (built in)", builtIn(), Path.of("."), overrides(p));
+    }
+
+    /** The build's copy of the file. */
+    public static byte[] builtIn() {
+        try (InputStream in = CubeSceneFile.class.getResourceAsStream("cube.yaml")) {
+            if (in == null) {
+                throw new IllegalStateException("neither " + FILE + " nor the build's copy of it (a resource) is"
+                        + " there: rebuild, or run from the project folder");
+            }
+            return in.readAllBytes();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /** The {@code --set} options that give the file {@code p}'s values. */

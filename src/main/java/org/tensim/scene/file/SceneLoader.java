@@ -30,15 +30,25 @@ public final class SceneLoader {
 
     /** Loads a scene file with {@code --set path=value} overrides applied to its tree first. */
     public static Scene load(Path file, List<String> overrides) {
-        SceneNode root = SceneTree.read(file);
+        Path parent = file.toAbsolutePath().getParent();
+        return load(file, SceneTree.read(file), parent == null ? Path.of(".") : parent, overrides);
+    }
+
+    /**
+     * Loads a scene from its bytes (a scene kept as a resource), {@code name} naming it in messages and
+     * {@code folder} the folder its relative file names are resolved against.
+     */
+    public static Scene load(String name, byte[] bytes, Path folder, List<String> overrides) {
+        return load(Path.of(name), SceneTree.read(name, bytes), folder, overrides);
+    }
+
+    private static Scene load(Path file, SceneNode root, Path folder, List<String> overrides) {
         Overrides.apply(root, overrides);
         MapReader top = new MapReader(root, KEYS);
         version(top);
         if (top.has("description")) {
             top.string("description");
         }
-        Path parent = file.toAbsolutePath().getParent();
-        Path folder = parent == null ? Path.of(".") : parent;
         SceneUnits units = SceneUnits.read(top.optional("units"));
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
         Map<String, SceneBody> bodies = bodies(top, units, folder);

@@ -35,6 +35,11 @@ public final class SceneTree {
         } catch (IOException e) {
             throw new SceneException(file + ": cannot read the scene file (" + e.getMessage() + ")");
         }
+        return read(name, bytes);
+    }
+
+    /** A scene's top-level map from its bytes; {@code name} (a .json name is read as JSON) is named in messages. */
+    public static SceneNode read(String name, byte[] bytes) {
         boolean json = name.toLowerCase(Locale.ROOT).endsWith(".json");
         JsonFactory factory = json ? new JsonFactory() : new YAMLFactory();
         SceneTree tree = new SceneTree();
@@ -60,7 +65,7 @@ public final class SceneTree {
             throw new SceneException(at + ": " + (tree.reading.isEmpty() ? "(top level)" : tree.reading)
                     + ": syntax error: " + firstLine(e.getOriginalMessage()));
         } catch (IOException e) {
-            throw new SceneException(file + ": cannot read the scene file (" + e.getMessage() + ")");
+            throw new SceneException(name + ": cannot read the scene file (" + e.getMessage() + ")");
         }
     }
 
