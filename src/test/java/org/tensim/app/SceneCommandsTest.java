@@ -182,4 +182,19 @@ class SceneCommandsTest {
         assertTrue(lines.size() > 1 && lines.size() < 10_002, "rows until it diverged: " + lines.size());
         assertEquals(4, lines.get(lines.size() - 1).split(",").length, "the last row is whole");
     }
+
+    /** Every scene file among the docs' examples passes check. */
+    @Test
+    void everyExampleSceneChecks() throws Exception {
+        List<Path> scenes;
+        try (var files = Files.list(Path.of("docs/examples"))) {
+            scenes = files.filter(p -> p.toString().matches(".*\\.ya?ml")).sorted().toList();
+        }
+        assertTrue(scenes.contains(Path.of("docs/examples/cube.yaml")), scenes.toString());
+        for (Path f : scenes) {
+            String[] r = run("check", f.toString());
+            assertEquals("0", r[0], f + ": " + r[2]);
+            assertTrue(r[1].strip().endsWith("ok"), r[1]);
+        }
+    }
 }
