@@ -37,9 +37,19 @@ public final class OptionsTable {
      * @param unit       the value's unit, as the option's description writes it
      * @param guiKey     the key of the GUI's tunable parameter (and of presets and specs' {@code parameters})
      * @param summaryKey the {@code summary.json} key whose value is the option's (dotted for a nested object)
+     * @param sceneKey   where a scene file (docs/scenes.md) holds the same quantity, as the schema's definition and
+     *                   property, e.g. {@code body_cube:stiffness}; null: nowhere
      */
-    public record Link(String flag, String unit, String guiKey, String summaryKey) {
+    public record Link(String flag, String unit, String guiKey, String summaryKey, String sceneKey) {
+        /** A link with no scene-file key. */
+        public Link(String flag, String unit, String guiKey, String summaryKey) {
+            this(flag, unit, guiKey, summaryKey, null);
+        }
     }
+
+    /** How a scene file's schema definition is written as a key path, e.g. {@code bodies.NAME.stiffness}. */
+    static final Map<String, String> SCENE_PATHS = Map.of("body_cube", "bodies.NAME.", "run", "run.", "law_sine",
+            "laws.NAME.", "condition_force", "conditions[force].");
 
     /** The links, per command; an option not listed has no unit, GUI key or summary key. */
     public static final Map<String, List<Link>> LINKS = Map.of(
@@ -70,15 +80,19 @@ public final class OptionsTable {
                     new Link("--vector-scale", "", null, null),
                     new Link("--csv-times", "s", null, null)),
             "cube", List.of(
-                    new Link("--seconds", "s", null, "duration_s"),
-                    new Link("--dt", "s", Tuning.TIME_STEP, "dt_s"),
-                    new Link("--force", "N", CubeViewScene.FORCE_AMPLITUDE, "parameters.forceAmplitudeN"),
-                    new Link("--frequency", "Hz", CubeViewScene.FORCE_FREQUENCY, "parameters.forceFrequencyHz"),
-                    new Link("--tilt", "degrees", null, "parameters.forceTiltDeg"),
-                    new Link("--stiffness", "N/m", CubeViewScene.STIFFNESS, "parameters.stiffnessNPerM"),
-                    new Link("--damping", "N s/m", CubeViewScene.DAMPING, "parameters.dampingNsPerM"),
-                    new Link("--mass", "kg", null, "parameters.nodeMassKg"),
-                    new Link("--integrator", "", null, "integrator")));
+                    new Link("--seconds", "s", null, "duration_s", "run:duration"),
+                    new Link("--dt", "s", Tuning.TIME_STEP, "dt_s", "run:dt"),
+                    new Link("--force", "N", CubeViewScene.FORCE_AMPLITUDE, "parameters.forceAmplitudeN",
+                            "condition_force:magnitude"),
+                    new Link("--frequency", "Hz", CubeViewScene.FORCE_FREQUENCY, "parameters.forceFrequencyHz",
+                            "law_sine:frequency"),
+                    new Link("--tilt", "degrees", null, "parameters.forceTiltDeg", "condition_force:direction"),
+                    new Link("--stiffness", "N/m", CubeViewScene.STIFFNESS, "parameters.stiffnessNPerM",
+                            "body_cube:stiffness"),
+                    new Link("--damping", "N s/m", CubeViewScene.DAMPING, "parameters.dampingNsPerM",
+                            "body_cube:damping"),
+                    new Link("--mass", "kg", null, "parameters.nodeMassKg", "body_cube:node_mass"),
+                    new Link("--integrator", "", null, "integrator", "run:integrator")));
 
     /** The spec keys of the solver options (a sweep or calibration spec's {@code solver} object). */
     static final Map<String, String> SOLVER_SPEC_KEYS = Map.of("--integrator", "solver.integrator", "--dt",
@@ -130,7 +144,8 @@ public final class OptionsTable {
         unlinked(b, DiaphragmViewScene.parameters(org.tensim.scene.diaphragm.BoundaryConditions.defaults()
                 .muscleLoad(), org.tensim.scene.diaphragm.TendonRule.PLANE, false), "diaphragm");
         b.append("\n## The cube (`tensim cube`)\n\n")
-                .append("The cube's spec (`\"scene\": \"cube\"`) takes its GUI keys in `parameters` and `fixed`.\n\n");
+                .append("The cube's spec (`\"scene\": \"cube\"`) takes its GUI keys in `parameters` and `fixed`; its scene"
+                        + " file is\n[examples/cube.yaml](../examples/cube.yaml) ([scenes.md](../scenes.md)).\n\n");
         table(b, "cube", options(cube), Set.of());
         b.append("\n## The GUI's cube parameters without an option\n\n")
                 .append("| GUI label (preset key) | unit | default | range | summary |\n|---|---|---|---|---|\n");
@@ -184,14 +199,19 @@ public final class OptionsTable {
     }
 
     private static void table(StringBuilder b, String command, List<OptionSpec> opts, Set<String> sceneKeys) {
-        b.append("| CLI flag | spec key | GUI label (preset key) | `summary.json` key | unit | default | summary |\n")
-                .append("|---|---|---|---|---|---|---|\n");
+        boolean scene = LINKS.get(command).stream().anyMatch(l -> l.sceneKey() != null);
+        b.append("| CLI flag | spec key | ").append(scene ? "scene-file key | " : "")
+                .append("GUI label (preset key) | `summary.json` key | unit | default | summary |\n")
+                .append(scene ? "|---|---|---|---|---|---|---|---|\n" : "|---|---|---|---|---|---|---|\n");
         for (OptionSpec o : opts) {
             Link l = link(command, o);
             TunableParameter p = l == null ? null : guiParameter(command, l.guiKey());
             String[] d = descriptionAndDefault(o);
-            b.append("| ").append(flags(o)).append(" | ").append(specKey(command, o, sceneKeys, l)).append(" | ")
-                    .append(p == null ? "" : p.label() + " (`" + p.key() + "`)").append(" | ")
+            b.append("| ").append(flags(o)).append(" | ").append(specKey(command, o, sceneKeys, l)).append(" | ");
+            if (scene) {
+                b.append(sceneKey(l)).append(" | ");
+            }
+            b.append(p == null ? "" : p.label() + " (`" + p.key() + "`)").append(" | ")
                     .append(l == null || l.summaryKey() == null ? "" : "`" + l.summaryKey() + "`").append(" | ")
                     .append(l == null ? "" : cell(l.unit())).append(" | ").append(cell(d[1])).append(" | ")
                     .append(cell(d[0])).append(" |\n");
@@ -222,6 +242,15 @@ public final class OptionsTable {
         }
         String label = o.arity().max() == 0 ? "" : " " + o.paramLabel();
         return first + cell(label) + (former.isEmpty() ? "" : " (also " + String.join(", ", former) + ")");
+    }
+
+    /** The scene-file key of a link, as a path ({@code bodies.NAME.stiffness}); empty when it has none. */
+    static String sceneKey(Link l) {
+        if (l == null || l.sceneKey() == null) {
+            return "";
+        }
+        String[] dp = l.sceneKey().split(":");
+        return "`" + SCENE_PATHS.get(dp[0]) + dp[1] + "`";
     }
 
     private static String specKey(String command, OptionSpec o, Set<String> sceneKeys, Link l) {

@@ -39,14 +39,15 @@ public final class OutFolderOption {
 
     /**
      * The folder given, or the default with its last part {@value #SPEC_NAME} replaced by the spec file's name
-     * without {@code .json} (out/sweep/NAME for a spec NAME.json); refused as {@link #folder(CommandSpec)}.
+     * without {@code .json}, {@code .yaml} or {@code .yml} (out/sweep/NAME for a spec NAME.json); refused as
+     * {@link #folder(CommandSpec)}.
      */
     public Path folder(CommandSpec spec, Path specFile) {
         var parsed = spec.commandLine() == null ? null : spec.commandLine().getParseResult();
         boolean given = parsed != null && parsed.hasMatchedOption("--out");
         if (!given && out != null && out.getFileName() != null && out.getFileName().toString().equals(SPEC_NAME)) {
             String n = specFile.getFileName().toString();
-            out = out.resolveSibling(n.endsWith(".json") ? n.substring(0, n.length() - 5) : n);
+            out = out.resolveSibling(n.replaceFirst("\\.(json|yaml|yml)$", ""));
         }
         return folder(spec);
     }

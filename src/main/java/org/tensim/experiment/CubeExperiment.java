@@ -1,7 +1,8 @@
 package org.tensim.experiment;
 
 import org.tensim.scene.CubeParameters;
-import org.tensim.scene.CubeScene;
+import org.tensim.scene.file.CubeSceneFile;
+import org.tensim.scene.file.Scene;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
@@ -9,7 +10,9 @@ import org.tensim.solver.integrators.Integrators;
 /**
  * The paper's cube comparison (Fig. 3): the mass-spring and the tensegrity cube
  * run side by side, in lockstep, under the same sinusoidal force; the
- * displacement of point P of each is sampled after every step.
+ * displacement of point P of each is sampled after every step. The cubes, their
+ * fixed bottoms, loads and point P are the scene file docs/examples/cube.yaml's
+ * ({@link CubeSceneFile}), with the parameters' values set over the file's.
  */
 public final class CubeExperiment {
     /** Peak Y displacement of P reported by the paper for the MSS cube, m. */
@@ -50,12 +53,13 @@ public final class CubeExperiment {
     /** Both cubes with the named integrator (see {@link Integrators#names()}). */
     public CubeExperiment(CubeParameters p, String integrator) {
         this.p = p;
-        CubeScene a = CubeScene.massSpring(p);
-        CubeScene b = CubeScene.tensegrity(p);
-        mss = new Simulation(SystemState.compile(a.topology), Integrators.create(integrator));
-        ts = new Simulation(SystemState.compile(b.topology), Integrators.create(integrator));
-        mssProbe = a.probe.id();
-        tsProbe = b.probe.id();
+        Scene s = CubeSceneFile.load(p);
+        mss = new Simulation(SystemState.compile(s.bodies().get(CubeSceneFile.MASS_SPRING).topology()),
+                Integrators.create(integrator));
+        ts = new Simulation(SystemState.compile(s.bodies().get(CubeSceneFile.TENSEGRITY).topology()),
+                Integrators.create(integrator));
+        mssProbe = CubeSceneFile.probe(s, CubeSceneFile.MASS_SPRING);
+        tsProbe = CubeSceneFile.probe(s, CubeSceneFile.TENSEGRITY);
     }
 
     public Simulation massSpring() {

@@ -120,6 +120,9 @@ public final class CubeReport {
             s.put("diverged_at_s", diverged.timeSeconds());
         }
         s.put("parameters", p);
+        // The cubes are the scene file's: a summary names the file and its contents.
+        s.put("scene", org.tensim.scene.file.CubeSceneFile.FILE.toString());
+        s.put("scene_digest", org.tensim.io.FileDigest.of(List.of(org.tensim.scene.file.CubeSceneFile.FILE)));
         writeChart(series, run.file("cube.png"), diverged);
         Map<String, Object> written = run.finish(diverged == null ? RunStatus.OK : RunStatus.DIVERGED, s);
         return new CubeReport(run.dir(), written);

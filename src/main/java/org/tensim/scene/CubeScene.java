@@ -52,10 +52,39 @@ public final class CubeScene {
     public static CubeScene build(CubeParameters p, boolean rigid) {
         Topology t = new Topology();
         double a = p.sideM();
+        Node[] corner = addStructure(t, a, p.nodeMassKg(), p.stiffnessNPerM(), p.dampingNsPerM(), true, rigid);
+        List<Node> top = new ArrayList<>();
+        for (Node n : t.nodes()) {
+            double y = n.position().y();
+            if (Math.abs(y) < 1e-9 * a) {
+                n.fix();
+            } else if (Math.abs(y - a) < 1e-9 * a && !isCorner(n, corner)) {
+                top.add(n);
+            }
+        }
+        ForceLaw law = ForceLaw.sinusoid(p.forceAmplitudeN(), p.forceFrequencyHz(), 0, p.forceDirection());
+        for (Node n : top) {
+            t.applyForce(n, law);
+        }
+        return new CubeScene(t, List.copyOf(top), top.get(0), rigid, p);
+    }
+
+    /**
+     * Adds the cube's nodes and springs to a topology, without fixed nodes or loads: the eight corners first
+     * (node i at ((i&1) a, (i>>1&1) a, (i>>2&1) a)), joined by the twelve edge springs, then, with
+     * {@code element}, the twelve nodes of the {@link TensegrityElement} (half size a/2, half spacing a/4,
+     * centred), each tied to the four corners of its face. Returns the corners.
+     *
+     * @param a       side, m
+     * @param m       mass of every node, kg
+     * @param k       stiffness of every spring, N/m
+     * @param c       axial damping of every spring, N s/m
+     * @param element whether the element is inside
+     * @param rigid   whether its six struts are rigid links (the tensegrity cube) or absent (mass-spring)
+     */
+    public static Node[] addStructure(Topology t, double a, double m, double k, double c, boolean element,
+            boolean rigid) {
         double h = a / 2;
-        double m = p.nodeMassKg();
-        double k = p.stiffnessNPerM();
-        double c = p.dampingNsPerM();
         Node[] corner = new Node[8];
         for (int i = 0; i < 8; i++) {
             corner[i] = t.addNode((i & 1) * a, ((i >> 1) & 1) * a, ((i >> 2) & 1) * a, m);
@@ -66,6 +95,9 @@ public final class CubeScene {
                     t.addSpring(corner[i], corner[i | bit], k, c);
                 }
             }
+        }
+        if (!element) {
+            return corner;
         }
         TensegrityElement e = TensegrityElement.build(t, new Vec3(h, h, h), h, h / 2, m, k, c, rigid);
         // Tie each element node to the four corners of the cube face it lies on.
@@ -86,20 +118,7 @@ public final class CubeScene {
                 }
             }
         }
-        List<Node> top = new ArrayList<>();
-        for (Node n : t.nodes()) {
-            double y = n.position().y();
-            if (Math.abs(y) < 1e-9 * a) {
-                n.fix();
-            } else if (Math.abs(y - a) < 1e-9 * a && !isCorner(n, corner)) {
-                top.add(n);
-            }
-        }
-        ForceLaw law = ForceLaw.sinusoid(p.forceAmplitudeN(), p.forceFrequencyHz(), 0, p.forceDirection());
-        for (Node n : top) {
-            t.applyForce(n, law);
-        }
-        return new CubeScene(t, List.copyOf(top), top.get(0), rigid, p);
+        return corner;
     }
 
     private static boolean isCorner(Node n, Node[] corners) {

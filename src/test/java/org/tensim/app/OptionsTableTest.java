@@ -74,6 +74,26 @@ class OptionsTableTest {
     }
 
     @Test
+    void everySceneFileKeyIsAPropertyOfTheSceneSchema() throws Exception {
+        com.fasterxml.jackson.databind.JsonNode defs = Json.mapper().readTree(Files.readAllBytes(
+                ProjectFolder.resolve("docs", "scene.schema.json"))).get("$defs");
+        int checked = 0;
+        for (var e : OptionsTable.LINKS.entrySet()) {
+            for (OptionsTable.Link l : e.getValue()) {
+                if (l.sceneKey() != null) {
+                    String[] dp = l.sceneKey().split(":");
+                    assertNotNull(OptionsTable.SCENE_PATHS.get(dp[0]), l.flag() + ": no key path for " + dp[0]);
+                    assertNotNull(defs.get(dp[0]), l.flag() + ": the scene schema has no definition " + dp[0]);
+                    assertTrue(defs.get(dp[0]).get("properties").has(dp[1]), l.flag() + ": the scene schema's "
+                            + dp[0] + " has no property " + dp[1]);
+                    checked++;
+                }
+            }
+        }
+        assertTrue(checked > 0, "no scene-file key was checked");
+    }
+
+    @Test
     void theDiaphragmsSummaryKeysHoldTheValuesARunWasGiven() throws Exception {
         // a coarse mesh of the generator's, read as a file: a step of it costs milliseconds
         Path mesh = dir.resolve("dome-6.obj");

@@ -87,8 +87,12 @@ class InputValidationTest {
         Topology t = two();
         Node foreign = two().node(1);
         Node other = new Topology().addNode(5, 5, 5, 1);
+        // Its id is out of range here.
         rejects(IllegalArgumentException.class, () -> t.addSpring(t.node(0), other, 1, 0), "does not belong");
-        assertTrue(foreign.id() == 1);
+        // Its id (1) is in range and names another node of this topology: still not this topology's node.
+        rejects(IllegalArgumentException.class, () -> t.addSpring(t.node(0), foreign, 1, 0), "node 1",
+                "does not belong");
+        rejects(IllegalArgumentException.class, () -> t.addRigidLink(foreign, t.node(0)), "does not belong");
     }
 
     @Test

@@ -392,7 +392,14 @@ public final class DiaphragmReport {
         return e;
     }
 
+    /**
+     * {@code v} rounded to {@code digits} decimals. Infinities and NaN are kept as they are: Math.round would
+     * turn them into Long.MAX_VALUE and 0, so that a diverged run's error would read as a number or as none.
+     */
     public static double round(double v, int digits) {
+        if (!Double.isFinite(v)) {
+            return v;
+        }
         double f = Math.pow(10, digits);
         return Math.round(v * f) / f;
     }

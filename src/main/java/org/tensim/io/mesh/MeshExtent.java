@@ -73,6 +73,16 @@ public final class MeshExtent {
      */
     public static void refuseImplausibleSize(TriangleMesh m, Path file, MeshUnits units, String organ, double minM,
             double maxM) throws MeshFormatException {
+        refuseImplausibleSize(m, file, units, organ, minM, maxM, "--units ");
+    }
+
+    /**
+     * As {@link #refuseImplausibleSize(TriangleMesh, Path, MeshUnits, String, double, double)}, the units being
+     * given as {@code unitsSetting} followed by the unit (e.g. "--units " on the command line, "units: " in a
+     * scene file).
+     */
+    public static void refuseImplausibleSize(TriangleMesh m, Path file, MeshUnits units, String organ, double minM,
+            double maxM, String unitsSetting) throws MeshFormatException {
         double[] b = m.bounds();
         double size = Math.max(b[3] - b[0], Math.max(b[4] - b[1], b[5] - b[2]));
         if (size >= minM && size <= maxM) {
@@ -87,13 +97,14 @@ public final class MeshExtent {
             }
         }
         String advice = fits != null
-                ? "the file is probably in " + (fits.equals("m") ? "metres" : "millimetres") + ": use --units " + fits
-                : "no --units (mm or m) gives a plausible size: check the file's scale";
+                ? "the file is probably in " + (fits.equals("m") ? "metres" : "millimetres") + ": use "
+                        + unitsSetting + fits
+                : "no " + unitsSetting.strip() + " (mm or m) gives a plausible size: check the file's scale";
         throw new MeshFormatException(file, "extent", String.format(Locale.ROOT,
-                "the mesh measures %.4g %s across (largest side of its bounding box) = %.4g m with --units %s;"
+                "the mesh measures %.4g %s across (largest side of its bounding box) = %.4g m with %s%s;"
                         + " a %s measures %.3g to %.3g m: %s",
-                fileUnits, units.name().toLowerCase(Locale.ROOT), size, units.name().toLowerCase(Locale.ROOT),
-                organ, minM, maxM, advice));
+                fileUnits, units.name().toLowerCase(Locale.ROOT), size, unitsSetting,
+                units.name().toLowerCase(Locale.ROOT), organ, minM, maxM, advice));
     }
 
     private static double distance(TriangleMesh m, int i, double[] c) {

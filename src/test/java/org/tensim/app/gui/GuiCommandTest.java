@@ -108,7 +108,8 @@ class GuiCommandTest {
         assertEquals("rk2", m.get("integrator"));
         assertEquals(false, m.get("paced"));
         double wall = ((Number) m.get("wall_s")).doubleValue();
-        assertTrue(wall >= 1.5 && wall < 10, "closed after its 1.5 s: " + m);
+        // It closed by itself (the command returned); no upper bound on the wall time, which load stretches.
+        assertTrue(wall >= 1.5, "ran its 1.5 s: " + m);
         double dt = ((Number) m.get("dt_s")).doubleValue();
         double sim = ((Number) m.get("sim_s")).doubleValue();
         long steps = ((Number) m.get("steps")).longValue();

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
+import org.tensim.testsupport.SharedData;
 
 /** Welding, degenerate triangles, components, boundary loops and non-manifold edges. */
 class MeshCleanerTest {
@@ -62,7 +63,7 @@ class MeshCleanerTest {
     /** The real BodyParts3D diaphragm: a real, imperfect mesh (see its ATTRIBUTION.md). */
     @Test
     void bodyParts3dDiaphragmIsReadWithItsDefects() throws Exception {
-        Path p = Path.of("..", "shared", "meshes", "bodyparts3d", "diaphragm-FJ3131-dec28k-mm.obj");
+        Path p = SharedData.BODYPARTS3D_DIAPHRAGM;
         assumeTrue(Files.isRegularFile(p), "needs the BodyParts3D diaphragm mesh at " + p.toAbsolutePath());
         MeshCleaner.Result r = MeshLoader.load(p, MeshUnits.MM);
         MeshReport rep = r.report();

@@ -12,13 +12,14 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
 import org.tensim.solver.Simulation;
+import org.tensim.testsupport.SharedData;
 
 /** The real BodyParts3D diaphragm through the same pipeline (skipped when the mesh is absent). */
 @org.junit.jupiter.api.TestInstance(org.junit.jupiter.api.TestInstance.Lifecycle.PER_CLASS)
 class BodyPartsDiaphragmTest {
     private TwoSurfaces loaded;
 
-    static final Path MESH = Path.of("..", "shared", "meshes", "bodyparts3d", "diaphragm-FJ3131-dec28k-mm.obj");
+    static final Path MESH = SharedData.BODYPARTS3D_DIAPHRAGM;
 
     private TwoSurfaces load() throws Exception {
         assumeTrue(Files.isRegularFile(MESH), "needs the BodyParts3D diaphragm mesh at " + MESH.toAbsolutePath());
@@ -80,9 +81,10 @@ class BodyPartsDiaphragmTest {
         int a = scene.apexNode();
         double dz = sim.state().x[3 * a + 2] - sim.state().x0[3 * a + 2];
         // The real mesh's broad, tall domes with many attached nodes descend less than the double dome at
-        // the same muscle amplitude (docs/diaphragm.md); here only a clear descent is required. Measured (pressure)
-        // 2026-11-23 17:14 UTC: -1.92 mm with the transverse shear elements, -2.75 mm with the diagonals
-        // of before (7 mm clusters: -4.58 and -5.49 mm).
-        assertTrue(dz < -0.001 && dz > -0.040, "apex moved " + dz * 1e3 + " mm");
+        // the same muscle amplitude (docs/diaphragm.md). Measured (pressure) 2026-11-23: -1.92 mm with the
+        // transverse shear elements, -2.75 mm with the diagonals of before (7 mm clusters: -4.58 and -5.49
+        // mm); 2026-12-01: -1.875 mm. Band: -1.875 mm +/- 12 %: the tissue-model changes since 2026-11-23 moved
+        // it by 2.4 %, the element change before them by 43 %, and a lost load or attachment by far more.
+        assertEquals(-1.875e-3, dz, 0.225e-3, "apex moved " + dz * 1e3 + " mm");
     }
 }

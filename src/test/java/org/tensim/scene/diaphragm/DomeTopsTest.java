@@ -14,6 +14,8 @@ import org.tensim.io.mesh.TriangleMesh;
 class DomeTopsTest {
     private static final double X0 = -0.0437;
     private static final double Y0 = 0.0113;
+    /** x of the highest point of the adult double dome's upper surface for x below 0, from its formula, m. */
+    private static final double ANALYTIC_TOP_X = -0.04057;
 
     /**
      * The square [-0.12, 0.12]^2 m in n x n cells, lifted to the cap z = -(3 dx^2 + 2 dx dy + 5 dy^2) (m) and
@@ -51,11 +53,17 @@ class DomeTopsTest {
             TwoSurfaces s = TwoSurfaces.split(DoubleDomeGenerator.shell(
                     DoubleDomeGenerator.Shape.adult().withRings(rings)));
             double x = DiaphragmScene.defaultActionLines(s).get(0).x();
+            // The analytic top of the upper surface's formula (DoubleDomeGenerator) is at x = -40.57 mm. The
+            // fit is centred on the highest vertex, not on the top, and the flat top is not a quadratic over
+            // its 24 mm radius: its top lies 2.9-4.1 mm from the analytic one (measured 2026-12-01: -37.66,
+            // -37.06, -36.43, -36.80 mm at 14, 20, 28, 43 rings). Band: that offset, 2.0-5.0 mm; the highest
+            // vertices (-44.5, -41.7 mm at 14 and 20 rings) fall outside it.
+            assertTrue(x > ANALYTIC_TOP_X + 0.0020 && x < ANALYTIC_TOP_X + 0.0050,
+                    rings + " rings: right dome's top at x = " + x * 1e3 + " mm");
             lo = Math.min(lo, x);
             hi = Math.max(hi, x);
         }
-        // the highest vertices lay at x = -44.5, -41.7, -37.3, -38.8 mm (7.2 mm apart); analytic top -40.6 mm
+        // the highest vertices lay at x = -44.5, -41.7, -37.3, -38.8 mm (7.2 mm apart); the fit's, 1.23 mm apart
         assertTrue(hi - lo < 1.5e-3, "right dome's action line moves by " + (hi - lo) * 1e3 + " mm between meshes");
-        assertTrue(lo > -0.045 && hi < -0.032, "right dome's top at x = " + lo * 1e3 + " .. " + hi * 1e3 + " mm");
     }
 }

@@ -13,8 +13,7 @@ import org.tensim.io.BoxesJson;
  * BodyParts3D mesh only, BodyParts3D's rib boxes beside it.
  */
 final class SceneFixture {
-    static final Path BODYPARTS3D_BOXES = Path.of("..", "shared", "meshes", "bodyparts3d",
-            "rib-sternum-bounds-mm.json");
+    static final Path BODYPARTS3D_BOXES = DiaphragmSetup.BODYPARTS3D_BOXES;
 
     /**
      * The defaults with the pressure load ({@code --muscle-load pressure}), for the tests whose figures were

@@ -23,7 +23,7 @@ import picocli.CommandLine.Model.OptionSpec;
  * error or a run that starts. The commands and options are read from the command
  * line's own model, so a new option is covered without changing this test.
  */
-class OptionProperties {
+class OptionPropertiesTest {
     /** Values no numeric option may take. */
     static final List<String> BAD = List.of("abc", "", "NaN", "nan", "Infinity", "-Infinity", "1e400", "-1e400",
             "1..2", "0x", "--", "1,,2", "\u00e9");

@@ -21,7 +21,7 @@ import org.tensim.RandomCases;
  * file, or read into a valid mesh (finite coordinates, corners that exist). No other
  * exception ever escapes.
  */
-class MeshReaderProperties {
+class MeshReaderPropertiesTest {
     enum Format { OBJ, OFF, STL_ASCII, STL_BINARY }
 
     @TempDir

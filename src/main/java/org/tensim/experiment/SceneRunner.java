@@ -1,0 +1,144 @@
+package org.tensim.experiment;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.tensim.io.CsvWriter;
+import org.tensim.io.FileDigest;
+import org.tensim.io.Progress;
+import org.tensim.io.RunFolder;
+import org.tensim.io.RunSignals;
+import org.tensim.io.RunStatus;
+import org.tensim.scene.file.RunSettings;
+import org.tensim.scene.file.Scene;
+import org.tensim.scene.file.SceneBody;
+import org.tensim.scene.file.SceneProbe;
+import org.tensim.solver.Simulation;
+import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.integrators.Integrators;
+
+/**
+ * Runs a loaded {@link Scene} headless: each body is its own {@link Simulation}, all stepped in lockstep with
+ * the run's integrator and step; after the start and after every {@code every}-th step one CSV row holds the time
+ * ({@code t_s}, the first body's clock) and every probe's values. The summary holds the scene file and its digest,
+ * every {@code --set}, the run's settings, each body's node count and each CSV column's minimum and maximum.
+ * A body that diverges ends the run with status "diverged"; the CSV keeps the rows written.
+ */
+public final class SceneRunner {
+    private SceneRunner() {
+    }
+
+    /** Runs the scene with {@code run} (the file's settings, possibly overridden) into the run folder. */
+    public static Map<String, Object> run(Scene scene, RunSettings run, RunFolder folder) throws IOException {
+        List<SceneBody> bodies = new ArrayList<>(scene.bodies().values());
+        Map<String, Simulation> sims = new LinkedHashMap<>();
+        for (SceneBody b : bodies) {
+            sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator())));
+        }
+        List<String> header = new ArrayList<>(List.of("t_s"));
+        for (SceneProbe p : scene.probes()) {
+            header.addAll(p.columns());
+        }
+        double[] row = new double[header.size()];
+        double[] min = new double[row.length];
+        double[] max = new double[row.length];
+        java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(max, Double.NEGATIVE_INFINITY);
+        Simulation clock = sims.values().iterator().next();
+        long steps = run.steps();
+        long made = 0;
+        SimulationDivergedException diverged = null;
+        try (CsvWriter w = folder.csv(run.csv(), header, 1000)) {
+            Progress progress = Progress.start("run", run.durationS());
+            sample(scene, sims, 0, row, min, max);
+            w.row(row);
+            for (long i = 1; i <= steps; i++) {
+                RunSignals.checkStop();
+                for (Simulation s : sims.values()) {
+                    s.step(run.dtS());
+                }
+                made = i;
+                if (i % run.every() == 0) {
+                    sample(scene, sims, clock.time(), row, min, max);
+                    w.row(row);
+                }
+                progress.update(clock.time());
+            }
+            progress.close();
+        } catch (SimulationDivergedException e) {
+            diverged = e;
+        }
+        Map<String, Object> s = new LinkedHashMap<>();
+        s.put("scene", scene.file().toString());
+        s.put("scene_digest", FileDigest.of(List.of(scene.file())));
+        s.put("overrides", scene.overrides());
+        s.put("integrator", run.integrator());
+        s.put("dt_s", run.dtS());
+        s.put("duration_s", run.durationS());
+        s.put("steps", made);
+        Map<String, Object> nodes = new LinkedHashMap<>();
+        for (SceneBody b : bodies) {
+            nodes.put(b.name(), b.topology().nodeCount());
+        }
+        s.put("body_nodes", nodes);
+        Map<String, Object> range = new LinkedHashMap<>();
+        for (int c = 1; c < header.size(); c++) {
+            range.put(header.get(c), Map.of("min", finite(min[c]), "max", finite(max[c])));
+        }
+        s.put("columns", range);
+        if (diverged != null) {
+            s.put("diverged", diverged.getMessage());
+            s.put("diverged_at_s", diverged.timeSeconds());
+        }
+        return folder.finish(diverged == null ? RunStatus.OK : RunStatus.DIVERGED, s);
+    }
+
+    private static Object finite(double v) {
+        return Double.isFinite(v) ? v : "none";
+    }
+
+    private static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row, double[] min,
+            double[] max) {
+        row[0] = t;
+        int c = 1;
+        double[] d = new double[3];
+        for (SceneProbe p : scene.probes()) {
+            SystemState st = sims.get(p.body()).state();
+            if (p.quantity().equals("extents")) {
+                for (int a = 0; a < 3; a++) {
+                    double lo = Double.POSITIVE_INFINITY;
+                    double hi = Double.NEGATIVE_INFINITY;
+                    for (int n : p.nodes()) {
+                        lo = Math.min(lo, st.position(n, a));
+                        hi = Math.max(hi, st.position(n, a));
+                    }
+                    row[c++] = lo;
+                    row[c++] = hi;
+                }
+            } else if (p.nodes().length == 1 && p.quantity().equals("displacement")) {
+                st.displacement(p.nodes()[0], d);
+                row[c++] = d[0];
+                row[c++] = d[1];
+                row[c++] = d[2];
+            } else {
+                double[] sum = new double[3];
+                for (int n : p.nodes()) {
+                    st.displacement(n, d);
+                    sum[0] += d[0];
+                    sum[1] += d[1];
+                    sum[2] += d[2];
+                }
+                for (int a = 0; a < 3; a++) {
+                    row[c++] = sum[a] / p.nodes().length;
+                }
+            }
+        }
+        for (int i = 1; i < row.length; i++) {
+            min[i] = Math.min(min[i], row[i]);
+            max[i] = Math.max(max[i], row[i]);
+        }
+    }
+}

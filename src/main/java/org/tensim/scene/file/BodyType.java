@@ -1,0 +1,50 @@
+package org.tensim.scene.file;
+
+import java.util.List;
+import org.tensim.model.Topology;
+
+/**
+ * A kind of body a scene file can name with {@code type:} ({@code cube}, later {@code volume}, {@code rigid},
+ * {@code shell}, {@code diaphragm}). A body type reads its own keys from the body's map and adds its nodes,
+ * springs and links to a topology; the loader does the rest (regions, conditions, probes) the same way for every
+ * type. Types are registered in {@link BodyTypes}; the loader never names one.
+ */
+public interface BodyType {
+    /** The word after {@code type:}. */
+    String name();
+
+    /**
+     * The keys this type accepts under the body besides {@code type} (checked before {@link #build} is called:
+     * any other key is refused with a "did you mean"). The docs' JSON Schema lists the same keys.
+     */
+    List<String> keys();
+
+    /**
+     * Reads the body's keys through {@code ctx} (its {@link BodyContext#keys() reader}, its units and files) and
+     * adds the body to {@code topology}, which is empty and the body's own. Bad values are refused with
+     * {@link SceneException#at}, naming the key.
+     *
+     * @return the body's vertices: {@code vertexNodes[v]} is the node of mesh vertex (or index) v, which index
+     *         lists and label files select by; null when they are the topology's nodes in order
+     */
+    int[] build(BodyContext ctx, Topology topology);
+
+    /** The zone models this type supports ({@code zones:} with {@code model:}); none by default. */
+    default List<String> zoneModels() {
+        return List.of();
+    }
+
+    /** The keys of a zone's {@code material:} map for this type; none by default. */
+    default List<String> zoneMaterialKeys() {
+        return List.of();
+    }
+
+    /**
+     * Gives {@code nodes} of a body this type built the zone's {@code model} (one of {@link #zoneModels()}),
+     * after every body is built and every region resolved, before the conditions. Refusals name the zone
+     * ({@link ZoneContext#node()}).
+     */
+    default void applyZone(ZoneContext zone, Topology topology, java.util.BitSet nodes) {
+        throw SceneException.at(zone.node(), "body type '" + name() + "' has no zones");
+    }
+}

@@ -1,0 +1,17 @@
+package org.tensim.scene.file;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.tensim.scene.conditions.TimeLaw;
+
+/**
+ * A scene file as loaded by {@link SceneLoader}: its bodies (each with its topology, conditions applied), its
+ * named laws and regions (resolved to nodes), its probes and its run settings. Every value is in SI.
+ *
+ * @param file      the scene file
+ * @param overrides the {@code --set} options applied, in order
+ */
+public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
+        Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run) {
+}

@@ -1,0 +1,135 @@
+package org.tensim.scene.file;
+
+import java.util.BitSet;
+import java.util.List;
+import java.util.Map;
+import org.tensim.model.ForceLaw;
+import org.tensim.model.Node;
+import org.tensim.model.Vec3;
+import org.tensim.scene.conditions.TimeLaw;
+
+/**
+ * Reads a scene's {@code conditions:} list and applies each to the bodies' topologies:
+ * <pre>
+ * conditions:
+ *   - {type: fixed, region: bottom}
+ *   - {type: force, region: top, direction: [0, -1, 0], magnitude: 400 N, law: wave}
+ *   - {type: gravity, acceleration: [0, -9.81, 0], bodies: [liver]}
+ *   - {type: motion, region: clamp, displacement: [0, 5 mm, 0], law: start}
+ * </pre>
+ * A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
+ * motion moves every node of the region to {@code rest + displacement * law(t)}. The law is a name from
+ * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent).
+ */
+public final class SceneConditions {
+    /** The condition types. */
+    public static final List<String> TYPES = List.of("fixed", "force", "gravity", "motion");
+    /** The keys of each type. */
+    public static final Map<String, List<String>> KEYS = Map.of(
+            "fixed", List.of("type", "region"),
+            "force", List.of("type", "region", "direction", "magnitude", "law"),
+            "gravity", List.of("type", "acceleration", "bodies"),
+            "motion", List.of("type", "region", "displacement", "law"));
+
+    private SceneConditions() {
+    }
+
+    /** Applies every condition of the list (absent: none). */
+    public static void apply(SceneNode list, Map<String, SceneBody> bodies, Map<String, SceneRegions.Region> regions,
+            Map<String, TimeLaw> laws, SceneUnits u) {
+        if (list == null) {
+            return;
+        }
+        if (!list.isList()) {
+            throw SceneException.at(list, "expected a list of conditions (- {type: fixed, region: ...}), got "
+                    + list.describe());
+        }
+        for (SceneNode c : list.items()) {
+            if (!c.isMap()) {
+                throw SceneException.at(c, "expected a condition {type: ..., ...}, got " + c.describe());
+            }
+            String type = TimeLaws.typeOf(c, TYPES);
+            MapReader r = new MapReader(c, KEYS.get(type));
+            if (type.equals("gravity")) {
+                double[] g = r.vector("acceleration", QuantityKind.ACCELERATION, u);
+                SceneNode names = r.optional("bodies");
+                List<SceneNode> items = names == null ? null : names.isList() ? names.items() : List.of(names);
+                for (SceneBody b : bodies.values()) {
+                    boolean on = items == null;
+                    for (int i = 0; items != null && i < items.size(); i++) {
+                        on |= SceneCheck.bodyName(items.get(i), bodies).equals(b.name());
+                    }
+                    if (on) {
+                        b.topology().setGravity(new Vec3(g[0], g[1], g[2]));
+                    }
+                }
+                continue;
+            }
+            SceneRegions.Region region = region(r.scalar("region"), regions);
+            TimeLaw law = r.has("law") ? law(r.scalar("law"), laws) : TimeLaw.one();
+            for (Map.Entry<String, BitSet> e : region.nodes().entrySet()) {
+                SceneBody b = bodies.get(e.getKey());
+                try {
+                    applyTo(type, r, b, e.getValue(), law, u);
+                } catch (IllegalStateException ex) {
+                    throw SceneException.at(c, ex.getMessage() + " (body '" + b.name() + "', region '"
+                            + region.name() + "')");
+                }
+            }
+        }
+    }
+
+    private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u) {
+        List<Node> all = b.topology().nodes();
+        if (type.equals("fixed")) {
+            nodes.stream().forEach(i -> all.get(i).fix());
+        } else if (type.equals("force")) {
+            double[] dir = r.vector("direction", QuantityKind.NUMBER, u);
+            Vec3 d = new Vec3(dir[0], dir[1], dir[2]);
+            if (!(d.norm() > 0)) {
+                throw SceneException.at(r.node().get("direction"), "the direction must not be zero");
+            }
+            double m = r.nonNegative("magnitude", QuantityKind.FORCE, u, Double.NaN);
+            // As ForceLaw.sinusoid writes its force: unit direction times the magnitude, then times the law.
+            Vec3 unit = d.normalized();
+            double fx = unit.x() * m;
+            double fy = unit.y() * m;
+            double fz = unit.z() * m;
+            ForceLaw f = (t, out, o) -> {
+                double s = law.value(t);
+                out[o] += fx * s;
+                out[o + 1] += fy * s;
+                out[o + 2] += fz * s;
+            };
+            nodes.stream().forEach(i -> b.topology().applyForce(all.get(i), f));
+        } else {
+            double[] dv = r.vector("displacement", QuantityKind.LENGTH, u);
+            nodes.stream().forEach(i -> all.get(i).drive((t, rest, out, o) -> {
+                double s = law.value(t);
+                out[o] = rest.x() + dv[0] * s;
+                out[o + 1] = rest.y() + dv[1] * s;
+                out[o + 2] = rest.z() + dv[2] * s;
+            }));
+        }
+    }
+
+    static SceneRegions.Region region(SceneNode name, Map<String, SceneRegions.Region> regions) {
+        SceneRegions.Region r = regions.get(name.text());
+        if (r == null) {
+            throw SceneException.at(name, name.describe() + " is not a region of this file"
+                    + DidYouMean.suggest(name.text(), regions.keySet()) + (regions.isEmpty() ? " (it has none)"
+                    : " (regions: " + String.join(", ", regions.keySet()) + ")"));
+        }
+        return r;
+    }
+
+    private static TimeLaw law(SceneNode name, Map<String, TimeLaw> laws) {
+        TimeLaw l = laws.get(name.text());
+        if (l == null) {
+            throw SceneException.at(name, name.describe() + " is not a law of this file"
+                    + DidYouMean.suggest(name.text(), laws.keySet()) + (laws.isEmpty() ? " (it has none)"
+                    : " (laws: " + String.join(", ", laws.keySet()) + ")"));
+        }
+        return l;
+    }
+}

@@ -1,0 +1,103 @@
+package org.tensim.scene.file;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.tensim.model.Topology;
+import org.tensim.scene.conditions.TimeLaw;
+
+/**
+ * Reads a scene file (docs/scenes.md; schema docs/scene.schema.json) into a {@link Scene}: the tree with every
+ * value's place ({@link SceneTree}), the {@code --set} overrides ({@link Overrides}), then, in this order, the
+ * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the probes and
+ * the run settings. Every refusal is a {@link SceneException} naming file, line, column and key path.
+ */
+public final class SceneLoader {
+    /** The format version this loader reads. */
+    public static final int VERSION = 1;
+    /** The top-level keys. */
+    public static final List<String> KEYS = List.of("version", "description", "units", "bodies", "laws", "regions",
+            "zones", "conditions", "probes", "run");
+
+    private SceneLoader() {
+    }
+
+    /** Loads a scene file without overrides. */
+    public static Scene load(Path file) {
+        return load(file, List.of());
+    }
+
+    /** Loads a scene file with {@code --set path=value} overrides applied to its tree first. */
+    public static Scene load(Path file, List<String> overrides) {
+        Path parent = file.toAbsolutePath().getParent();
+        return load(file, SceneTree.read(file), parent == null ? Path.of(".") : parent, overrides);
+    }
+
+    /**
+     * Loads a scene from its bytes (a scene kept as a resource), {@code name} naming it in messages and
+     * {@code folder} the folder its relative file names are resolved against.
+     */
+    public static Scene load(String name, byte[] bytes, Path folder, List<String> overrides) {
+        return load(Path.of(name), SceneTree.read(name, bytes), folder, overrides);
+    }
+
+    private static Scene load(Path file, SceneNode root, Path folder, List<String> overrides) {
+        Overrides.apply(root, overrides);
+        MapReader top = new MapReader(root, KEYS);
+        version(top);
+        if (top.has("description")) {
+            top.string("description");
+        }
+        SceneUnits units = SceneUnits.read(top.optional("units"));
+        Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
+        Map<String, SceneBody> bodies = bodies(top, units, folder);
+        Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder);
+        SceneZones.apply(top.optional("zones"), bodies, regions, units);
+        SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units);
+        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions);
+        RunSettings run = RunSettings.read(top, units);
+        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run);
+    }
+
+    private static void version(MapReader top) {
+        SceneNode v = top.scalar("version");
+        if (!v.text().strip().equals(Integer.toString(VERSION))) {
+            throw SceneException.at(v, v.describe() + " is not a version this program reads (expected "
+                    + VERSION + ")");
+        }
+    }
+
+    private static Map<String, SceneBody> bodies(MapReader top, SceneUnits units, Path folder) {
+        SceneNode block = top.required("bodies");
+        if (!block.isMap() || block.entries().isEmpty()) {
+            throw SceneException.at(block, "expected a map of named bodies (at least one), got " + block.describe());
+        }
+        Map<String, SceneBody> bodies = new LinkedHashMap<>();
+        for (Map.Entry<String, SceneNode> e : block.entries().entrySet()) {
+            SceneNode b = e.getValue();
+            if (!b.isMap()) {
+                throw SceneException.at(b, "expected a body {type: ..., ...}, got " + b.describe());
+            }
+            String typeName = TimeLaws.typeOf(b, BodyTypes.names());
+            BodyType type = BodyTypes.get(typeName);
+            java.util.List<String> keys = new java.util.ArrayList<>(type.keys());
+            keys.add(0, "type");
+            MapReader r = new MapReader(b, keys);
+            Topology t = new Topology();
+            int[] vertices;
+            try {
+                vertices = type.build(new BodyContext(e.getKey(), r, units, folder), t);
+            } catch (SceneException ex) {
+                throw ex;
+            } catch (IllegalArgumentException ex) {
+                throw SceneException.at(b, ex.getMessage());
+            }
+            if (t.nodeCount() == 0) {
+                throw SceneException.at(b, "body '" + e.getKey() + "' has no node");
+            }
+            bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b));
+        }
+        return bodies;
+    }
+}

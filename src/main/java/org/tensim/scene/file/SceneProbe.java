@@ -1,0 +1,94 @@
+package org.tensim.scene.file;
+
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * What a run writes, one CSV column per value, units in the names:
+ * <ul>
+ * <li>{@code {body: b, node: 13}}: the node's displacement, {@code NAME_dx_m, NAME_dy_m, NAME_dz_m};</li>
+ * <li>{@code {body: b, region: r}} (or {@code quantity: mean}): the mean displacement of the region's nodes,
+ * {@code NAME_mean_dx_m, ...};</li>
+ * <li>{@code {body: b, region: r, quantity: extents}}: the bounding box of the region's current positions,
+ * {@code NAME_min_x_m, NAME_max_x_m, NAME_min_y_m, ...}.</li>
+ * </ul>
+ * {@code body} may be left out when the scene has one body.
+ *
+ * @param name     the probe's name (its key under {@code probes:}), the columns' prefix
+ * @param body     the body's name
+ * @param nodes    the nodes it reads
+ * @param quantity displacement (one node), mean or extents
+ */
+public record SceneProbe(String name, String body, int[] nodes, String quantity) {
+    /** The keys of a probe. */
+    public static final List<String> KEYS = List.of("body", "node", "region", "quantity");
+    /** The quantities of a region probe. */
+    public static final List<String> REGION_QUANTITIES = List.of("mean", "extents");
+
+    /** The probe's CSV columns. */
+    public List<String> columns() {
+        List<String> c = new ArrayList<>();
+        if (quantity.equals("extents")) {
+            for (String a : List.of("x", "y", "z")) {
+                c.add(name + "_min_" + a + "_m");
+                c.add(name + "_max_" + a + "_m");
+            }
+        } else {
+            String p = quantity.equals("mean") ? name + "_mean_" : name + "_";
+            for (String a : List.of("dx", "dy", "dz")) {
+                c.add(p + a + "_m");
+            }
+        }
+        return c;
+    }
+
+    /** Reads the {@code probes:} block (absent: none). */
+    static List<SceneProbe> read(SceneNode block, Map<String, SceneBody> bodies,
+            Map<String, SceneRegions.Region> regions) {
+        List<SceneProbe> out = new ArrayList<>();
+        if (block == null) {
+            return out;
+        }
+        if (!block.isMap()) {
+            throw SceneException.at(block, "expected a map of named probes, got " + block.describe());
+        }
+        for (Map.Entry<String, SceneNode> e : block.entries().entrySet()) {
+            MapReader r = new MapReader(e.getValue(), KEYS);
+            String body;
+            if (r.has("body")) {
+                body = SceneCheck.bodyName(r.scalar("body"), bodies);
+            } else if (bodies.size() == 1) {
+                body = bodies.keySet().iterator().next();
+            } else {
+                throw SceneException.at(r.node(), "missing required key 'body' (the scene has "
+                        + bodies.size() + " bodies: " + String.join(", ", bodies.keySet()) + ")");
+            }
+            if (r.has("node") == r.has("region")) {
+                throw SceneException.at(r.node(), "give either node (an index) or region (a name)");
+            }
+            if (r.has("node")) {
+                SceneNode n = r.scalar("node");
+                long k = MapReader.integer(n, 0);
+                SceneBody b = bodies.get(body);
+                if (k >= b.topology().nodeCount()) {
+                    throw SceneException.at(n, "node " + k + " does not exist: body '" + body + "' has "
+                            + b.topology().nodeCount() + " nodes");
+                }
+                r.choice("quantity", List.of("displacement"), "displacement");
+                out.add(new SceneProbe(e.getKey(), body, new int[] {(int) k}, "displacement"));
+            } else {
+                SceneRegions.Region reg = SceneConditions.region(r.scalar("region"), regions);
+                BitSet s = reg.in(body);
+                if (s == null) {
+                    throw SceneException.at(r.node().get("region"), "region '" + reg.name() + "' is not on body '"
+                            + body + "'");
+                }
+                out.add(new SceneProbe(e.getKey(), body, s.stream().toArray(),
+                        r.choice("quantity", REGION_QUANTITIES, "mean")));
+            }
+        }
+        return out;
+    }
+}
