@@ -22,6 +22,7 @@ import org.tensim.model.Topology;
 import org.tensim.scene.volume.VolumeBody;
 import org.tensim.scene.volume.VolumeReport;
 import org.tensim.solver.SystemState;
+import org.tensim.scene.volume.BoxTets;
 import org.tensim.scene.volume.SpringFit;
 import org.tensim.scene.volume.VolumeParameters;
 import picocli.CommandLine.Command;
@@ -49,8 +50,15 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     @Option(names = "--block-cells", split = ",", paramLabel = "N[,N...]",
             description = "cells across the block's side; a half cell more leaves its last layer half full, a"
-                    + " clipped lattice (default: ${DEFAULT-VALUE})")
-    List<Double> blockCells = List.of(2.5, 4.5, 8.5);
+                    + " clipped lattice (default: 2.5,4.5,8.5; with --tets, whole cubes: 2,4,8)")
+    List<Double> blockCells;
+
+    @Option(names = "--tets", arity = "0..1", fallbackValue = "six", paramLabel = "SPLIT",
+            description = "a structured tetrahedral mesh instead of the lattice, its cubes cut in six (the default) or"
+                    + " five tets, its springs by Lloyd et al.'s identification (the isotropic fit only)")
+    String tetSplit;
+
+    private BoxTets.Split tets;
 
     @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE})")
     double youngPa = 1e3;
@@ -100,6 +108,27 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (tetSplit != null) {
+            switch (tetSplit.trim().toLowerCase(java.util.Locale.ROOT)) {
+                case "six":
+                    tets = BoxTets.Split.SIX;
+                    break;
+                case "five":
+                    tets = BoxTets.Split.FIVE;
+                    break;
+                default:
+                    throw new IllegalArgumentException("--tets must be 'six' or 'five', got '" + tetSplit + "'");
+            }
+        }
+        if (blockCells == null) {
+            blockCells = tets != null ? List.of(2.0, 4.0, 8.0) : List.of(2.5, 4.5, 8.5);
+        }
+        if (tets != null && (fits.size() != 1 || SpringFit.parse(fits.get(0)) != SpringFit.ISOTROPIC)) {
+            fits = List.of("isotropic");
+        }
+        if (tets != null && blockCells.stream().anyMatch(c -> c != Math.rint(c))) {
+            throw new IllegalArgumentException("--tets needs whole --block-cells, got " + blockCells);
+        }
         List<VolumeParameters> params = new ArrayList<>();
         for (String f : fits) {
             params.add(VolumeParameters.of(0.01, youngPa, poisson, densityKgPerM3).withFit(SpringFit.parse(f)));
@@ -181,7 +210,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                         "axial_strain", "expected_strain", "strain_error", "lateral_strain", "measured_poisson",
                         "model_poisson", "requested_poisson", "cg_iterations"), 1)) {
             for (VolumeParameters p : params) {
-                String fit = p.fit().key();
+                String fit = label(p);
                 Map<String, Object> e = new LinkedHashMap<>();
                 e.put("model_poisson", p.material().modelPoisson());
                 e.put("shear_modulus_pa", p.material().shearModulusPa());
@@ -197,12 +226,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     }
 
     private Map<String, Object> cantilever(VolumeParameters p, CsvWriter csv, XYChart chart) throws IOException {
-        String fit = p.fit().key();
+        String fit = label(p);
         List<Double> q = new ArrayList<>();
         List<Double> err = new ArrayList<>();
         List<Double> size = new ArrayList<>();
         for (int n : cantileverCells) {
-            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n, slidingRoot);
+            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n, slidingRoot, tets);
             csv.rowText(fit, Integer.toString(n), Double.toString(c.cellM()), Integer.toString(c.nodes()),
                     Integer.toString(c.springs()), Double.toString(c.deflectionM()),
                     Double.toString(c.eulerBernoulliM()), Double.toString(c.timoshenkoM()),
@@ -236,12 +265,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     }
 
     private Map<String, Object> block(VolumeParameters p, CsvWriter csv, XYChart chart) throws IOException {
-        String fit = p.fit().key();
+        String fit = label(p);
         List<Double> err = new ArrayList<>();
         List<Double> nu = new ArrayList<>();
         List<Double> size = new ArrayList<>();
         for (double n : blockCells) {
-            VolumeStudy.Block b = VolumeStudy.block(p, SIDE_M, PRESSURE_PA, n);
+            VolumeStudy.Block b = VolumeStudy.block(p, SIDE_M, PRESSURE_PA, n, tets);
             csv.rowText(fit, Double.toString(n), Double.toString(b.cellM()), Integer.toString(b.nodes()),
                     Double.toString(b.axialStrain()), Double.toString(b.expectedStrain()),
                     Double.toString(b.strainError()), Double.toString(b.lateralStrain()),
@@ -269,6 +298,11 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         System.out.println(fit + " block: order " + order);
         plot(chart, fit + " block", size, err);
         return m;
+    }
+
+    /** The name of a series: the fit's, or "tets" for the tetrahedral variant. */
+    private String label(VolumeParameters p) {
+        return tets != null ? "tets-" + tets.name().toLowerCase(java.util.Locale.ROOT) : p.fit().key();
     }
 
     private static void plot(XYChart chart, String name, List<Double> size, List<Double> err) {

@@ -46,6 +46,7 @@ public final class VtkUnstructuredReader {
             int[] connectivity = null;
             int[] cellLine = null;
             int cells = -1;
+            boolean types = false;
             for (String s = in.next(); s != null; s = in.next()) {
                 String key = s.toUpperCase(Locale.ROOT);
                 if (key.equals("POINTS")) {
@@ -131,6 +132,7 @@ public final class VtkUnstructuredReader {
                                     connectivity[from + 3], cellLine[i]);
                         }
                     }
+                    types = true;
                     break;
                 } else if (points < 0) {
                     throw in.error("found '" + s + "'; expected POINTS, CELLS and CELL_TYPES");
@@ -138,9 +140,9 @@ public final class VtkUnstructuredReader {
                     throw in.error("found '" + s + "' before CELL_TYPES; expected CELLS and CELL_TYPES");
                 }
             }
-            if (points < 0 || offsets == null) {
-                throw in.error("end of file without " + (points < 0 ? "POINTS" : "CELLS") + "; expected POINTS,"
-                        + " CELLS and CELL_TYPES");
+            if (points < 0 || offsets == null || !types) {
+                throw in.error("end of file without " + (points < 0 ? "POINTS" : offsets == null ? "CELLS"
+                        : "CELL_TYPES") + "; expected POINTS, CELLS and CELL_TYPES");
             }
         }
         return b.build(units);
