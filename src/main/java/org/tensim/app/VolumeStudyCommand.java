@@ -53,9 +53,9 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                     + " clipped lattice (default: 2.5,4.5,8.5; with --tets, whole cubes: 2,4,8)")
     List<Double> blockCells;
 
-    @Option(names = "--tets", arity = "0..1", fallbackValue = "six", paramLabel = "SPLIT",
-            description = "a structured tetrahedral mesh instead of the lattice, its cubes cut in six (the default) or"
-                    + " five tets, its springs by Lloyd et al.'s identification (the isotropic fit only)")
+    @Option(names = "--tets", arity = "0..1", fallbackValue = "five", paramLabel = "SPLIT",
+            description = "a structured tetrahedral mesh instead of the lattice, its cubes cut in five tets (the"
+                    + " default) or six, its springs by Lloyd et al.'s identification (the isotropic fit only)")
     String tetSplit;
 
     private BoxTets.Split tets;
