@@ -17,6 +17,8 @@ import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.TetMesh;
+import org.tensim.io.mesh.TetMeshReaders;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.scene.volume.VolumeBody;
@@ -80,8 +82,8 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     boolean slidingRoot;
 
     @Option(names = "--mesh", split = ",", paramLabel = "FILE[,FILE...]",
-            description = "closed surfaces (OBJ, STL, OFF) to fill at each --cell size, reporting the build instead of"
-                    + " the known answers")
+            description = "closed surfaces (OBJ, STL, OFF) to fill at each --cell size, or tetrahedral meshes (Gmsh"
+                    + " .msh, legacy VTK .vtk) to build as they are, reporting the builds instead of the known answers")
     List<Path> meshes = List.of();
 
     @Option(names = "--units", paramLabel = "UNITS", description = "length unit of --mesh files: mm or m (default:"
@@ -124,6 +126,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             blockCells = tets != null ? List.of(2.0, 4.0, 8.0) : List.of(2.5, 4.5, 8.5);
         }
         if (tets != null && (fits.size() != 1 || SpringFit.parse(fits.get(0)) != SpringFit.ISOTROPIC)) {
+            System.out.println("--tets: the isotropic fit only (the axial fit needs a lattice's axes)");
             fits = List.of("isotropic");
         }
         if (tets != null && blockCells.stream().anyMatch(c -> c != Math.rint(c))) {
@@ -166,23 +169,27 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                 "crossed_cells", "boundary_edges", "max_winding_deviation", "lattice_volume_m3", "surface_volume_m3",
                 "critical_step_s", "build_s"), 1)) {
             for (Path file : meshes) {
-                TriangleMesh mesh = MeshLoader.load(file, u).mesh();
-                for (double c : cells) {
+                boolean tetFile = isTetMesh(file);
+                TriangleMesh mesh = tetFile ? null : MeshLoader.load(file, u).mesh();
+                TetMesh tetMesh = tetFile ? TetMeshReaders.read(file, u).mesh() : null;
+                for (double c : tetFile ? List.of(Double.NaN) : cells) {
                     long t0 = System.nanoTime();
                     Topology t = new Topology();
-                    VolumeBody body = VolumeBody.build(t, mesh, params.get(0).withCellSize(c), file.toString());
+                    VolumeBody body = tetFile ? VolumeBody.buildTets(t, tetMesh, params.get(0), file.toString())
+                            : VolumeBody.build(t, mesh, params.get(0).withCellSize(c), file.toString());
                     double seconds = (System.nanoTime() - t0) * 1e-9;
                     VolumeReport r = body.report();
                     // the leapfrog limit 2 / w_max of the free lattice (power iteration): what an explicit step meets
                     double critical = SystemState.compile(t).criticalTimeStep().stepSeconds();
-                    csv.rowText(file.getFileName().toString(), Double.toString(c), Integer.toString(r.nodes()),
+                    double cell = tetFile ? r.cellSizeM() : c;
+                    csv.rowText(file.getFileName().toString(), Double.toString(cell), Integer.toString(r.nodes()),
                             Integer.toString(r.springs()), Integer.toString(r.cells()),
                             Integer.toString(r.crossedCells()), Integer.toString(r.boundaryEdges()),
                             Double.toString(r.maxWindingDeviation()), Double.toString(r.latticeVolumeM3()),
                             Double.toString(r.surfaceVolumeM3()), Double.toString(critical),
                             Double.toString(seconds));
                     System.out.printf("%s at %.3g mm (%.1f s): %s; critical (leapfrog) step %.3g ms%n",
-                            file.getFileName(), c * 1e3, seconds, r.describe(), critical * 1e3);
+                            file.getFileName(), cell * 1e3, seconds, r.describe(), critical * 1e3);
                     Map<String, Object> m = new LinkedHashMap<>();
                     m.put("mesh", file.toString());
                     m.put("build_s", seconds);
@@ -298,6 +305,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         System.out.println(fit + " block: order " + order);
         plot(chart, fit + " block", size, err);
         return m;
+    }
+
+    /** Whether {@code file} is a volume mesh (Gmsh .msh, legacy VTK .vtk) rather than a surface. */
+    private static boolean isTetMesh(Path file) {
+        String n = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        return n.endsWith(".msh") || n.endsWith(".vtk");
     }
 
     /** The name of a series: the fit's, or "tets" for the tetrahedral variant. */

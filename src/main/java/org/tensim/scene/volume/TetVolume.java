@@ -82,7 +82,7 @@ final class TetVolume {
         double[] b = surface.bounds();
         VolumeReport r = new VolumeReport(surface.vertexCount(), surface.triangleCount(), surface.boundaryEdgeCount(),
                 Double.NaN, false, lengthSum / edges, mesh.tetCount(), mesh.tetCount(), 0, n, springs, volume,
-                Math.abs(surface.signedVolume()), volume * p.densityKgPerM3(), 0.25, p.poisson(), p.fit());
+                Math.abs(surface.signedVolume()), volume * p.densityKgPerM3(), 0.25, p.poisson(), p.fit(), true);
         return new VolumeBody(first, n, m.build(), surface, r, new double[] {b[0], b[1], b[2]},
                 fit.negativeDropped());
     }

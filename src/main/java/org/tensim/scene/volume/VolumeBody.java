@@ -131,7 +131,7 @@ public final class VolumeBody {
                 clip.worstPoint() == null ? Double.NaN : clip.maxWindingDeviation(), clip.inward(), h,
                 (long) cellCount, kept, clip.crossedCells(), nodes, springs, volume,
                 Math.abs(surface.signedVolume()), volume * p.densityKgPerM3(), mat.modelPoisson(), p.poisson(),
-                p.fit());
+                p.fit(), false);
         return new VolumeBody(first, nodes, mapping, surface, r, o.clone(), 0);
     }
 
