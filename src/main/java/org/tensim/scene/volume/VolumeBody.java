@@ -332,14 +332,17 @@ public final class VolumeBody {
     }
 
     /**
-     * Tet edges left without a spring because their tets' fits were negative there ({@link TetSprings}); 0 for a
-     * lattice.
+     * Tet edges (counted once per tet) whose share was dropped because the tet's fit made it negative
+     * ({@link TetSprings}); 0 for a lattice.
      */
     public int droppedEdges() {
         return droppedEdges;
     }
 
-    /** The lattice's lowest corner (a tet mesh's lowest bounding corner), m (node positions are {@code origin + (i, j, k) h}). */
+    /**
+     * The lattice's lowest corner, m (node positions are {@code origin + (i, j, k) h}); a tet mesh's lowest bounding
+     * corner.
+     */
     public double[] originM() {
         return originM.clone();
     }

@@ -65,8 +65,8 @@ public record VolumeReport(int surfaceVertices, int surfaceTriangles, int bounda
         if (tetrahedral) {
             return String.format(Locale.ROOT, "volume: %d nodes, %d springs, %d tets of mean edge %.3g mm; volume"
                     + " %.4g cm^3 (its boundary encloses %.4g cm^3), mass %.4g kg; boundary %d vertices, %d triangles,"
-                    + " %d open edges; springs fitted to the isotropic nu %.3f (asked %.3f; the network's own depends on"
-                    + " the mesh, docs/volume.md)", nodes, springs, cells, cellSizeM * 1e3,
+                    + " %d open edges; springs fitted to the isotropic nu %.3f (asked %.3f; the network's own depends"
+                    + " on the mesh, docs/volume.md)", nodes, springs, cells, cellSizeM * 1e3,
                     latticeVolumeM3 * 1e6, surfaceVolumeM3 * 1e6, massKg, surfaceVertices, surfaceTriangles,
                     boundaryEdges, modelPoisson, requestedPoisson);
         }
