@@ -74,8 +74,8 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     double densityKgPerM3 = 1000;
 
     @Option(names = "--fits", split = ",", paramLabel = "FIT[,FIT...]",
-            description = "spring fits: isotropic, axial (default: ${DEFAULT-VALUE})")
-    List<String> fits = List.of("isotropic", "axial");
+            description = "spring fits: isotropic, axial (default: both; with --tets, isotropic)")
+    List<String> fits;
 
     @Option(names = "--sliding-root", description = "hold the cantilever's root only along the beam (and its"
             + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does")
@@ -125,9 +125,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         if (blockCells == null) {
             blockCells = tets != null ? List.of(2.0, 4.0, 8.0) : List.of(2.5, 4.5, 8.5);
         }
-        if (tets != null && (fits.size() != 1 || SpringFit.parse(fits.get(0)) != SpringFit.ISOTROPIC)) {
-            System.out.println("--tets: the isotropic fit only (the axial fit needs a lattice's axes)");
-            fits = List.of("isotropic");
+        if (fits == null) {
+            fits = tets != null ? List.of("isotropic") : List.of("isotropic", "axial");
+        }
+        if (tets != null && fits.stream().anyMatch(f -> SpringFit.parse(f) != SpringFit.ISOTROPIC)) {
+            throw new IllegalArgumentException("--tets takes the isotropic fit only (the axial fit needs a lattice's"
+                    + " axes), got --fits " + String.join(",", fits));
         }
         if (tets != null && blockCells.stream().anyMatch(c -> c != Math.rint(c))) {
             throw new IllegalArgumentException("--tets needs whole --block-cells, got " + blockCells);
@@ -284,9 +287,10 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                     Double.toString(b.measuredPoisson()), Double.toString(b.modelPoisson()),
                     Double.toString(b.requestedPoisson()), Integer.toString(b.iterations()));
             System.out.printf("%-9s block %5.1f cells across (%6d nodes): strain %.6g against %.6g (%+.3f %%),"
-                    + " lateral %.6g: nu %.4f (the lattice's %.3f, asked %.3f)%n", fit, n, b.nodes(),
+                    + " lateral %.6g: nu %.4f (the %s %.3f, asked %.3f)%n", fit, n, b.nodes(),
                     b.axialStrain(), b.expectedStrain(), 100 * b.strainError(), b.lateralStrain(),
-                    b.measuredPoisson(), b.modelPoisson(), b.requestedPoisson());
+                    b.measuredPoisson(), tets != null ? "springs' target" : "lattice's", b.modelPoisson(),
+                    b.requestedPoisson());
             err.add(b.strainError());
             nu.add(b.measuredPoisson());
             size.add(1 / n);
@@ -300,9 +304,18 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             order.add(VolumeStudy.orderAgainst(err.get(i - 1), err.get(i), size.get(i - 1), size.get(i)));
         }
         m.put("order", order);
+        // from three resolutions in a constant ratio, needing no exact answer (the tets converge to their own)
+        List<Double> observed = new ArrayList<>();
+        for (int i = 2; i < err.size(); i++) {
+            double ratio = size.get(i - 1) / size.get(i);
+            if (Math.abs(size.get(i - 2) / size.get(i - 1) - ratio) < 1e-9 * ratio) {
+                observed.add(VolumeStudy.observedOrder(err.get(i - 2), err.get(i - 1), err.get(i), ratio));
+            }
+        }
+        m.put("observed_order", observed);
         m.put("measured_poisson", nu);
         m.put("requested_poisson", p.poisson());
-        System.out.println(fit + " block: order " + order);
+        System.out.println(fit + " block: order " + order + ", observed order " + observed);
         plot(chart, fit + " block", size, err);
         return m;
     }

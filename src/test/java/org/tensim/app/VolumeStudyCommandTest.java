@@ -79,6 +79,8 @@ class VolumeStudyCommandTest {
         assertEquals(0.172, tets.get("block").get("measured_poisson").get(1).asDouble(), 0.005);
         String[] bad = run("volume-study", "--tets", "seven", "--out", dir.toString());
         assertTrue(bad[2].contains("--tets must be 'six' or 'five', got 'seven'"), bad[2]);
+        String[] axial = run("volume-study", "--tets", "--fits", "axial", "--out", dir.toString());
+        assertTrue(axial[2].contains("--tets takes the isotropic fit only"), axial[2]);
         String[] half = run("volume-study", "--tets", "--block-cells", "2.5", "--out", dir.toString());
         assertTrue(half[2].contains("--tets needs whole --block-cells"), half[2]);
         Path msh = Path.of(VolumeStudyCommandTest.class.getResource("/org/tensim/io/mesh/cube5.msh").toURI());

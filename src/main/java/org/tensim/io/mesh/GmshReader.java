@@ -114,6 +114,9 @@ public final class GmshReader {
             }
             boolean parametric = !e[2].equals("0");
             int n = in.integer(e[3], "the number of nodes in the block");
+            if (n < 0) {
+                throw in.error("a node block of " + n + " nodes; expected a count >= 0");
+            }
             int[] tags = new int[n];
             for (int i = 0; i < n; i++) {
                 String[] t = tokens(in, n + " node tags (" + i + " read)");

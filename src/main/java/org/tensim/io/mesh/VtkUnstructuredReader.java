@@ -61,6 +61,10 @@ public final class VtkUnstructuredReader {
                 } else if (key.equals("CELLS")) {
                     int first = in.integer("the number of cells");
                     int size = in.integer("the size of the cell list");
+                    if (first < 0 || size < first) {
+                        throw in.error("CELLS " + first + " " + size + "; expected a count >= 0 and a list size at"
+                                + " least as large");
+                    }
                     String next = in.need("the cells");
                     if (next.equalsIgnoreCase("OFFSETS")) {
                         in.need("the offsets' data type");
@@ -68,6 +72,14 @@ public final class VtkUnstructuredReader {
                         offsets = new int[first];
                         for (int i = 0; i < first; i++) {
                             offsets[i] = in.integer("offset " + i);
+                            if (i == 0 ? offsets[i] != 0 : offsets[i] < offsets[i - 1] || offsets[i] > size) {
+                                throw in.error("offset " + i + " is " + offsets[i] + "; expected offsets from 0,"
+                                        + " non-decreasing, up to the connectivity's size " + size);
+                            }
+                        }
+                        if (first < 1 || offsets[first - 1] != size) {
+                            throw in.error("the offsets end at " + (first < 1 ? "nothing" : offsets[first - 1])
+                                    + "; expected the connectivity's size " + size);
                         }
                         String c = in.need("CONNECTIVITY");
                         if (!c.equalsIgnoreCase("CONNECTIVITY")) {

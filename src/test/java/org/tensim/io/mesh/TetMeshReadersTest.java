@@ -101,6 +101,9 @@ class TetMeshReadersTest {
                 "CELLS 6 28\n3 1 2 4"));
         assertEquals("line 10", v.location());
         assertTrue(v.getMessage().contains("with 3 points; expected 4"), v.getMessage());
+        MeshFormatException offsets = refused("offsets.vtk", text("cube5-v51.vtk").replace("20 23", "20 30"));
+        assertEquals("line 11", offsets.location());
+        assertTrue(offsets.getMessage().contains("offset 6 is 30"), offsets.getMessage());
         MeshFormatException unknown = refused("unknown.msh", text("cube5.msh").replace("1 2 3 5\n", "1 2 3 42\n"));
         assertEquals("line 26", unknown.location());
         assertTrue(unknown.getMessage().contains("tet 1 refers to node 42"), unknown.getMessage());
