@@ -1,5 +1,6 @@
 package org.tensim.analysis;
 
+import org.tensim.io.mesh.TetMesh;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 import org.tensim.model.Topology;
@@ -84,6 +85,22 @@ public final class VolumeStudy {
     private static final java.util.function.Function<VolumeParameters, LatticeMaterial> TET_MATERIAL =
         q -> new LatticeMaterial(q.youngPa(), q.poisson(), SpringFit.ISOTROPIC);
 
+    /**
+     * Which tetrahedral mesh a study builds: the structured mesh of {@link BoxTets} cut by {@code split}, its
+     * interior nodes moved by up to {@code jitter} of a cell along each axis ({@link BoxTets#jittered}, seed 1).
+     */
+    public record Tets(BoxTets.Split split, double jitter) {
+        /** The structured mesh, no jitter. */
+        public static Tets of(BoxTets.Split split) {
+            return new Tets(split, 0);
+        }
+
+        TetMesh box(double lx, double ly, double lz, int nx, int ny, int nz) {
+            TetMesh m = BoxTets.of(lx, ly, lz, nx, ny, nz, split);
+            return jitter == 0 ? m : BoxTets.jittered(m, lx / nx, jitter, 1);
+        }
+    }
+
     private VolumeStudy() {
     }
 
@@ -115,7 +132,7 @@ public final class VolumeStudy {
      * {@link VolumeBody#buildTets} instead.
      */
     public static Cantilever cantilever(VolumeParameters p, double depthM, double forceN, int cellsAcross,
-            boolean slidingRoot, BoxTets.Split tets) {
+            boolean slidingRoot, Tets tets) {
         if (slidingRoot && cellsAcross % 2 != 0) {
             throw new IllegalArgumentException("a sliding root needs an even number of cells across, got "
                     + cellsAcross);
@@ -128,8 +145,8 @@ public final class VolumeStudy {
         double h = d / cellsAcross;
         Topology t = new Topology();
         // the beam fits the lattice: every cell is full, which one sample at its centre tells
-        VolumeBody body = tets != null ? VolumeBody.buildTets(t, BoxTets.of(len, d, d, 10 * cellsAcross,
-                cellsAcross, cellsAcross, tets), p, "the cantilever") : VolumeBody.build(t, BoxSurface.of(len, d, d, h),
+        VolumeBody body = tets != null ? VolumeBody.buildTets(t, tets.box(len, d, d, 10 * cellsAcross,
+                cellsAcross, cellsAcross), p, "the cantilever") : VolumeBody.build(t, BoxSurface.of(len, d, d, h),
                 p.withCellSize(h).withFillSamples(1), "the cantilever");
         TriangleMesh surface = body.surface();
         boolean[] fixed = new boolean[3 * t.nodeCount()];
@@ -176,7 +193,7 @@ public final class VolumeStudy {
      * the structured tetrahedral mesh of {@link BoxTets} cut so ({@code cellsAcross} must then be a whole number).
      */
     public static Block block(VolumeParameters p, double sideM, double stressPa, double cellsAcross,
-            BoxTets.Split tets) {
+            Tets tets) {
         if (tets != null && cellsAcross != Math.rint(cellsAcross)) {
             throw new IllegalArgumentException("a tetrahedral block needs a whole number of cubes across, got "
                     + cellsAcross);
@@ -188,7 +205,7 @@ public final class VolumeStudy {
         double h = s / cellsAcross;
         Topology t = new Topology();
         int n = (int) Math.rint(cellsAcross);
-        VolumeBody body = tets != null ? VolumeBody.buildTets(t, BoxTets.of(s, s, s, n, n, n, tets), p, "the block")
+        VolumeBody body = tets != null ? VolumeBody.buildTets(t, tets.box(s, s, s, n, n, n), p, "the block")
                 : VolumeBody.build(t, BoxSurface.of(s, s, s, Math.min(h, s) / 2), p.withCellSize(h), "the block");
         TriangleMesh surface = body.surface();
         boolean[] fixed = new boolean[3 * t.nodeCount()];

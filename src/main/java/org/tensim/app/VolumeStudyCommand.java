@@ -60,7 +60,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                     + " default) or six, its springs by Lloyd et al.'s identification (the isotropic fit only)")
     String tetSplit;
 
-    private BoxTets.Split tets;
+    @Option(names = "--jitter", paramLabel = "FRACTION", description = "with --tets, move the mesh's interior nodes"
+            + " by up to this fraction of a cube along each axis (0 to 0.15, seeded), for tets of many shapes"
+            + " (default: ${DEFAULT-VALUE})")
+    double jitter;
+
+    private VolumeStudy.Tets tets;
 
     @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE})")
     double youngPa = 1e3;
@@ -113,14 +118,17 @@ public final class VolumeStudyCommand implements Callable<Integer> {
         if (tetSplit != null) {
             switch (tetSplit.trim().toLowerCase(java.util.Locale.ROOT)) {
                 case "six":
-                    tets = BoxTets.Split.SIX;
+                    tets = new VolumeStudy.Tets(BoxTets.Split.SIX, jitter);
                     break;
                 case "five":
-                    tets = BoxTets.Split.FIVE;
+                    tets = new VolumeStudy.Tets(BoxTets.Split.FIVE, jitter);
                     break;
                 default:
                     throw new IllegalArgumentException("--tets must be 'six' or 'five', got '" + tetSplit + "'");
             }
+        }
+        if (!(jitter >= 0 && jitter <= 0.15) || jitter > 0 && tets == null) {
+            throw new IllegalArgumentException("--jitter must be 0 to 0.15, with --tets, got " + jitter);
         }
         if (blockCells == null) {
             blockCells = tets != null ? List.of(2.0, 4.0, 8.0) : List.of(2.5, 4.5, 8.5);
@@ -328,7 +336,8 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     /** The name of a series: the fit's, or "tets" for the tetrahedral variant. */
     private String label(VolumeParameters p) {
-        return tets != null ? "tets-" + tets.name().toLowerCase(java.util.Locale.ROOT) : p.fit().key();
+        return tets != null ? "tets-" + tets.split().name().toLowerCase(java.util.Locale.ROOT)
+                + (jitter > 0 ? "-jitter" : "") : p.fit().key();
     }
 
     private static void plot(XYChart chart, String name, List<Double> size, List<Double> err) {

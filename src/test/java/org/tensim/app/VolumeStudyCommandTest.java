@@ -81,6 +81,8 @@ class VolumeStudyCommandTest {
         assertTrue(bad[2].contains("--tets must be 'six' or 'five', got 'seven'"), bad[2]);
         String[] axial = run("volume-study", "--tets", "--fits", "axial", "--out", dir.toString());
         assertTrue(axial[2].contains("--tets takes the isotropic fit only"), axial[2]);
+        String[] jitter = run("volume-study", "--jitter", "0.1", "--out", dir.toString());
+        assertTrue(jitter[2].contains("--jitter must be 0 to 0.15, with --tets, got 0.1"), jitter[2]);
         String[] half = run("volume-study", "--tets", "--block-cells", "2.5", "--out", dir.toString());
         assertTrue(half[2].contains("--tets needs whole --block-cells"), half[2]);
         Path msh = Path.of(VolumeStudyCommandTest.class.getResource("/org/tensim/io/mesh/cube5.msh").toURI());

@@ -80,4 +80,44 @@ public final class BoxTets {
         }
         return new TetMesh(xyz, tets);
     }
+
+    /**
+     * The same mesh with each node strictly inside the box moved by a uniform random offset of up to
+     * {@code fraction} of the local cell size h along each axis (seeded: the same seed gives the same mesh), the
+     * boundary's nodes kept, so that the faces stay planar: an irregular mesh of the same box, for measuring what
+     * the identification gives on tets of many shapes.
+     *
+     * @param fraction at most 0.15: a node moves at most {@code 0.15 sqrt(3) h = 0.26 h}, less than half the smallest
+     *                 height of the splits' tets (0.577 h for the five-tet split's corners, 0.707 h for Kuhn's), so
+     *                 that no tet inverts
+     * @param h        the cell size of {@code mesh}, m
+     */
+    public static TetMesh jittered(TetMesh mesh, double h, double fraction, long seed) {
+        if (!(fraction >= 0 && fraction <= 0.15)) {
+            throw new IllegalArgumentException("tet jitter must be 0 to 0.15 of a cell, got " + fraction);
+        }
+        double[] xyz = mesh.coordinates();
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int v = 0; v < mesh.nodeCount(); v++) {
+            for (int a = 0; a < 3; a++) {
+                lo[a] = Math.min(lo[a], xyz[3 * v + a]);
+                hi[a] = Math.max(hi[a], xyz[3 * v + a]);
+            }
+        }
+        java.util.Random r = new java.util.Random(seed);
+        double eps = 1e-9 * h;
+        for (int v = 0; v < mesh.nodeCount(); v++) {
+            boolean inside = true;
+            for (int a = 0; a < 3; a++) {
+                inside &= xyz[3 * v + a] > lo[a] + eps && xyz[3 * v + a] < hi[a] - eps;
+            }
+            if (inside) {
+                for (int a = 0; a < 3; a++) {
+                    xyz[3 * v + a] += fraction * h * (2 * r.nextDouble() - 1);
+                }
+            }
+        }
+        return new TetMesh(xyz, mesh.tets());
+    }
 }

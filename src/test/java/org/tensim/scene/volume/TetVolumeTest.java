@@ -260,4 +260,26 @@ class TetVolumeTest {
         assertTrue(e.getMessage().startsWith("cube5.msh: the axial spring fit needs a lattice's axes"),
                 e.getMessage());
     }
+
+    /** A jittered box keeps its boundary and, the mesh conforming, its volume exactly; its inner nodes move. */
+    @Test
+    void aJitteredBoxKeepsItsBoundaryAndVolume() {
+        double h = 0.01;
+        TetMesh box = BoxTets.of(4 * h, 3 * h, 3 * h, 4, 3, 3, BoxTets.Split.FIVE);
+        TetMesh j = BoxTets.jittered(box, h, 0.15, 1);
+        assertEquals(36 * h * h * h, j.totalVolume(), 1e-9 * 36 * h * h * h);
+        int moved = 0;
+        for (int v = 0; v < box.nodeCount(); v++) {
+            double d = 0;
+            for (int a = 0; a < 3; a++) {
+                double delta = j.coord(v, a) - box.coord(v, a);
+                assertTrue(Math.abs(delta) <= 0.15 * h, "node " + v + " moved " + delta);
+                d += Math.abs(delta);
+            }
+            moved += d > 0 ? 1 : 0;
+        }
+        assertEquals(3 * 2 * 2, moved, "the 3 x 2 x 2 interior nodes move, the boundary's do not");
+        assertEquals(box.boundary().triangleCount(), j.boundary().triangleCount());
+        assertThrows(IllegalArgumentException.class, () -> BoxTets.jittered(box, h, 0.2, 1));
+    }
 }
