@@ -10,7 +10,8 @@ import java.util.Map;
  * indices each), every one positively oriented: {@code (b - a) . ((c - a) x (d - a)) > 0}, the convention of Gmsh's
  * element type 4 and of VTK_TETRA (the first three corners counter-clockwise seen from the fourth). Its boundary
  * surface, the faces used by one tetrahedron only, wound counter-clockwise seen from outside, is kept as a
- * {@link TriangleMesh} over the boundary's own vertices ({@link #boundaryNode} gives the node of each), for drawing, contact and loads. Immutable: arrays are copied in and out.
+ * {@link TriangleMesh} over the boundary's own vertices ({@link #boundaryNode} gives the node of each), for drawing,
+ * contact and loads. Immutable: arrays are copied in and out.
  */
 public final class TetMesh {
     /** A tetrahedron is degenerate when its volume is at most this fraction of its longest edge cubed. */
