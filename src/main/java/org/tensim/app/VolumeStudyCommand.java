@@ -32,71 +32,72 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim volume-study}: the volume body against the cantilever and the compressed block, under refinement. */
 @Command(name = "volume-study", mixinStandardHelpOptions = true,
-        description = {"The volume body (a lattice clipped to a closed surface, docs/volume.md) against",
-            "known answers, by small-displacement statics, at each resolution given:",
-            "a cantilever of depth D and length 10 D clamped at one end with a tip load,",
-            "against Euler-Bernoulli's F L^3 / (3 E I) (and Timoshenko's); and a block",
-            "compressed on rollers (uniaxial stress) against -sigma / E, its lateral strain",
-            "against nu. Prints the tables and the measured orders. Writes",
-            "volume-cantilever.csv, volume-block.csv and volume-convergence.png to --out.",
-            "The last line is one JSON object with, per spring fit, the errors, the orders",
-            "and the lateral strains (the summary's fields). With --mesh, fills each surface",
-            "at each --cell size instead and reports the builds (volume-meshes.csv)."})
+        description = {"Measures the volume body (docs/volume.md) against known answers, under refinement.",
+            "A lattice clipped to a closed surface, or with --tets a structured tetrahedral mesh, is solved by"
+                + " small-displacement statics at each resolution given: a cantilever of depth D and length 10 D"
+                + " clamped at one end with a tip load, against Euler-Bernoulli's F L^3 / (3 E I) (and"
+                + " Timoshenko's); and a block compressed on rollers (uniaxial stress) against -sigma / E, its"
+                + " lateral strain against nu. Prints the tables and the measured orders, and writes"
+                + " volume-cantilever.csv, volume-block.csv and volume-convergence.png to --out. The last line is"
+                + " one JSON object with, per spring fit, the errors, the orders and the lateral strains (the"
+                + " summary's fields). With --mesh, fills each surface at each --cell size (or builds each"
+                + " tetrahedral mesh) instead and reports the builds (volume-meshes.csv)."})
 public final class VolumeStudyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
     @Option(names = "--cantilever-cells", split = ",", paramLabel = "N[,N...]",
-            description = "cells across the beam's depth, each twice the last (default: ${DEFAULT-VALUE})")
+            description = "Cells across the beam's depth, each twice the last (default: ${DEFAULT-VALUE}).")
     List<Integer> cantileverCells = List.of(2, 4, 8);
 
     @Option(names = "--block-cells", split = ",", paramLabel = "N[,N...]",
-            description = "cells across the block's side; a half cell more leaves its last layer half full, a"
-                    + " clipped lattice (default: 2.5,4.5,8.5; with --tets, whole cubes: 2,4,8)")
+            description = "Cells across the block's side; a half cell more leaves its last layer half full, a"
+                    + " clipped lattice (default: 2.5,4.5,8.5; with --tets, whole cubes: 2,4,8).")
     List<Double> blockCells;
 
     @Option(names = "--tets", arity = "0..1", fallbackValue = "five", paramLabel = "SPLIT",
-            description = "a structured tetrahedral mesh instead of the lattice, its cubes cut in five tets (the"
-                    + " default) or six, its springs by Lloyd et al.'s identification (the isotropic fit only)")
+            description = "A structured tetrahedral mesh instead of the lattice, its cubes cut in five tets (the"
+                    + " default) or six, its springs by Lloyd et al.'s identification (the isotropic fit only).")
     String tetSplit;
 
-    @Option(names = "--jitter", paramLabel = "FRACTION", description = "with --tets, move the mesh's interior nodes"
-            + " by up to this fraction of a cube along each axis (0 to 0.15, seeded), for tets of many shapes"
-            + " (default: ${DEFAULT-VALUE})")
+    @Option(names = "--jitter", paramLabel = "FRACTION", description = "With --tets, moves the mesh's interior"
+            + " nodes by up to this fraction of a cube along each axis (0 to 0.15, seeded), for tets of many shapes"
+            + " (default: ${DEFAULT-VALUE}).")
     double jitter;
 
     private VolumeStudy.Tets tets;
 
-    @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE})")
+    @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE}).")
     double youngPa = 1e3;
 
     @Option(names = "--poisson", paramLabel = "NU", description = "Poisson's ratio asked for (default: "
-            + "${DEFAULT-VALUE}; the isotropic fit gives 1/4 whatever is asked)")
+            + "${DEFAULT-VALUE}; the isotropic fit gives 1/4 whatever is asked).")
     double poisson = 0.4;
 
-    @Option(names = "--density", paramLabel = "KG_M3", description = "density, kg/m^3 (default: ${DEFAULT-VALUE};"
-            + " statics does not depend on it, --mesh's critical time step does)")
+    @Option(names = "--density", paramLabel = "KG_M3", description = "Density, kg/m^3 (default: ${DEFAULT-VALUE};"
+            + " statics does not depend on it, --mesh's critical time step does).")
     double densityKgPerM3 = 1000;
 
     @Option(names = "--fits", split = ",", paramLabel = "FIT[,FIT...]",
-            description = "spring fits: isotropic, axial (default: both; with --tets, isotropic)")
+            description = "Spring fits: isotropic, axial (default: both; with --tets, isotropic).")
     List<String> fits;
 
-    @Option(names = "--sliding-root", description = "hold the cantilever's root only along the beam (and its"
-            + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does")
+    @Option(names = "--sliding-root", description = "Hold the cantilever's root only along the beam (and its"
+            + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does.")
     boolean slidingRoot;
 
     @Option(names = "--mesh", split = ",", paramLabel = "FILE[,FILE...]",
-            description = "closed surfaces (OBJ, STL, OFF) to fill at each --cell size, or tetrahedral meshes (Gmsh"
-                    + " .msh, legacy VTK .vtk) to build as they are, reporting the builds instead of the known answers")
+            description = "Closed surfaces (OBJ, STL, OFF) to fill at each --cell size, or tetrahedral meshes (Gmsh"
+                    + " .msh, legacy VTK .vtk) to build as they are, reporting the builds instead of the known"
+                    + " answers.")
     List<Path> meshes = List.of();
 
-    @Option(names = "--units", paramLabel = "UNITS", description = "length unit of --mesh files: mm or m (default:"
-            + " ${DEFAULT-VALUE})")
+    @Option(names = "--units", paramLabel = "UNITS", description = "Length unit of --mesh files: mm or m (default:"
+            + " ${DEFAULT-VALUE}).")
     String units = "mm";
 
     @Option(names = "--cell", split = ",", paramLabel = "M[,M...]",
-            description = "cell sizes for --mesh, m (default: ${DEFAULT-VALUE})")
+            description = "Cell sizes for --mesh, m (default: ${DEFAULT-VALUE}).")
     List<Double> cells = List.of(0.01, 0.005);
 
     @picocli.CommandLine.Mixin
