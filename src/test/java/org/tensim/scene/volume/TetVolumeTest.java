@@ -177,6 +177,7 @@ class TetVolumeTest {
             TetMesh mesh = BoxTets.of(3 * h, 2 * h, 2 * h, 3, 2, 2, split);
             Topology t = new Topology();
             VolumeBody body = VolumeBody.buildTets(t, mesh, TISSUE.withDampingTime(0.01), "the box");
+            assertEquals(0, body.droppedEdges(), split + ": no negative share in the structured mesh");
             assertEquals(12 * h * h * h, mesh.totalVolume(), 1e-18);
             double mass = 0;
             double[] expected = new double[mesh.nodeCount()];
@@ -280,6 +281,12 @@ class TetVolumeTest {
         }
         assertEquals(3 * 2 * 2, moved, "the 3 x 2 x 2 interior nodes move, the boundary's do not");
         assertEquals(box.boundary().triangleCount(), j.boundary().triangleCount());
+        TetMesh big = BoxTets.jittered(BoxTets.of(16 * h, 16 * h, 16 * h, 16, 16, 16, BoxTets.Split.FIVE), h, 0.15, 1);
+        VolumeBody body = VolumeBody.buildTets(new Topology(), big, TISSUE, "the jittered box");
+        System.out.printf("jittered 16^3 five-tet box: %d of %d tet edges dropped%n", body.droppedEdges(),
+                6 * big.tetCount());
+        // measured 113 of 122,880
+        assertTrue(body.droppedEdges() > 0 && body.droppedEdges() < 0.002 * 6 * big.tetCount(), "dropped shares");
         assertThrows(IllegalArgumentException.class, () -> BoxTets.jittered(box, h, 0.2, 1));
     }
 }
