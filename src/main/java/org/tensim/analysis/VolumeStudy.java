@@ -1,9 +1,12 @@
 package org.tensim.analysis;
 
+import org.tensim.io.mesh.TetMesh;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 import org.tensim.model.Topology;
 import org.tensim.scene.volume.BoxSurface;
+import org.tensim.scene.volume.BoxTets;
+import org.tensim.scene.volume.SpringFit;
 import org.tensim.scene.volume.LatticeMaterial;
 import org.tensim.scene.volume.VolumeBody;
 import org.tensim.scene.volume.VolumeParameters;
@@ -74,6 +77,30 @@ public final class VolumeStudy {
         }
     }
 
+    /**
+     * The material a tet body's springs aim at: isotropic, E with nu = 1/4 ({@code TetSprings}), which is the
+     * lattice's isotropic fit's, so that its shear modulus and Poisson ratio stand for the tets' in Timoshenko's
+     * correction and the block's report.
+     */
+    private static final java.util.function.Function<VolumeParameters, LatticeMaterial> TET_MATERIAL =
+        q -> new LatticeMaterial(q.youngPa(), q.poisson(), SpringFit.ISOTROPIC);
+
+    /**
+     * Which tetrahedral mesh a study builds: the structured mesh of {@link BoxTets} cut by {@code split}, its
+     * interior nodes moved by up to {@code jitter} of a cell along each axis ({@link BoxTets#jittered}, seed 1).
+     */
+    public record Tets(BoxTets.Split split, double jitter) {
+        /** The structured mesh, no jitter. */
+        public static Tets of(BoxTets.Split split) {
+            return new Tets(split, 0);
+        }
+
+        TetMesh box(double lx, double ly, double lz, int nx, int ny, int nz) {
+            TetMesh m = BoxTets.of(lx, ly, lz, nx, ny, nz, split);
+            return jitter == 0 ? m : BoxTets.jittered(m, lx / nx, jitter, 1);
+        }
+    }
+
     private VolumeStudy() {
     }
 
@@ -96,6 +123,16 @@ public final class VolumeStudy {
      */
     public static Cantilever cantilever(VolumeParameters p, double depthM, double forceN, int cellsAcross,
             boolean slidingRoot) {
+        return cantilever(p, depthM, forceN, cellsAcross, slidingRoot, null);
+    }
+
+    /**
+     * As {@link #cantilever(VolumeParameters, double, double, int, boolean)}; with {@code tets} (null: a lattice)
+     * the beam is the structured tetrahedral mesh of {@link BoxTets} (cubes of side D / cellsAcross cut so) built by
+     * {@link VolumeBody#buildTets} instead.
+     */
+    public static Cantilever cantilever(VolumeParameters p, double depthM, double forceN, int cellsAcross,
+            boolean slidingRoot, Tets tets) {
         if (slidingRoot && cellsAcross % 2 != 0) {
             throw new IllegalArgumentException("a sliding root needs an even number of cells across, got "
                     + cellsAcross);
@@ -106,10 +143,12 @@ public final class VolumeStudy {
         double d = depthM;
         double len = 10 * d;
         double h = d / cellsAcross;
-        TriangleMesh surface = BoxSurface.of(len, d, d, h);
         Topology t = new Topology();
         // the beam fits the lattice: every cell is full, which one sample at its centre tells
-        VolumeBody body = VolumeBody.build(t, surface, p.withCellSize(h).withFillSamples(1), "the cantilever");
+        VolumeBody body = tets != null ? VolumeBody.buildTets(t, tets.box(len, d, d, 10 * cellsAcross,
+                cellsAcross, cellsAcross), p, "the cantilever") : VolumeBody.build(t, BoxSurface.of(len, d, d, h),
+                p.withCellSize(h).withFillSamples(1), "the cantilever");
+        TriangleMesh surface = body.surface();
         boolean[] fixed = new boolean[3 * t.nodeCount()];
         if (slidingRoot) {
             boolean[] root = new boolean[fixed.length];
@@ -129,7 +168,7 @@ public final class VolumeStudy {
             -forceN / (d * d)});
         VolumeStatics.Solved s = VolumeStatics.solve(t, body, fixed, f, TOLERANCE);
         double deflection = VolumeStatics.conjugate(f, s.surfaceDisplacementM());
-        LatticeMaterial m = p.material();
+        LatticeMaterial m = tets != null ? TET_MATERIAL.apply(p) : p.material();
         double inertia = d * d * d * d / 12;
         double eb = forceN * len * len * len / (3 * m.youngPa() * inertia);
         double nu = m.modelPoisson();
@@ -146,14 +185,29 @@ public final class VolumeStudy {
      * @param stressPa sigma, the pressure on the top face, Pa (&gt; 0)
      */
     public static Block block(VolumeParameters p, double sideM, double stressPa, double cellsAcross) {
+        return block(p, sideM, stressPa, cellsAcross, null);
+    }
+
+    /**
+     * As {@link #block(VolumeParameters, double, double, double)}; with {@code tets} (null: a lattice) the block is
+     * the structured tetrahedral mesh of {@link BoxTets} cut so ({@code cellsAcross} must then be a whole number).
+     */
+    public static Block block(VolumeParameters p, double sideM, double stressPa, double cellsAcross,
+            Tets tets) {
+        if (tets != null && cellsAcross != Math.rint(cellsAcross)) {
+            throw new IllegalArgumentException("a tetrahedral block needs a whole number of cubes across, got "
+                    + cellsAcross);
+        }
         Check.positive("block side", "m", sideM);
         Check.positive("block pressure", "Pa", stressPa);
         Check.positive("block cells across", "", cellsAcross);
         double s = sideM;
         double h = s / cellsAcross;
-        TriangleMesh surface = BoxSurface.of(s, s, s, Math.min(h, s) / 2);
         Topology t = new Topology();
-        VolumeBody body = VolumeBody.build(t, surface, p.withCellSize(h), "the block");
+        int n = (int) Math.rint(cellsAcross);
+        VolumeBody body = tets != null ? VolumeBody.buildTets(t, tets.box(s, s, s, n, n, n), p, "the block")
+                : VolumeBody.build(t, BoxSurface.of(s, s, s, Math.min(h, s) / 2), p.withCellSize(h), "the block");
+        TriangleMesh surface = body.surface();
         boolean[] fixed = new boolean[3 * t.nodeCount()];
         for (int axis = 0; axis < 3; axis++) {
             VolumeStatics.fixPlane(t, fixed, axis, 0, axis, s);
@@ -165,7 +219,7 @@ public final class VolumeStudy {
         VolumeStatics.Solved r = VolumeStatics.solve(t, body, fixed, f, TOLERANCE);
         double axial = VolumeStatics.meanOver(surface, top, r.surfaceDisplacementM(), 2) / s;
         double lateral = VolumeStatics.meanOver(surface, side, r.surfaceDisplacementM(), 0) / s;
-        LatticeMaterial m = p.material();
+        LatticeMaterial m = tets != null ? TET_MATERIAL.apply(p) : p.material();
         return new Block(cellsAcross, h, body.nodeCount(), axial, -stressPa / m.youngPa(), lateral,
                 m.modelPoisson(), m.poisson(), r.iterations());
     }

@@ -17,11 +17,14 @@ import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
 import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
+import org.tensim.io.mesh.TetMesh;
+import org.tensim.io.mesh.TetMeshReaders;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.scene.volume.VolumeBody;
 import org.tensim.scene.volume.VolumeReport;
 import org.tensim.solver.SystemState;
+import org.tensim.scene.volume.BoxTets;
 import org.tensim.scene.volume.SpringFit;
 import org.tensim.scene.volume.VolumeParameters;
 import picocli.CommandLine.Command;
@@ -29,16 +32,16 @@ import picocli.CommandLine.Option;
 
 /** {@code tensim volume-study}: the volume body against the cantilever and the compressed block, under refinement. */
 @Command(name = "volume-study", mixinStandardHelpOptions = true,
-        description = {"Checks the volume body against known answers under refinement.",
-            "The volume body (a lattice clipped to a closed surface, docs/volume.md) is solved by small-displacement"
-                + " statics at each resolution given: a cantilever of depth D and length 10 D clamped at one end with"
-                + " a tip load, against Euler-Bernoulli's F L^3 / (3 E I) (and Timoshenko's); and a block compressed"
-                + " on rollers (uniaxial stress) against -sigma / E, its lateral strain against nu. Prints the tables"
-                + " and the measured orders, and writes volume-cantilever.csv, volume-block.csv and"
-                + " volume-convergence.png to --out.",
-            "The last line is one JSON object with, per spring fit, the errors, the orders and the lateral strains"
-                + " (the summary's fields). With --mesh, it fills each surface at each --cell size instead and reports"
-                + " the builds (volume-meshes.csv)."})
+        description = {"Measures the volume body (docs/volume.md) against known answers, under refinement.",
+            "A lattice clipped to a closed surface, or with --tets a structured tetrahedral mesh, is solved by"
+                + " small-displacement statics at each resolution given: a cantilever of depth D and length 10 D"
+                + " clamped at one end with a tip load, against Euler-Bernoulli's F L^3 / (3 E I) (and"
+                + " Timoshenko's); and a block compressed on rollers (uniaxial stress) against -sigma / E, its"
+                + " lateral strain against nu. Prints the tables and the measured orders, and writes"
+                + " volume-cantilever.csv, volume-block.csv and volume-convergence.png to --out. The last line is"
+                + " one JSON object with, per spring fit, the errors, the orders and the lateral strains (the"
+                + " summary's fields). With --mesh, fills each surface at each --cell size (or builds each"
+                + " tetrahedral mesh) instead and reports the builds (volume-meshes.csv)."})
 public final class VolumeStudyCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -49,8 +52,20 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     @Option(names = "--block-cells", split = ",", paramLabel = "N[,N...]",
             description = "Cells across the block's side; a half cell more leaves its last layer half full, a"
-                    + " clipped lattice (default: ${DEFAULT-VALUE}).")
-    List<Double> blockCells = List.of(2.5, 4.5, 8.5);
+                    + " clipped lattice (default: 2.5,4.5,8.5; with --tets, whole cubes: 2,4,8).")
+    List<Double> blockCells;
+
+    @Option(names = "--tets", arity = "0..1", fallbackValue = "five", paramLabel = "SPLIT",
+            description = "A structured tetrahedral mesh instead of the lattice, its cubes cut in five tets (the"
+                    + " default) or six, its springs by Lloyd et al.'s identification (the isotropic fit only).")
+    String tetSplit;
+
+    @Option(names = "--jitter", paramLabel = "FRACTION", description = "With --tets, moves the mesh's interior"
+            + " nodes by up to this fraction of a cube along each axis (0 to 0.15, seeded), for tets of many shapes"
+            + " (default: ${DEFAULT-VALUE}).")
+    double jitter;
+
+    private VolumeStudy.Tets tets;
 
     @Option(names = "--young", paramLabel = "PA", description = "Young's modulus E, Pa (default: ${DEFAULT-VALUE}).")
     double youngPa = 1e3;
@@ -64,16 +79,17 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     double densityKgPerM3 = 1000;
 
     @Option(names = "--fits", split = ",", paramLabel = "FIT[,FIT...]",
-            description = "Spring fits: isotropic, axial (default: ${DEFAULT-VALUE}).")
-    List<String> fits = List.of("isotropic", "axial");
+            description = "Spring fits: isotropic, axial (default: both; with --tets, isotropic).")
+    List<String> fits;
 
     @Option(names = "--sliding-root", description = "Hold the cantilever's root only along the beam (and its"
             + " mid-planes across), so that it contracts sideways freely, as the beam theories' root does.")
     boolean slidingRoot;
 
     @Option(names = "--mesh", split = ",", paramLabel = "FILE[,FILE...]",
-            description = "Closed surfaces (OBJ, STL, OFF) to fill at each --cell size, reporting the build instead of"
-                    + " the known answers.")
+            description = "Closed surfaces (OBJ, STL, OFF) to fill at each --cell size, or tetrahedral meshes (Gmsh"
+                    + " .msh, legacy VTK .vtk) to build as they are, reporting the builds instead of the known"
+                    + " answers.")
     List<Path> meshes = List.of();
 
     @Option(names = "--units", paramLabel = "UNITS", description = "Length unit of --mesh files: mm or m (default:"
@@ -100,6 +116,34 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (tetSplit != null) {
+            switch (tetSplit.trim().toLowerCase(java.util.Locale.ROOT)) {
+                case "six":
+                    tets = new VolumeStudy.Tets(BoxTets.Split.SIX, jitter);
+                    break;
+                case "five":
+                    tets = new VolumeStudy.Tets(BoxTets.Split.FIVE, jitter);
+                    break;
+                default:
+                    throw new IllegalArgumentException("--tets must be 'six' or 'five', got '" + tetSplit + "'");
+            }
+        }
+        if (!(jitter >= 0 && jitter <= 0.15) || jitter > 0 && tets == null) {
+            throw new IllegalArgumentException("--jitter must be 0 to 0.15, with --tets, got " + jitter);
+        }
+        if (blockCells == null) {
+            blockCells = tets != null ? List.of(2.0, 4.0, 8.0) : List.of(2.5, 4.5, 8.5);
+        }
+        if (fits == null) {
+            fits = tets != null ? List.of("isotropic") : List.of("isotropic", "axial");
+        }
+        if (tets != null && fits.stream().anyMatch(f -> SpringFit.parse(f) != SpringFit.ISOTROPIC)) {
+            throw new IllegalArgumentException("--tets takes the isotropic fit only (the axial fit needs a lattice's"
+                    + " axes), got --fits " + String.join(",", fits));
+        }
+        if (tets != null && blockCells.stream().anyMatch(c -> c != Math.rint(c))) {
+            throw new IllegalArgumentException("--tets needs whole --block-cells, got " + blockCells);
+        }
         List<VolumeParameters> params = new ArrayList<>();
         for (String f : fits) {
             params.add(VolumeParameters.of(0.01, youngPa, poisson, densityKgPerM3).withFit(SpringFit.parse(f)));
@@ -137,23 +181,27 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                 "crossed_cells", "boundary_edges", "max_winding_deviation", "lattice_volume_m3", "surface_volume_m3",
                 "critical_step_s", "build_s"), 1)) {
             for (Path file : meshes) {
-                TriangleMesh mesh = MeshLoader.load(file, u).mesh();
-                for (double c : cells) {
+                boolean tetFile = isTetMesh(file);
+                TriangleMesh mesh = tetFile ? null : MeshLoader.load(file, u).mesh();
+                TetMesh tetMesh = tetFile ? TetMeshReaders.read(file, u).mesh() : null;
+                for (double c : tetFile ? List.of(Double.NaN) : cells) {
                     long t0 = System.nanoTime();
                     Topology t = new Topology();
-                    VolumeBody body = VolumeBody.build(t, mesh, params.get(0).withCellSize(c), file.toString());
+                    VolumeBody body = tetFile ? VolumeBody.buildTets(t, tetMesh, params.get(0), file.toString())
+                            : VolumeBody.build(t, mesh, params.get(0).withCellSize(c), file.toString());
                     double seconds = (System.nanoTime() - t0) * 1e-9;
                     VolumeReport r = body.report();
                     // the leapfrog limit 2 / w_max of the free lattice (power iteration): what an explicit step meets
                     double critical = SystemState.compile(t).criticalTimeStep().stepSeconds();
-                    csv.rowText(file.getFileName().toString(), Double.toString(c), Integer.toString(r.nodes()),
+                    double cell = tetFile ? r.cellSizeM() : c;
+                    csv.rowText(file.getFileName().toString(), Double.toString(cell), Integer.toString(r.nodes()),
                             Integer.toString(r.springs()), Integer.toString(r.cells()),
                             Integer.toString(r.crossedCells()), Integer.toString(r.boundaryEdges()),
                             Double.toString(r.maxWindingDeviation()), Double.toString(r.latticeVolumeM3()),
                             Double.toString(r.surfaceVolumeM3()), Double.toString(critical),
                             Double.toString(seconds));
                     System.out.printf("%s at %.3g mm (%.1f s): %s; critical (leapfrog) step %.3g ms%n",
-                            file.getFileName(), c * 1e3, seconds, r.describe(), critical * 1e3);
+                            file.getFileName(), cell * 1e3, seconds, r.describe(), critical * 1e3);
                     Map<String, Object> m = new LinkedHashMap<>();
                     m.put("mesh", file.toString());
                     m.put("build_s", seconds);
@@ -181,7 +229,7 @@ public final class VolumeStudyCommand implements Callable<Integer> {
                         "axial_strain", "expected_strain", "strain_error", "lateral_strain", "measured_poisson",
                         "model_poisson", "requested_poisson", "cg_iterations"), 1)) {
             for (VolumeParameters p : params) {
-                String fit = p.fit().key();
+                String fit = label(p);
                 Map<String, Object> e = new LinkedHashMap<>();
                 e.put("model_poisson", p.material().modelPoisson());
                 e.put("shear_modulus_pa", p.material().shearModulusPa());
@@ -197,12 +245,12 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     }
 
     private Map<String, Object> cantilever(VolumeParameters p, CsvWriter csv, XYChart chart) throws IOException {
-        String fit = p.fit().key();
+        String fit = label(p);
         List<Double> q = new ArrayList<>();
         List<Double> err = new ArrayList<>();
         List<Double> size = new ArrayList<>();
         for (int n : cantileverCells) {
-            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n, slidingRoot);
+            VolumeStudy.Cantilever c = VolumeStudy.cantilever(p, DEPTH_M, FORCE_N, n, slidingRoot, tets);
             csv.rowText(fit, Integer.toString(n), Double.toString(c.cellM()), Integer.toString(c.nodes()),
                     Integer.toString(c.springs()), Double.toString(c.deflectionM()),
                     Double.toString(c.eulerBernoulliM()), Double.toString(c.timoshenkoM()),
@@ -236,21 +284,22 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     }
 
     private Map<String, Object> block(VolumeParameters p, CsvWriter csv, XYChart chart) throws IOException {
-        String fit = p.fit().key();
+        String fit = label(p);
         List<Double> err = new ArrayList<>();
         List<Double> nu = new ArrayList<>();
         List<Double> size = new ArrayList<>();
         for (double n : blockCells) {
-            VolumeStudy.Block b = VolumeStudy.block(p, SIDE_M, PRESSURE_PA, n);
+            VolumeStudy.Block b = VolumeStudy.block(p, SIDE_M, PRESSURE_PA, n, tets);
             csv.rowText(fit, Double.toString(n), Double.toString(b.cellM()), Integer.toString(b.nodes()),
                     Double.toString(b.axialStrain()), Double.toString(b.expectedStrain()),
                     Double.toString(b.strainError()), Double.toString(b.lateralStrain()),
                     Double.toString(b.measuredPoisson()), Double.toString(b.modelPoisson()),
                     Double.toString(b.requestedPoisson()), Integer.toString(b.iterations()));
             System.out.printf("%-9s block %5.1f cells across (%6d nodes): strain %.6g against %.6g (%+.3f %%),"
-                    + " lateral %.6g: nu %.4f (the lattice's %.3f, asked %.3f)%n", fit, n, b.nodes(),
+                    + " lateral %.6g: nu %.4f (the %s %.3f, asked %.3f)%n", fit, n, b.nodes(),
                     b.axialStrain(), b.expectedStrain(), 100 * b.strainError(), b.lateralStrain(),
-                    b.measuredPoisson(), b.modelPoisson(), b.requestedPoisson());
+                    b.measuredPoisson(), tets != null ? "springs' target" : "lattice's", b.modelPoisson(),
+                    b.requestedPoisson());
             err.add(b.strainError());
             nu.add(b.measuredPoisson());
             size.add(1 / n);
@@ -264,11 +313,32 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             order.add(VolumeStudy.orderAgainst(err.get(i - 1), err.get(i), size.get(i - 1), size.get(i)));
         }
         m.put("order", order);
+        // from three resolutions in a constant ratio, needing no exact answer (the tets converge to their own)
+        List<Double> observed = new ArrayList<>();
+        for (int i = 2; i < err.size(); i++) {
+            double ratio = size.get(i - 1) / size.get(i);
+            if (Math.abs(size.get(i - 2) / size.get(i - 1) - ratio) < 1e-9 * ratio) {
+                observed.add(VolumeStudy.observedOrder(err.get(i - 2), err.get(i - 1), err.get(i), ratio));
+            }
+        }
+        m.put("observed_order", observed);
         m.put("measured_poisson", nu);
         m.put("requested_poisson", p.poisson());
-        System.out.println(fit + " block: order " + order);
+        System.out.println(fit + " block: order " + order + ", observed order " + observed);
         plot(chart, fit + " block", size, err);
         return m;
+    }
+
+    /** Whether {@code file} is a volume mesh (Gmsh .msh, legacy VTK .vtk) rather than a surface. */
+    private static boolean isTetMesh(Path file) {
+        String n = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        return n.endsWith(".msh") || n.endsWith(".vtk");
+    }
+
+    /** The name of a series: the fit's, or "tets" for the tetrahedral variant. */
+    private String label(VolumeParameters p) {
+        return tets != null ? "tets-" + tets.split().name().toLowerCase(java.util.Locale.ROOT)
+                + (jitter > 0 ? "-jitter" : "") : p.fit().key();
     }
 
     private static void plot(XYChart chart, String name, List<Double> size, List<Double> err) {

@@ -66,4 +66,33 @@ class VolumeStudyCommandTest {
         String[] m = run("volume-study", "--mesh", dir.resolve("none.obj").toString(), "--out", dir.toString());
         assertTrue(!"0".equals(m[0]) && m[2].contains("none.obj") && !m[2].contains("\tat "), m[2]);
     }
+
+    @Test
+    void theTetrahedralVariantRunsTheSameStudyAndBuildsMeshFiles(@TempDir Path dir) throws Exception {
+        String[] r = run("volume-study", "--tets", "--cantilever-cells", "1,2", "--block-cells", "1,2", "--out",
+                dir.toString());
+        assertEquals("0", r[0], r[2]);
+        JsonNode s = new ObjectMapper().readTree(dir.resolve("summary.json").toFile());
+        JsonNode tets = s.get("tets-five");
+        assertEquals(2, tets.get("cantilever").get("error_vs_euler_bernoulli").size(), tets.toString());
+        // five tets a cube: the network's Poisson ratio is below the target's 1/4 (0.172 at 2 cubes across)
+        assertEquals(0.172, tets.get("block").get("measured_poisson").get(1).asDouble(), 0.005);
+        String[] bad = run("volume-study", "--tets", "seven", "--out", dir.toString());
+        assertTrue(bad[2].contains("--tets must be 'six' or 'five', got 'seven'"), bad[2]);
+        String[] axial = run("volume-study", "--tets", "--fits", "axial", "--out", dir.toString());
+        assertTrue(axial[2].contains("--tets takes the isotropic fit only"), axial[2]);
+        String[] jitter = run("volume-study", "--jitter", "0.1", "--out", dir.toString());
+        assertTrue(jitter[2].contains("--jitter must be 0 to 0.15, with --tets, got 0.1"), jitter[2]);
+        String[] half = run("volume-study", "--tets", "--block-cells", "2.5", "--out", dir.toString());
+        assertTrue(half[2].contains("--tets needs whole --block-cells"), half[2]);
+        Path msh = Path.of(VolumeStudyCommandTest.class.getResource("/org/tensim/io/mesh/cube5.msh").toURI());
+        Path out = dir.resolve("mesh");
+        String[] m = run("volume-study", "--mesh", msh.toString(), "--out", out.toString());
+        assertEquals("0", m[0], m[2]);
+        JsonNode built = new ObjectMapper().readTree(out.resolve("summary.json").toFile()).get("meshes").get(0);
+        assertEquals("tets", built.get("variant").asText());
+        assertEquals(8, built.get("nodes").asInt());
+        assertEquals(18, built.get("springs").asInt(), "the cube's 12 edges and 6 face diagonals");
+        assertEquals(1e-3, built.get("mass_kg").asDouble(), 1e-12, "1 cm^3 at 1000 kg/m^3");
+    }
 }

@@ -34,6 +34,10 @@ final class TextLines implements AutoCloseable {
         return line;
     }
 
+    Path file() {
+        return file;
+    }
+
     MeshFormatException error(String problem) {
         return MeshFormatException.atLine(file, line, problem);
     }

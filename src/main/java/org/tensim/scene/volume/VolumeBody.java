@@ -1,6 +1,7 @@
 package org.tensim.scene.volume;
 
 import java.util.Locale;
+import org.tensim.io.mesh.TetMesh;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
@@ -34,9 +35,11 @@ public final class VolumeBody {
     private final TriangleMesh surface;
     private final VolumeReport report;
     private final double[] originM;
+    private final int droppedEdges;
 
-    private VolumeBody(int firstNode, int nodeCount, LinearMapping mapping, TriangleMesh surface,
-            VolumeReport report, double[] originM) {
+    VolumeBody(int firstNode, int nodeCount, LinearMapping mapping, TriangleMesh surface, VolumeReport report,
+            double[] originM, int droppedEdges) {
+        this.droppedEdges = droppedEdges;
         this.firstNode = firstNode;
         this.nodeCount = nodeCount;
         this.mapping = mapping;
@@ -128,8 +131,24 @@ public final class VolumeBody {
                 clip.worstPoint() == null ? Double.NaN : clip.maxWindingDeviation(), clip.inward(), h,
                 (long) cellCount, kept, clip.crossedCells(), nodes, springs, volume,
                 Math.abs(surface.signedVolume()), volume * p.densityKgPerM3(), mat.modelPoisson(), p.poisson(),
-                p.fit());
-        return new VolumeBody(first, nodes, mapping, surface, r, o.clone());
+                p.fit(), false);
+        return new VolumeBody(first, nodes, mapping, surface, r, o.clone(), 0);
+    }
+
+    /**
+     * The tetrahedral variant: the mesh's own nodes are the volume's nodes (none fixed), of mass {@code rho V_t / 4}
+     * from each tet t around them, so that the masses sum to rho times the mesh's volume; its edges are springs from
+     * E by {@link TetSprings} (the isotropic fit only: Poisson's ratio 1/4), a spring shared by tets summing their
+     * shares, with the damping {@code c = beta k} of {@link VolumeParameters#dampingTimeS}; its boundary surface
+     * ({@link TetMesh#boundary}) is the body's surface, each vertex carried by its own node with weight 1. The
+     * parameters' cell size and fill samples are the lattice's and are not used. In the report, the cells are the
+     * tets, the cell size their mean edge length and the lattice volume the tets' total.
+     *
+     * @param name names the mesh in messages (e.g. its file)
+     * @throws IllegalArgumentException naming the mesh when the parameters ask for the axial fit
+     */
+    public static VolumeBody buildTets(Topology t, TetMesh mesh, VolumeParameters p, String name) {
+        return TetVolume.build(t, mesh, p, name);
     }
 
     private static void refuseAmbiguous(LatticeClip.Result clip, int boundary, String name) {
@@ -312,7 +331,18 @@ public final class VolumeBody {
         return report;
     }
 
-    /** The lattice's lowest corner, m (node positions are {@code origin + (i, j, k) h}). */
+    /**
+     * Tet edges (counted once per tet) whose share was dropped because the tet's fit made it negative
+     * ({@link TetSprings}); 0 for a lattice.
+     */
+    public int droppedEdges() {
+        return droppedEdges;
+    }
+
+    /**
+     * The lattice's lowest corner, m (node positions are {@code origin + (i, j, k) h}); a tet mesh's lowest bounding
+     * corner.
+     */
     public double[] originM() {
         return originM.clone();
     }

@@ -15,8 +15,8 @@ import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /**
- * A volume is springs only, so it runs in every integrator: a beam of lattice hanging under a small gravity comes to
- * rest, in each, where small-displacement statics puts it, its embedded surface with it.
+ * A volume is springs only, so it runs in every integrator: a beam of lattice, or of tets, hanging under a small
+ * gravity comes to rest, in each, where small-displacement statics puts it, its surface with it.
  */
 class VolumeDynamicsTest {
     private static final double H = 0.01;
@@ -27,10 +27,11 @@ class VolumeDynamicsTest {
         return Integrators.names();
     }
 
-    private static Topology beam(VolumeBody[] out) {
+    private static Topology beam(VolumeBody[] out, boolean tets) {
         Topology t = new Topology();
-        out[0] = VolumeBody.build(t, BoxSurface.of(8 * H, 2 * H, 2 * H, H),
-                VolumeParameters.of(H, 1e3, 0.25, 300).withDampingTime(2e-3).withFillSamples(1));
+        VolumeParameters p = VolumeParameters.of(H, 1e3, 0.25, 300).withDampingTime(2e-3).withFillSamples(1);
+        out[0] = tets ? VolumeBody.buildTets(t, BoxTets.of(8 * H, 2 * H, 2 * H, 8, 2, 2, BoxTets.Split.FIVE), p,
+                "the beam") : VolumeBody.build(t, BoxSurface.of(8 * H, 2 * H, 2 * H, H), p);
         for (Node n : t.nodes()) {
             if (n.position().x() < 1e-9) {
                 n.fix();
@@ -45,8 +46,19 @@ class VolumeDynamicsTest {
     @ParameterizedTest
     @MethodSource("names")
     void aHangingBeamSettlesWhereStaticsPutsIt(String integrator) {
+        settles(integrator, false);
+    }
+
+    /** The same beam as a tetrahedral mesh (five tets a cube): a caller runs both variants alike. */
+    @ParameterizedTest
+    @MethodSource("names")
+    void aHangingTetBeamSettlesWhereStaticsPutsIt(String integrator) {
+        settles(integrator, true);
+    }
+
+    private static void settles(String integrator, boolean tets) {
         VolumeBody[] body = new VolumeBody[1];
-        Topology t = beam(body);
+        Topology t = beam(body, tets);
         double[] f = new double[3 * t.nodeCount()];
         boolean[] fixed = new boolean[3 * t.nodeCount()];
         for (Node n : t.nodes()) {
@@ -71,8 +83,8 @@ class VolumeDynamicsTest {
         body[0].surfaceMapping().apply(moved, surface);
         double tip = lowest(staticSurface);
         double reached = lowest(surface);
-        System.out.printf("%s: lowest surface sag at rest %.6g m, statics %.6g m (%d steps of %.3g ms)%n", integrator,
-                reached, tip, sim.steps(), dt * 1e3);
+        System.out.printf("%s%s: lowest surface sag at rest %.6g m, statics %.6g m (%d steps of %.3g ms)%n",
+                integrator, tets ? " (tets)" : "", reached, tip, sim.steps(), dt * 1e3);
         assertTrue(tip < -1e-4, "the beam sags: " + tip);
         assertEquals(tip, reached, 0.002 * Math.abs(tip), integrator + ": the surface's lowest sag at rest, m");
     }
