@@ -6,6 +6,7 @@ import java.util.Map;
 import javax.measure.IncommensurableException;
 import javax.measure.UnconvertibleException;
 import javax.measure.Unit;
+import tech.units.indriya.AbstractUnit;
 
 /**
  * Reads a scene's {@code expect:} block, a list of {@link SceneExpectation}s:
@@ -124,6 +125,9 @@ final class ExpectBlock {
 
     /** The kind whose SI unit has the dimension of {@code u}; plain numbers when none has (or for counts). */
     static QuantityKind kindOf(Unit<?> u) {
+        if (u.equals(AbstractUnit.ONE)) {
+            return QuantityKind.NUMBER; // not an angle, which is dimensionless too
+        }
         for (QuantityKind k : QuantityKind.values()) {
             if (k != QuantityKind.NUMBER && k.unit().isCompatible(u)) {
                 return k;
