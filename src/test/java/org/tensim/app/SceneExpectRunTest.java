@@ -144,7 +144,8 @@ class SceneExpectRunTest {
             System.setOut(out);
             System.setErr(err);
         }
-        return new String[] {r[0], r[1] + o.toString(StandardCharsets.UTF_8), r[2] + e.toString(StandardCharsets.UTF_8)};
+        return new String[] {r[0], r[1] + o.toString(StandardCharsets.UTF_8),
+            r[2] + e.toString(StandardCharsets.UTF_8)};
     }
 
     @SuppressWarnings("unchecked")

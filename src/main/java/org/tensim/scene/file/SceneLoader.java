@@ -10,8 +10,9 @@ import org.tensim.scene.conditions.TimeLaw;
 /**
  * Reads a scene file (docs/scenes.md; schema docs/scene.schema.json) into a {@link Scene}: the tree with every
  * value's place ({@link SceneTree}), the {@code --set} overrides ({@link Overrides}), then, in this order, the
- * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the probes,
- * the run settings and the expectations ({@link ExpectBlock}). Every refusal is a {@link SceneException} naming file, line, column and key path.
+ * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the
+ * probes, the run settings and the expectations ({@link ExpectBlock}). Every refusal is a {@link SceneException}
+ * naming file, line, column and key path.
  */
 public final class SceneLoader {
     /** The format version this loader reads. */
