@@ -24,8 +24,9 @@ import org.tensim.scene.thorax.TriangleTree;
  * the coarse faces are chords of a curved fine one) gets weights outside [0, 1]: an extrapolation of the nearest
  * wedge, exact for affine motions still, down to node weights of {@code -}{@link #MAX_EXTRAPOLATION}. Where a
  * corner has no partner (a one-sided surface), the wedge is degenerate, or farther out, the point takes the closest
- * point's weights on the face (t = 0) and is carried as its projection: its distance from that projection is
- * reported ({@link #residualM}). On the paper's mesh carried by 20 rings that is 27 of 11,354 nodes, on the rim
+ * point's weights on the face, and its depth along the column there (its projection on the column, within
+ * {@code [-MAX_EXTRAPOLATION, 1 + MAX_EXTRAPOLATION]}; 0 on a one-sided surface): the distance between the point
+ * and where it is carried is reported ({@link #residualM}). On the paper's mesh carried by 20 rings that is 27 of 11,354 nodes, on the rim
  * where the shell turns over ({@code ShellMappingTest}).
  */
 public final class ShellMapping {
@@ -57,8 +58,9 @@ public final class ShellMapping {
 
     /**
      * The fine shell's vertices carried by the coarse one; node ids of the mapping are the coarse mesh's vertex
-     * indices (a diaphragm scene's first nodes), rest positions the coarse mesh's coordinates. Each fine vertex goes
-     * in the wedge of its own face.
+     * indices (a diaphragm scene's first nodes: the mapping applies to, and its transpose adds into, the scene's
+     * whole state arrays), rest positions the coarse mesh's coordinates. Each fine vertex goes in the wedge of its
+     * own face.
      */
     public static ShellMapping of(TwoSurfaces coarse, TwoSurfaces fine) {
         int n = fine.mesh().vertexCount();
@@ -113,9 +115,9 @@ public final class ShellMapping {
         double[] minWeight = new double[np];
         double[] closest = new double[4];
         double[] wt = new double[4];
-        int[] stackSize = new int[0];
-        int[][] stacks = {faces[0] == null ? stackSize : faces[0].tree.newStack(),
-            faces[1] == null ? stackSize : faces[1].tree.newStack()};
+        int[] none = new int[0];
+        int[][] stacks = {faces[0] == null ? none : faces[0].tree.newStack(),
+            faces[1] == null ? none : faces[1].tree.newStack()};
         for (int i = 0; i < np; i++) {
             double px = points[3 * i];
             double py = points[3 * i + 1];
@@ -159,10 +161,13 @@ public final class ShellMapping {
                 residual[i] = s.residualM();
                 outside[i] = Math.max(0, Math.max(-tt, tt - 1)) * s.columnM();
             } else {
-                // on the face, the closest point: the point's distance from it is what the mapping leaves out
+                // the closest point's weights on the face, and its depth along the column there within the bound
+                // (the column's projection): what the mapping leaves out is the offset across the column
                 w = new double[] {closest[0], closest[1], closest[2]};
-                tt = 0;
-                residual[i] = Math.sqrt(closest[3]);
+                tt = wedge ? Math.max(-MAX_EXTRAPOLATION, Math.min(1 + MAX_EXTRAPOLATION,
+                        Wedge.columnDepth(rest, f, g, w, px, py, pz))) : 0;
+                double[] q = Wedge.point(rest, f, wedge ? g : f, w, tt);
+                residual[i] = Math.sqrt(sq(q[0] - px) + sq(q[1] - py) + sq(q[2] - pz));
                 outside[i] = residual[i];
             }
             double[] merged = merged(nodeIds, weights(w, tt, wedge));
@@ -210,6 +215,10 @@ public final class ShellMapping {
         return m;
     }
 
+    private static double sq(double v) {
+        return v * v;
+    }
+
     private static double floor(double[] w) {
         double min = Double.POSITIVE_INFINITY;
         for (double x : w) {
@@ -238,8 +247,8 @@ public final class ShellMapping {
 
     /**
      * Distance of point i from the shell's thickness band, m, measured along the wedge's column: 0 between the
-     * faces, {@code -t} or {@code t - 1} column lengths above or below them; for a point carried on the face, its
-     * distance from the face.
+     * faces, {@code -t} or {@code t - 1} column lengths above or below them; for a point carried at the closest
+     * point of its face, the offset left out ({@link #residualM}).
      */
     public double outsideM(int point) {
         return outside[point];
@@ -247,7 +256,7 @@ public final class ShellMapping {
 
     /**
      * Distance between point i and where the mapping puts it at rest, m: round-off for a point in a wedge (its
-     * coordinates are exact), the distance to the face for a point carried as its projection on the face (a one-sided
+     * coordinates are exact), the offset left out for a point carried at the closest point of its face (a one-sided
      * surface, a degenerate wedge, or an extrapolation beyond {@link #MAX_EXTRAPOLATION}).
      */
     public double residualM(int point) {

@@ -87,6 +87,32 @@ final class Wedge {
         return null;
     }
 
+    /** The depth of the point's projection on the column at face weights w: {@code (p - q) . d / |d|^2}; 0 if none. */
+    static double columnDepth(double[] x, int[] f, int[] g, double[] w, double px, double py, double pz) {
+        double[] q = point(x, f, g, w, 0);
+        double[] d = point(x, f, g, w, 1);
+        double dd = 0;
+        double pd = 0;
+        double[] p = {px, py, pz};
+        for (int a = 0; a < 3; a++) {
+            d[a] -= q[a];
+            dd += d[a] * d[a];
+            pd += (p[a] - q[a]) * d[a];
+        }
+        return dd > 0 ? pd / dd : 0;
+    }
+
+    /** The wedge's point at face weights w and depth t: {@code sum_k w_k ((1 - t) F_k + t G_k)}, m. */
+    static double[] point(double[] x, int[] f, int[] g, double[] w, double t) {
+        double[] q = new double[3];
+        for (int k = 0; k < 3; k++) {
+            for (int a = 0; a < 3; a++) {
+                q[a] += w[k] * ((1 - t) * x[3 * f[k] + a] + t * x[3 * g[k] + a]);
+            }
+        }
+        return q;
+    }
+
     /** q = sum w_k (F_k + t D_k), d = sum w_k D_k. */
     private static void combine(double[] w, double[][] fk, double[][] dk, double t, double[] q, double[] d) {
         for (int a = 0; a < 3; a++) {

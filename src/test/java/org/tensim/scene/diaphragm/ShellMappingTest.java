@@ -152,7 +152,8 @@ class ShellMappingTest {
      * The paper's mesh (43 rings) carried by a 20-ring shell: every node's weights sum to 1, and it lies in the
      * thickness band or just outside (the coarse faces are chords of the curved fine ones), within a bound printed.
      * Measured 2026-12-01: 11,354 nodes; in wedges 11,327, farthest 3.97 mm outside the band (thickness 2.50 mm);
-     * 27 on the rim where the shell turns over carried on a face, the farthest 6.45 mm from it; lowest weight -0.96.
+     * 27 (23 on the rim where the shell turns over) carried at the closest point of a face, the farthest 5.63 mm
+     * from where it is carried; lowest weight -0.96.
      */
     @Test
     void thePapersMeshLiesInTheTwentyRingShell() {
