@@ -26,8 +26,8 @@ import org.tensim.scene.thorax.TriangleTree;
  * corner has no partner (a one-sided surface), the wedge is degenerate, or farther out, the point takes the closest
  * point's weights on the face, and its depth along the column there (its projection on the column, within
  * {@code [-MAX_EXTRAPOLATION, 1 + MAX_EXTRAPOLATION]}; 0 on a one-sided surface): the distance between the point
- * and where it is carried is reported ({@link #residualM}). On the paper's mesh carried by 20 rings that is 27 of 11,354 nodes, on the rim
- * where the shell turns over ({@code ShellMappingTest}).
+ * and where it is carried is reported ({@link #residualM}). On the paper's mesh carried by 20 rings that is 27 of
+ * 11,354 nodes, 23 of them on the rim where the shell turns over ({@code ShellMappingTest}).
  */
 public final class ShellMapping {
     /**
