@@ -31,7 +31,8 @@ public final class FileViewScene implements ViewScene {
         this.scene = scene;
         SceneProbe first = scene.probes().isEmpty() ? null : scene.probes().get(0);
         for (SceneBody b : scene.bodies().values()) {
-            Simulation sim = new Simulation(SystemState.compile(b.topology()));
+            Simulation sim = new Simulation(SystemState.compile(b.topology()),
+                    org.tensim.solver.integrators.Integrators.create(scene.run().integrator()));
             int probe = first != null && first.body().equals(b.name()) ? first.nodes()[0] : 0;
             bodies.add(new Body(b.name() + " (" + b.type() + ")", sim, new int[0], null, Vec3.ZERO, probe));
             if (b.surface() != null) {
