@@ -146,7 +146,8 @@ public final class GuiCommand implements Callable<Integer> {
         // It never overwrites what the user tuned last.
         // A scene file runs with its own settings: nothing last-used is restored over them, nor saved.
         boolean keep = file == null;
-        GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset, !paused && !script, threadCount,
+        GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
+                !paused && !script, threadCount,
                 keep && TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
         w.tuning().setSceneOptions(sceneArgs);
