@@ -132,15 +132,17 @@ public final class SceneRunner {
                 row[c++] = d[1];
                 row[c++] = d[2];
             } else {
+                // A region's mean, or a surface vertex's weighted sum over the nodes carrying it.
                 double[] sum = new double[3];
-                for (int n : p.nodes()) {
-                    st.displacement(n, d);
-                    sum[0] += d[0];
-                    sum[1] += d[1];
-                    sum[2] += d[2];
+                for (int i = 0; i < p.nodes().length; i++) {
+                    st.displacement(p.nodes()[i], d);
+                    double w = p.weights() == null ? 1 : p.weights()[i];
+                    sum[0] += w * d[0];
+                    sum[1] += w * d[1];
+                    sum[2] += w * d[2];
                 }
                 for (int a = 0; a < 3; a++) {
-                    row[c++] = sum[a] / p.nodes().length;
+                    row[c++] = p.weights() == null ? sum[a] / p.nodes().length : sum[a];
                 }
             }
         }

@@ -29,6 +29,9 @@ public final class SceneCheck {
                     + " driven, %d loaded; nodes in %s", b.name(), b.type(), b.topology().nodeCount(),
                     b.topology().springs().size(), b.topology().rigidLinks().size(), fixed, driven,
                     b.topology().forces().size(), box(b.bounds())));
+            for (String line : b.report()) {
+                out.add("  " + line);
+            }
         }
         for (SceneRegions.Region r : s.regions().values()) {
             for (Map.Entry<String, BitSet> e : r.nodes().entrySet()) {

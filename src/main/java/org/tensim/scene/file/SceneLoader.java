@@ -88,8 +88,9 @@ public final class SceneLoader {
             MapReader r = new MapReader(b, keys);
             Topology t = new Topology();
             int[] vertices;
+            BodyContext ctx = new BodyContext(e.getKey(), r, units, folder);
             try {
-                vertices = type.build(new BodyContext(e.getKey(), r, units, folder), t);
+                vertices = type.build(ctx, t);
             } catch (SceneException ex) {
                 throw ex;
             } catch (IllegalArgumentException ex) {
@@ -98,7 +99,8 @@ public final class SceneLoader {
             if (t.nodeCount() == 0) {
                 throw SceneException.at(b, "body '" + e.getKey() + "' has no node");
             }
-            bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b));
+            bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b, ctx.surface(),
+                    ctx.reportLines()));
         }
         return bodies;
     }
