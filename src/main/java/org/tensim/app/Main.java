@@ -22,7 +22,8 @@ import picocli.CommandLine.Command;
             + " N skipped\"; ./tensim test --help)."},
         subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
             DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class, SweepCommand.class,
-            CalibrateCommand.class, VolumeStudyCommand.class, CheckCommand.class, RunCommand.class})
+            CalibrateCommand.class, VolumeStudyCommand.class, CheckCommand.class, RunCommand.class,
+            TestScenesCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

@@ -9,6 +9,7 @@ import org.tensim.cli.IntegratorOption;
 import org.tensim.cli.OptionChecks;
 import org.tensim.cli.OutFolderOption;
 import org.tensim.cli.TimeStepOption;
+import org.tensim.experiment.SceneExpectations;
 import org.tensim.experiment.SceneRunner;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
@@ -24,7 +25,10 @@ import picocli.CommandLine.Parameters;
         description = {"Runs a scene file (docs/scenes.md) headless.",
             "It writes to --out the probes' CSV (the run block's csv; units in the column names) and summary.json (the"
                 + " file's digest and every --set), and prints the summary as the last line (JSON). Integrator, step"
-                + " and duration come from the file's run block unless given here."})
+                + " and duration come from the file's run block unless given here.",
+            "The checks of the file's expect block are evaluated after the run: each one's measured value and verdict"
+                + " are printed and written to summary.json, and a run that fails one ends with status"
+                + " expectation_failed and exit code 3, its outputs kept."})
 public final class RunCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -69,7 +73,24 @@ public final class RunCommand implements Callable<Integer> {
         return RunFolder.run(folder, "run", List.of(run.csv()), f -> {
             Map<String, Object> s = SceneRunner.run(scene, run, f);
             System.out.println("wrote " + f.dir().resolve(run.csv()) + ", " + f.dir().resolve(RunFolder.SUMMARY));
+            printExpectations(scene, s);
             System.out.println(Json.line(s));
         });
+    }
+
+    /** One line per check of the expect block; a failed one also on standard error. */
+    @SuppressWarnings("unchecked")
+    private static void printExpectations(Scene scene, Map<String, Object> summary) {
+        Object outcomes = summary.get("expectations");
+        if (!(outcomes instanceof List<?> list)) {
+            return;
+        }
+        for (int i = 0; i < list.size(); i++) {
+            String line = SceneExpectations.line(scene.expect().get(i), (Map<String, Object>) list.get(i));
+            System.out.println(line);
+            if (line.startsWith("FAIL")) {
+                System.err.println("tensim run: expectation failed: " + line.substring("FAIL: ".length()));
+            }
+        }
     }
 }

@@ -14,6 +14,7 @@ import org.tensim.io.RunStatus;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneBody;
+import org.tensim.scene.file.SceneExpectation;
 import org.tensim.scene.file.SceneProbe;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
@@ -24,8 +25,10 @@ import org.tensim.solver.integrators.Integrators;
  * Runs a loaded {@link Scene} headless: each body is its own {@link Simulation}, all stepped in lockstep with
  * the run's integrator and step; after the start and after every {@code every}-th step one CSV row holds the time
  * ({@code t_s}, the first body's clock) and every probe's values. The summary holds the scene file and its digest,
- * every {@code --set}, the run's settings, each body's node count and each CSV column's minimum and maximum.
- * A body that diverges ends the run with status "diverged"; the CSV keeps the rows written.
+ * every {@code --set}, the run's settings, each body's node count and each CSV column's minimum and maximum, then,
+ * for a scene with an {@code expect:} block, each check's measured value and verdict ({@link SceneExpectations}).
+ * A body that diverges ends the run with status "diverged"; the CSV keeps the rows written. A run that ends but
+ * fails a check has status "expectation_failed" (exit code 3), its outputs kept.
  */
 public final class SceneRunner {
     private SceneRunner() {
@@ -38,22 +41,17 @@ public final class SceneRunner {
         for (SceneBody b : bodies) {
             sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator())));
         }
-        List<String> header = new ArrayList<>(List.of("t_s"));
-        for (SceneProbe p : scene.probes()) {
-            header.addAll(p.columns());
-        }
+        List<String> header = SceneExpectation.columns(scene.probes());
         double[] row = new double[header.size()];
-        double[] min = new double[row.length];
-        double[] max = new double[row.length];
-        java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
-        java.util.Arrays.fill(max, Double.NEGATIVE_INFINITY);
+        SceneExpectations.Columns stats = new SceneExpectations.Columns(header);
         Simulation clock = sims.values().iterator().next();
         long steps = run.steps();
         long made = 0;
         SimulationDivergedException diverged = null;
         try (CsvWriter w = folder.csv(run.csv(), header, 1000)) {
             Progress progress = Progress.start("run", run.durationS());
-            sample(scene, sims, 0, row, min, max);
+            sample(scene, sims, 0, row);
+            stats.add(row);
             w.row(row);
             for (long i = 1; i <= steps; i++) {
                 RunSignals.checkStop();
@@ -62,7 +60,8 @@ public final class SceneRunner {
                 }
                 made = i;
                 if (i % run.every() == 0) {
-                    sample(scene, sims, clock.time(), row, min, max);
+                    sample(scene, sims, clock.time(), row);
+                    stats.add(row);
                     w.row(row);
                 }
                 progress.update(clock.time());
@@ -86,22 +85,31 @@ public final class SceneRunner {
         s.put("body_nodes", nodes);
         Map<String, Object> range = new LinkedHashMap<>();
         for (int c = 1; c < header.size(); c++) {
-            range.put(header.get(c), Map.of("min", finite(min[c]), "max", finite(max[c])));
+            range.put(header.get(c), Map.of("min", finite(stats.min(c)), "max", finite(stats.max(c))));
         }
         s.put("columns", range);
         if (diverged != null) {
             s.put("diverged", diverged.getMessage());
             s.put("diverged_at_s", diverged.timeSeconds());
         }
-        return folder.finish(diverged == null ? RunStatus.OK : RunStatus.DIVERGED, s);
+        RunStatus status = diverged == null ? RunStatus.OK : RunStatus.DIVERGED;
+        if (!scene.expect().isEmpty()) {
+            List<Map<String, Object>> outcomes = SceneExpectations.evaluate(scene.expect(), stats, s);
+            long failed = SceneExpectations.failed(outcomes);
+            s.put("expectations", outcomes);
+            s.put("expectations_failed", failed);
+            if (failed > 0 && status == RunStatus.OK) {
+                status = RunStatus.EXPECTATION_FAILED;
+            }
+        }
+        return folder.finish(status, s);
     }
 
     private static Object finite(double v) {
         return Double.isFinite(v) ? v : "none";
     }
 
-    private static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row, double[] min,
-            double[] max) {
+    private static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row) {
         row[0] = t;
         int c = 1;
         double[] d = new double[3];
@@ -124,21 +132,19 @@ public final class SceneRunner {
                 row[c++] = d[1];
                 row[c++] = d[2];
             } else {
+                // A region's mean, or a surface vertex's weighted sum over the nodes carrying it.
                 double[] sum = new double[3];
-                for (int n : p.nodes()) {
-                    st.displacement(n, d);
-                    sum[0] += d[0];
-                    sum[1] += d[1];
-                    sum[2] += d[2];
+                for (int i = 0; i < p.nodes().length; i++) {
+                    st.displacement(p.nodes()[i], d);
+                    double w = p.weights() == null ? 1 : p.weights()[i];
+                    sum[0] += w * d[0];
+                    sum[1] += w * d[1];
+                    sum[2] += w * d[2];
                 }
                 for (int a = 0; a < 3; a++) {
-                    row[c++] = sum[a] / p.nodes().length;
+                    row[c++] = p.weights() == null ? sum[a] / p.nodes().length : sum[a];
                 }
             }
-        }
-        for (int i = 1; i < row.length; i++) {
-            min[i] = Math.min(min[i], row[i]);
-            max[i] = Math.max(max[i], row[i]);
         }
     }
 }

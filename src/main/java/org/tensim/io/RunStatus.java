@@ -13,6 +13,11 @@ public enum RunStatus {
     DIVERGED(1),
     /** An error stopped the run (bad mesh, file-system error, ...); exit 1. */
     FAILED(1),
+    /**
+     * The run ended, every output written, but what its scene file's {@code expect:} block states does not hold
+     * (each check's measured value and verdict are in the summary); exit 3.
+     */
+    EXPECTATION_FAILED(3),
     /** SIGINT (Ctrl-C) or SIGTERM; the CSVs end on their last whole row; exit 130. */
     INTERRUPTED(130);
 

@@ -27,9 +27,10 @@ class OptionPropertiesTest {
     /** Values no numeric option may take. */
     static final List<String> BAD = List.of("abc", "", "NaN", "nan", "Infinity", "-Infinity", "1e400", "-1e400",
             "1..2", "0x", "--", "1,,2", "\u00e9");
-    /** Beyond int and long, or not whole: no count option may take them. */
-    static final List<String> BAD_INTEGERS = List.of("99999999999999999999", "2147483648", "-2147483649", "1.5",
-            "1e3");
+    /** Beyond long, or not whole: no whole-number option may take them. */
+    static final List<String> BAD_LONGS = List.of("99999999999999999999", "1.5", "1e3");
+    /** Beyond int as well: no int option may take them (a long option, such as a seed, may). */
+    static final List<String> BAD_INTS = List.of("2147483648", "-2147483649");
     /** The GUI opens a window for any value its options accept: only values no parser accepts. */
     static final List<String> BAD_FOR_ANY_PARSER = List.of("abc", "", "1..2", "0x", "1,,2", "\u00e9");
 
@@ -46,9 +47,9 @@ class OptionPropertiesTest {
                 boolean numeric = isNumber(t) || ((List.class.isAssignableFrom(t) || t.isArray()) && isNumber(
                         t.isArray() ? t.getComponentType() : item));
                 if (numeric && !o.usageHelp() && !o.versionHelp()) {
-                    boolean integer = t == int.class || t == Integer.class || t == long.class || t == Long.class
-                            || item == Integer.class || item == Long.class || t == int[].class;
-                    pairs.add(new String[] {e.getKey(), o.longestName(), integer ? "int" : "double"});
+                    boolean isLong = t == long.class || t == Long.class || item == Long.class;
+                    boolean isInt = t == int.class || t == Integer.class || item == Integer.class || t == int[].class;
+                    pairs.add(new String[] {e.getKey(), o.longestName(), isInt ? "int" : isLong ? "long" : "double"});
                 }
             }
         }
@@ -67,8 +68,11 @@ class OptionPropertiesTest {
         RandomCases.check("numeric options", 250, r -> {
             String[] p = options.get(r.nextInt(options.size()));
             List<String> values = new ArrayList<>(p[0].equals("gui") ? BAD_FOR_ANY_PARSER : BAD);
+            if (p[2].equals("int") || p[2].equals("long")) {
+                values.addAll(BAD_LONGS);
+            }
             if (p[2].equals("int")) {
-                values.addAll(BAD_INTEGERS);
+                values.addAll(BAD_INTS);
             }
             refused(new Case(p[0], p[1], values.get(r.nextInt(values.size()))));
         });

@@ -133,11 +133,14 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
             tendon.add(left(massSpring));
             tendon.add(left(tensegrity));
             tendon.add(left(new JLabel("<html><i>A change rebuilds the tendon: the run restarts.</i></html>")));
-        } else {
+        } else if ("cube".equals(tuning.scene())) {
             tendon.add(left(new JLabel("<html>Both models are shown side by side:<br>"
                     + "mass-spring left, tensegrity right.</html>")));
         }
-        add(section("Tendon model", tendon));
+        // A scene file's zones give its models: no tendon section.
+        if (tuning.hasTendonChoice() || "cube".equals(tuning.scene())) {
+            add(section("Tendon model", tendon));
+        }
 
         JPanel view = column();
         view.add(left(button("Reset view", "resetView", "Back to the initial camera", actions::resetView)));

@@ -33,6 +33,11 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
+    @picocli.CommandLine.Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
+            description = "A scene file (docs/scenes.md) to open instead of a built-in scene; it runs with its own"
+                    + " integrator and step.")
+    Path file;
+
     @Option(names = "--scene", paramLabel = "NAME",
             description = "Scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).",
             completionCandidates = SceneNames.class)
@@ -132,15 +137,18 @@ public final class GuiCommand implements Callable<Integer> {
                     + " dome, and the preset " + preset + " opens the mesh " + options.mesh
                     + ": leave out one of them");
         }
-        SceneFactory factory = TunableScenes.factory(scene, options);
+        SceneFactory factory = file != null ? sceneFile() : TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);
         Path dir = configDir != null ? configDir : ConfigDir.resolve();
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
-        GuiWindow w = open(factory, fresh ? null : dir, script ? null : dir, preset, !paused && !script, threadCount,
-                TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
+        // A scene file runs with its own settings: nothing last-used is restored over them, nor saved.
+        boolean keep = file == null;
+        GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
+                !paused && !script, threadCount,
+                keep && TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
                 options.thorax != null);
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
@@ -167,6 +175,17 @@ public final class GuiCommand implements Callable<Integer> {
         }
         w.awaitClosed();
         return 0;
+    }
+
+    /** The factory of the scene file, loaded (and so checked) before any window; refuses built-in scene options. */
+    private SceneFactory sceneFile() {
+        for (String o : java.util.List.of("--scene", "--mesh", "--pick", "--preset", "--thorax", "--muscle-load")) {
+            if (spec.commandLine().getParseResult().hasMatchedOption(o)) {
+                throw new IllegalArgumentException(o + " chooses a built-in scene: leave it out with a scene file ("
+                        + file + ")");
+            }
+        }
+        return org.tensim.scene.tunable.FileViewScene.factory(file);
     }
 
     /**
@@ -239,6 +258,8 @@ public final class GuiCommand implements Callable<Integer> {
         } else if (realTime) {
             tuning.setIntegrator(Integrators.REAL_TIME);
             tuning.set(Tuning.TIME_STEP, Integrators.REAL_TIME_STEP_S);
+        } else if (first.defaultIntegrator() != null) {
+            tuning.setIntegrator(first.defaultIntegrator());
         }
         String note = restoreDir == null ? null
                 : restore(tuning, ConfigDir.lastUsed(restoreDir, first.name()), loadGiven);

@@ -1,16 +1,18 @@
 package org.tensim.experiment.diaphragm;
 
-import org.tensim.io.mesh.SurfaceDistance;
+import org.tensim.model.LinearMapping;
+import org.tensim.scene.diaphragm.ShellMapping;
 
 /**
- * The error of a coarse model's displacement field against a fine one's, with the coarse
- * field interpolated where each fine node lies (package-private, used by
- * {@link ResolutionStudy#error}).
+ * The error of a coarse model's displacement field against a fine one's, the coarse field carried to each
+ * fine node by the mapping that carries a fine mesh on a coarse model's shell ({@link ShellMapping}; package-private,
+ * used by {@link ResolutionStudy#error}).
  *
- * <p>Each upper-surface node of the fine model (rest position p) is projected on the closest
- * point of the coarse model's upper surface at rest (its triangles); the coarse displacement
- * there is the linear interpolation of its corners' (barycentric weights: the shape functions
- * of a linear triangle). Then {@code e = sqrt(sum |u_coarse(p) - u_fine|^2 / sum |u_fine|^2)}.
+ * <p>Each upper-surface node of the fine model (rest position p) is given its coordinates in the coarse shell at rest:
+ * the nearest triangle of the coarse upper surface, the barycentric weights along it (the shape functions of a
+ * linear triangle) and the depth through the thickness towards the corners' partners on the lower face, which
+ * reproduce p exactly ({@link ShellMapping}); the coarse displacement there is the same weighted sum of its nodes'.
+ * Then {@code e = sqrt(sum |u_coarse(p) - u_fine|^2 / sum |u_fine|^2)}.
  * Linear interpolation adds an error of second order in the coarse element size, where taking
  * the nearest coarse node would add one of first order (the displacement gradient times half an
  * edge, which at 13 mm elements on a dome of 18 mm excursion is itself several per cent).
@@ -19,16 +21,7 @@ final class FieldTransfer {
     private FieldTransfer() {
     }
 
-    /**
-     * @param coarseTriangles the coarse upper surface's triangles, as node ids (3 each)
-     */
-    static double relativeRms(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] coarseRest,
-            double[] coarseEnd, int[] coarseTriangles) {
-        return relativeRms(fineRest, fineEnd, fineUpper,
-                differences(fineRest, fineEnd, fineUpper, coarseRest, coarseEnd, coarseTriangles));
-    }
-
-    /** As above, from the differences {@link #differences} gave (3 per fine node, m). */
+    /** Relative RMS of the differences {@link #differences} gave (3 per fine node, m) over the fine upper nodes. */
     static double relativeRms(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] diff) {
         double num = 0;
         double den = 0;
@@ -45,64 +38,52 @@ final class FieldTransfer {
         return Math.sqrt(num / den);
     }
 
-    /**
-     * Per fine node (3 each, m): the coarse displacement interpolated where the node lies minus the fine one,
-     * on the upper nodes; 0 elsewhere. What {@link #relativeRms} sums, for finding where the error sits.
-     */
-    static double[] differences(double[] fineRest, double[] fineEnd, boolean[] fineUpper, double[] coarseRest,
-            double[] coarseEnd, int[] coarseTriangles) {
-        double[] diff = new double[fineRest.length];
-        int nt = coarseTriangles.length / 3;
-        double[] box = new double[6 * nt];
-        for (int t = 0; t < nt; t++) {
-            for (int a = 0; a < 3; a++) {
-                double lo = Double.POSITIVE_INFINITY;
-                double hi = Double.NEGATIVE_INFINITY;
-                for (int k = 0; k < 3; k++) {
-                    double c = coarseRest[3 * coarseTriangles[3 * t + k] + a];
-                    lo = Math.min(lo, c);
-                    hi = Math.max(hi, c);
-                }
-                box[6 * t + a] = lo;
-                box[6 * t + 3 + a] = hi;
+    /** The fine model's upper nodes (in their order) carried by the coarse model's shell at rest. */
+    static ShellMapping mapping(ResolutionStudy.Run fine, ResolutionStudy.Run coarse) {
+        boolean[] fu = fine.upper();
+        int n = 0;
+        for (boolean b : fu) {
+            n += b ? 1 : 0;
+        }
+        double[] points = new double[3 * n];
+        for (int i = 0, k = 0; i < fu.length; i++) {
+            if (fu[i]) {
+                System.arraycopy(fine.rest(), 3 * i, points, 3 * k++, 3);
             }
         }
-        double[] p = new double[3];
-        double[] w = new double[3];
-        double[] best = new double[3];
-        for (int i = 0; i < fineUpper.length; i++) {
-            if (!fineUpper[i]) {
+        boolean[] pointUpper = new boolean[n];
+        java.util.Arrays.fill(pointUpper, true);
+        int nc = coarse.rest().length / 3;
+        int[] partners = coarse.partners();
+        if (partners == null) {
+            partners = new int[nc];
+            java.util.Arrays.fill(partners, -1);
+        }
+        return ShellMapping.of(coarse.rest(), coarse.upperTriangles(), coarse.upper(), partners, points, pointUpper);
+    }
+
+    /**
+     * Per fine node (3 each, m): the coarse displacement carried where the node lies ({@link #mapping}) minus the
+     * fine one, on the upper nodes; 0 elsewhere. What {@link #relativeRms} sums, for finding where the error sits.
+     */
+    static double[] differences(ResolutionStudy.Run fine, ResolutionStudy.Run coarse) {
+        LinearMapping m = mapping(fine, coarse).mapping();
+        double[] uc = new double[coarse.rest().length];
+        for (int k = 0; k < uc.length; k++) {
+            uc[k] = coarse.end()[k] - coarse.rest()[k];
+        }
+        double[] carried = new double[3 * m.pointCount()];
+        m.apply(uc, carried);
+        double[] diff = new double[fine.rest().length];
+        boolean[] fu = fine.upper();
+        for (int i = 0, k = 0; i < fu.length; i++) {
+            if (!fu[i]) {
                 continue;
             }
             for (int a = 0; a < 3; a++) {
-                p[a] = fineRest[3 * i + a];
+                diff[3 * i + a] = carried[3 * k + a] - (fine.end()[3 * i + a] - fine.rest()[3 * i + a]);
             }
-            double bd = Double.POSITIVE_INFINITY;
-            int bt = -1;
-            for (int t = 0; t < nt; t++) {
-                double gap = 0; // distance from p to the triangle's box: a lower bound of its distance
-                for (int a = 0; a < 3; a++) {
-                    double g = Math.max(box[6 * t + a] - p[a], p[a] - box[6 * t + 3 + a]);
-                    gap += g > 0 ? g * g : 0;
-                }
-                if (gap >= bd) {
-                    continue;
-                }
-                double d = SurfaceDistance.closest(coarseRest, coarseTriangles, t, p[0], p[1], p[2], w);
-                if (d < bd) {
-                    bd = d;
-                    bt = t;
-                    System.arraycopy(w, 0, best, 0, 3);
-                }
-            }
-            for (int a = 0; a < 3; a++) {
-                double uc = 0;
-                for (int k = 0; k < 3; k++) {
-                    int v = coarseTriangles[3 * bt + k];
-                    uc += best[k] * (coarseEnd[3 * v + a] - coarseRest[3 * v + a]);
-                }
-                diff[3 * i + a] = uc - (fineEnd[3 * i + a] - fineRest[3 * i + a]);
-            }
+            k++;
         }
         return diff;
     }

@@ -43,8 +43,7 @@ final class ResolutionAnalysis {
         double[] differences(ResolutionStudy.Run fine, ResolutionStudy.Run coarse) {
             return byFine.computeIfAbsent(fine, f -> new IdentityHashMap<>()).computeIfAbsent(coarse, c -> {
                 computed++;
-                return FieldTransfer.differences(fine.rest(), fine.end(), fine.upper(), c.rest(), c.end(),
-                        c.upperTriangles());
+                return FieldTransfer.differences(fine, c);
             });
         }
 

@@ -69,15 +69,24 @@ public final class ResolutionStudy {
     /**
      * One model's outcome: rest and end positions of its diaphragm nodes (3 per node, m), which of
      * them are on the upper surface, the upper surface's triangles (node ids, 3 each; null: the error
-     * falls back to the nearest node), its mean edge length (m), apex descent (m, positive down) and
-     * cost in wall seconds per simulated second.
+     * falls back to the nearest node), each node's partner across the thickness ({@link TwoSurfaces#partner};
+     * null: none, the upper surface carries the fine field alone), its mean edge length (m), apex descent (m,
+     * positive down) and cost in wall seconds per simulated second.
      */
     public record Run(String family, String label, int nodes, int springs, double elementSizeM, double costPerSimS,
-            double dt, double apexDescentM, double[] rest, double[] end, boolean[] upper, int[] upperTriangles) {
+            double dt, double apexDescentM, double[] rest, double[] end, boolean[] upper, int[] upperTriangles,
+            int[] partners) {
         /** A run whose element size, apex descent and triangles are not recorded, for comparisons of fields only. */
         public Run(String family, String label, int nodes, int springs, double costPerSimS, double dt, double[] rest,
                 double[] end, boolean[] upper) {
-            this(family, label, nodes, springs, Double.NaN, costPerSimS, dt, Double.NaN, rest, end, upper, null);
+            this(family, label, nodes, springs, Double.NaN, costPerSimS, dt, Double.NaN, rest, end, upper, null, null);
+        }
+
+        /** A run of a surface without partners across the thickness. */
+        public Run(String family, String label, int nodes, int springs, double elementSizeM, double costPerSimS,
+                double dt, double apexDescentM, double[] rest, double[] end, boolean[] upper, int[] upperTriangles) {
+            this(family, label, nodes, springs, elementSizeM, costPerSimS, dt, apexDescentM, rest, end, upper,
+                    upperTriangles, null);
         }
     }
 
@@ -302,14 +311,16 @@ public final class ResolutionStudy {
         double wall = (System.nanoTime() - t0) / 1e9;
         int nd = scene.diaphragmNodes();
         boolean[] upper = new boolean[nd];
+        int[] partners = new int[nd];
         for (int v = 0; v < nd; v++) {
             upper[v] = surf.isUpper(v);
+            partners[v] = surf.partner(v);
         }
         int a = scene.apexNode();
         Run r = new Run(family, label, scene.topology().nodeCount(), scene.topology().springs().size(),
                 meanEdge(surf.mesh()), wall / sim.time(), dt, sim.state().x0[3 * a + 2] - sim.state().x[3 * a + 2],
                 Arrays.copyOf(sim.state().x0, 3 * nd), Arrays.copyOf(sim.state().x, 3 * nd), upper,
-                scene.upperTriangles());
+                scene.upperTriangles(), partners);
         if (s.log() != null) {
             s.log().println(String.format(Locale.ROOT, "%s, %s: %d nodes, %d springs, mean edge %.2f mm, dt %.2e s,"
                     + " %.2f wall s per simulated s, apex descent %.2f mm", family, label, r.nodes(), r.springs(),
@@ -341,13 +352,13 @@ public final class ResolutionStudy {
 
     /**
      * Relative RMS difference of the end displacement fields over the fine model's upper nodes: the
-     * coarse field interpolated on its upper surface ({@link FieldTransfer}), or, for a run without
+     * coarse field carried to them by the shell mapping ({@link FieldTransfer}), or, for a run without
      * triangles, taken at the nearest upper node of the coarse model.
      */
     public static double error(Run fine, Run coarse) {
         if (coarse.upperTriangles() != null) {
-            return FieldTransfer.relativeRms(fine.rest(), fine.end(), fine.upper(), coarse.rest(), coarse.end(),
-                    coarse.upperTriangles());
+            return FieldTransfer.relativeRms(fine.rest(), fine.end(), fine.upper(),
+                    FieldTransfer.differences(fine, coarse));
         }
         double num = 0;
         double den = 0;

@@ -21,6 +21,8 @@ public final class BodyContext {
     private final MapReader keys;
     private final SceneUnits units;
     private final Path folder;
+    private EmbeddedSurface surface;
+    private final java.util.List<String> report = new java.util.ArrayList<>();
 
     public BodyContext(String name, MapReader keys, SceneUnits units, Path folder) {
         this.name = name;
@@ -86,5 +88,25 @@ public final class BodyContext {
         } catch (IOException e) {
             throw SceneException.at(node, "cannot read " + f + " (" + e.getMessage() + ")");
         }
+    }
+
+    /** Records the surface the body carries on its nodes (drawn by the GUI, read by surface probes). */
+    public void embed(EmbeddedSurface s) {
+        surface = s;
+    }
+
+    /** The surface recorded by {@link #embed}, or null. */
+    public EmbeddedSurface surface() {
+        return surface;
+    }
+
+    /** Adds a line to what {@code tensim check} prints about the body (e.g. a volume's build report). */
+    public void report(String line) {
+        report.add(line);
+    }
+
+    /** The lines added by {@link #report}. */
+    public java.util.List<String> reportLines() {
+        return java.util.List.copyOf(report);
     }
 }

@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.tensim.scene.file.bodies.CubeBody;
+import org.tensim.scene.file.bodies.VolumeBodyType;
 
 /** The body types scene files may name, by their {@link BodyType#name()}: the built-in ones and any registered. */
 public final class BodyTypes {
@@ -12,6 +13,7 @@ public final class BodyTypes {
 
     static {
         register(new CubeBody());
+        register(new VolumeBodyType());
     }
 
     private BodyTypes() {

@@ -7,11 +7,14 @@ import org.tensim.scene.conditions.TimeLaw;
 
 /**
  * A scene file as loaded by {@link SceneLoader}: its bodies (each with its topology, conditions applied), its
- * named laws and regions (resolved to nodes), its probes and its run settings. Every value is in SI.
+ * named laws and regions (resolved to nodes), its probes, its run settings and what its run must show. Every value
+ * is in SI but the expectations', which are in their columns' units.
  *
  * @param file      the scene file
  * @param overrides the {@code --set} options applied, in order
+ * @param expect    the {@code expect:} block's checks, in order (empty without one)
  */
 public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
-        Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run) {
+        Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
+        List<SceneExpectation> expect) {
 }

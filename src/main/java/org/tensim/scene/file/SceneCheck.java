@@ -14,7 +14,8 @@ public final class SceneCheck {
 
     /**
      * The report's lines: each body's type and counts (nodes, springs, rigid links, fixed nodes, loads), each
-     * region's resolved node count and bounding box per body, each probe's columns and the run's settings.
+     * region's resolved node count and bounding box per body, each probe's columns, each expectation's range and
+     * the run's settings.
      */
     public static List<String> report(Scene s) {
         List<String> out = new ArrayList<>();
@@ -28,6 +29,9 @@ public final class SceneCheck {
                     + " driven, %d loaded; nodes in %s", b.name(), b.type(), b.topology().nodeCount(),
                     b.topology().springs().size(), b.topology().rigidLinks().size(), fixed, driven,
                     b.topology().forces().size(), box(b.bounds())));
+            for (String line : b.report()) {
+                out.add("  " + line);
+            }
         }
         for (SceneRegions.Region r : s.regions().values()) {
             for (Map.Entry<String, BitSet> e : r.nodes().entrySet()) {
@@ -38,6 +42,9 @@ public final class SceneCheck {
         }
         for (SceneProbe p : s.probes()) {
             out.add("probe " + p.name() + " on " + p.body() + ": " + String.join(", ", p.columns()));
+        }
+        for (SceneExpectation e : s.expect()) {
+            out.add("expect " + e.label() + " " + e.range());
         }
         out.add(String.format(Locale.ROOT, "run: %s, dt %s s, %s s (%d steps), CSV %s every %d step(s)",
                 s.run().integrator(), s.run().dtS(), s.run().durationS(), s.run().steps(), s.run().csv(),

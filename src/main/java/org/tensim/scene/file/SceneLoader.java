@@ -10,15 +10,16 @@ import org.tensim.scene.conditions.TimeLaw;
 /**
  * Reads a scene file (docs/scenes.md; schema docs/scene.schema.json) into a {@link Scene}: the tree with every
  * value's place ({@link SceneTree}), the {@code --set} overrides ({@link Overrides}), then, in this order, the
- * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the probes and
- * the run settings. Every refusal is a {@link SceneException} naming file, line, column and key path.
+ * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the
+ * probes, the run settings and the expectations ({@link ExpectBlock}). Every refusal is a {@link SceneException}
+ * naming file, line, column and key path.
  */
 public final class SceneLoader {
     /** The format version this loader reads. */
     public static final int VERSION = 1;
     /** The top-level keys. */
     public static final List<String> KEYS = List.of("version", "description", "units", "bodies", "laws", "regions",
-            "zones", "conditions", "probes", "run");
+            "zones", "conditions", "probes", "run", "expect");
 
     private SceneLoader() {
     }
@@ -57,7 +58,8 @@ public final class SceneLoader {
         SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units);
         List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions);
         RunSettings run = RunSettings.read(top, units);
-        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run);
+        List<SceneExpectation> expect = ExpectBlock.read(top.optional("expect"), bodies, probes, units);
+        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect);
     }
 
     private static void version(MapReader top) {
@@ -86,8 +88,9 @@ public final class SceneLoader {
             MapReader r = new MapReader(b, keys);
             Topology t = new Topology();
             int[] vertices;
+            BodyContext ctx = new BodyContext(e.getKey(), r, units, folder);
             try {
-                vertices = type.build(new BodyContext(e.getKey(), r, units, folder), t);
+                vertices = type.build(ctx, t);
             } catch (SceneException ex) {
                 throw ex;
             } catch (IllegalArgumentException ex) {
@@ -96,7 +99,8 @@ public final class SceneLoader {
             if (t.nodeCount() == 0) {
                 throw SceneException.at(b, "body '" + e.getKey() + "' has no node");
             }
-            bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b));
+            bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b, ctx.surface(),
+                    ctx.reportLines()));
         }
         return bodies;
     }

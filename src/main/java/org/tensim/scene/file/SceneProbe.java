@@ -9,6 +9,8 @@ import java.util.Map;
  * What a run writes, one CSV column per value, units in the names:
  * <ul>
  * <li>{@code {body: b, node: 13}}: the node's displacement, {@code NAME_dx_m, NAME_dy_m, NAME_dz_m};</li>
+ * <li>{@code {body: b, vertex: 120}}: the displacement of vertex 120 of the surface the body carries (a volume's
+ * embedded surface), {@code sum_k w_k u_k} over the nodes carrying it, {@code NAME_dx_m, ...};</li>
  * <li>{@code {body: b, region: r}} (or {@code quantity: mean}): the mean displacement of the region's nodes,
  * {@code NAME_mean_dx_m, ...};</li>
  * <li>{@code {body: b, region: r, quantity: extents}}: the bounding box of the region's current positions,
@@ -19,11 +21,17 @@ import java.util.Map;
  * @param name     the probe's name (its key under {@code probes:}), the columns' prefix
  * @param body     the body's name
  * @param nodes    the nodes it reads
- * @param quantity displacement (one node), mean or extents
+ * @param quantity displacement (one node or surface vertex), mean or extents
+ * @param weights  the nodes' weights of a surface vertex (summing to 1); null for a node or a region
  */
-public record SceneProbe(String name, String body, int[] nodes, String quantity) {
+public record SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights) {
     /** The keys of a probe. */
-    public static final List<String> KEYS = List.of("body", "node", "region", "quantity");
+    public static final List<String> KEYS = List.of("body", "node", "vertex", "region", "quantity");
+
+    /** A probe of a node or a region. */
+    public SceneProbe(String name, String body, int[] nodes, String quantity) {
+        this(name, body, nodes, quantity, null);
+    }
     /** The quantities of a region probe. */
     public static final List<String> REGION_QUANTITIES = List.of("mean", "extents");
 
@@ -65,10 +73,14 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity)
                 throw SceneException.at(r.node(), "missing required key 'body' (the scene has "
                         + bodies.size() + " bodies: " + String.join(", ", bodies.keySet()) + ")");
             }
-            if (r.has("node") == r.has("region")) {
-                throw SceneException.at(r.node(), "give either node (an index) or region (a name)");
+            int ways = (r.has("node") ? 1 : 0) + (r.has("vertex") ? 1 : 0) + (r.has("region") ? 1 : 0);
+            if (ways != 1) {
+                throw SceneException.at(r.node(), "give one of node (an index), vertex (a surface vertex's index) or"
+                        + " region (a name)");
             }
-            if (r.has("node")) {
+            if (r.has("vertex")) {
+                out.add(vertex(e.getKey(), body, bodies.get(body), r));
+            } else if (r.has("node")) {
                 SceneNode n = r.scalar("node");
                 long k = MapReader.integer(n, 0);
                 SceneBody b = bodies.get(body);
@@ -90,5 +102,28 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity)
             }
         }
         return out;
+    }
+
+    private static SceneProbe vertex(String name, String body, SceneBody b, MapReader r) {
+        SceneNode n = r.scalar("vertex");
+        if (b.surface() == null) {
+            throw SceneException.at(n, "body '" + body + "' (type " + b.type() + ") carries no surface: probe a node"
+                    + " or a region");
+        }
+        org.tensim.model.LinearMapping m = b.surface().mapping();
+        long k = MapReader.integer(n, 0);
+        if (k >= m.pointCount()) {
+            throw SceneException.at(n, "vertex " + k + " does not exist: body '" + body + "''s surface has "
+                    + m.pointCount() + " (0 to " + (m.pointCount() - 1) + ")");
+        }
+        int v = (int) k;
+        int[] nodes = new int[m.entries(v)];
+        double[] w = new double[nodes.length];
+        for (int i = 0; i < nodes.length; i++) {
+            nodes[i] = m.node(v, i);
+            w[i] = m.weight(v, i);
+        }
+        r.choice("quantity", List.of("displacement"), "displacement");
+        return new SceneProbe(name, body, nodes, "displacement", w);
     }
 }

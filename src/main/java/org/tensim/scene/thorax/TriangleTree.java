@@ -4,15 +4,17 @@ import org.tensim.io.mesh.SurfaceDistance;
 
 /**
  * A bounding-volume hierarchy over a triangle surface for the two queries a distance grid is built from: the
- * distance to the nearest triangle (exact: Ericson's closest point, pruned by box distance) and the generalised
+ * distance to the nearest triangle (exact: Ericson's closest point, pruned by box distance; also as the triangle
+ * and the closest point's barycentric weights, {@link #nearest}) and the generalised
  * winding number (Jacobson, Kavan and Sorkine-Hornung, SIGGRAPH 2013), summed exactly over nearby triangles and,
  * for clusters seen from farther than {@code beta} times their radius, by their dipole term (the first-order
  * approximation of Barill et al., "Fast winding numbers for soups and clouds", SIGGRAPH 2018). The winding number is
  * 1 inside a closed, outward-wound surface, 0 outside, and changes smoothly across a small hole, so "inside where
  * it exceeds 1/2" tolerates the holes and non-manifold edges of segmented bones.
  *
- * <p>Used by {@link DistanceGrid} (signs of a bone's distance field) and by the volume body's clipping of a lattice
- * to a closed surface ({@code org.tensim.scene.volume}).
+ * <p>Used by {@link DistanceGrid} (signs of a bone's distance field), by the volume body's clipping of a lattice
+ * to a closed surface ({@code org.tensim.scene.volume}) and by the shell mapping's search for the wedge a fine
+ * point lies in ({@code org.tensim.scene.diaphragm.ShellMapping}).
  *
  * <p>Queries do not allocate beyond the stack the caller passes ({@link #newStack()}), so one tree can be queried
  * from several threads, each with its own stack.
@@ -195,7 +197,18 @@ public final class TriangleTree {
 
     /** Distance from the point to the nearest triangle, m. */
     public double distance(double px, double py, double pz, int[] stack) {
+        int t = nearest(px, py, pz, stack, null);
+        return Math.sqrt(SurfaceDistance.closest(x, tri, t, px, py, pz, null));
+    }
+
+    /**
+     * The triangle nearest the point (its index in the triangles given), with in {@code out} (length at least 4,
+     * or null) the barycentric weights of the closest point on it, of its corners in their order (out[0..2]), and
+     * the squared distance to it (out[3], m^2). Of triangles at the same distance, the first searched is taken.
+     */
+    public int nearest(double px, double py, double pz, int[] stack, double[] out) {
         double best = Double.POSITIVE_INFINITY;
+        int bestT = -1;
         int top = 0;
         stack[top++] = 0;
         while (top > 0) {
@@ -205,7 +218,11 @@ public final class TriangleTree {
             }
             if (left[n] < 0) {
                 for (int i = start[n], e = start[n] + count[n]; i < e; i++) {
-                    best = Math.min(best, SurfaceDistance.closest(x, tri, order[i], px, py, pz, null));
+                    double d = SurfaceDistance.closest(x, tri, order[i], px, py, pz, null);
+                    if (d < best) {
+                        best = d;
+                        bestT = order[i];
+                    }
                 }
                 continue;
             }
@@ -220,7 +237,10 @@ public final class TriangleTree {
                 stack[top++] = b;
             }
         }
-        return Math.sqrt(best);
+        if (out != null) {
+            out[3] = SurfaceDistance.closest(x, tri, bestT, px, py, pz, out);
+        }
+        return bestT;
     }
 
     private double boxSq(int n, double px, double py, double pz) {

@@ -58,6 +58,11 @@ public interface ViewScene {
         return null;
     }
 
+    /** The integrator the scene is meant to run with (an {@code Integrators} name), or null for the GUI's default. */
+    default String defaultIntegrator() {
+        return null;
+    }
+
     /** The time step the scene is meant to run at, s. */
     double defaultTimeStep();
 

@@ -34,6 +34,7 @@ class SceneSchemaTest {
         SceneConditions.KEYS.forEach((t, k) -> m.put("condition_" + t, k));
         m.put("zone", SceneZones.KEYS);
         m.put("probe", SceneProbe.KEYS);
+        m.put("expect", ExpectBlock.KEYS);
         return m;
     }
 
