@@ -100,12 +100,31 @@ public final class VolumeStudyCommand implements Callable<Integer> {
             description = "Cell sizes for --mesh, m (default: ${DEFAULT-VALUE}).")
     List<Double> cells = List.of(0.01, 0.005);
 
+    @Option(names = "--scene", paramLabel = "FILE", description = "A scene file whose volume body is run as tensim"
+            + " run runs it, at its own cell and at the cell divided by each --refine factor, with the file's total"
+            + " load at each; its load's displacement is compared with its shape's known answer (a cantilever's"
+            + " Euler-Bernoulli tip deflection, a block's uniaxial strain, with lateral strains against nu) instead"
+            + " of the built-in studies (volume-scene.csv).")
+    Path scene;
+
+    @Option(names = "--refine", split = ",", paramLabel = "F[,F...]", description = "With --scene, the whole numbers"
+            + " the file's cell size is divided by (default: ${DEFAULT-VALUE}).")
+    List<Integer> refine = List.of(1, 2, 4);
+
+    @Option(names = "--body", paramLabel = "NAME", description = "With --scene, the volume body to refine (default:"
+            + " the file's only one).")
+    String body;
+
+    @Option(names = "--set", paramLabel = "KEY.PATH=VALUE", description = "With --scene, replaces one value of the"
+            + " file before it is refined, as tensim run's --set does (repeatable).")
+    List<String> sets = new ArrayList<>();
+
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "volume-study"));
 
     /** The files this command writes into --out (docs/outputs.md). */
     static final List<String> OUTPUTS = List.of("volume-cantilever.csv", "volume-block.csv",
-            "volume-convergence.png", "volume-meshes.csv");
+            "volume-convergence.png", "volume-meshes.csv", VolumeSceneStudy.CSV);
 
     /** Beam depth, m, and tip force, N (linear statics: the errors do not depend on them). */
     private static final double DEPTH_M = 0.02;
@@ -116,6 +135,10 @@ public final class VolumeStudyCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (scene != null) {
+            return RunFolder.run(out.folder(spec), "volume-study", OUTPUTS,
+                    run -> VolumeSceneStudy.run(run, scene, body, refine, sets));
+        }
         if (tetSplit != null) {
             switch (tetSplit.trim().toLowerCase(java.util.Locale.ROOT)) {
                 case "six":

@@ -95,4 +95,18 @@ class VolumeStudyCommandTest {
         assertEquals(18, built.get("springs").asInt(), "the cube's 12 edges and 6 face diagonals");
         assertEquals(1e-3, built.get("mass_kg").asDouble(), 1e-12, "1 cm^3 at 1000 kg/m^3");
     }
+
+    @Test
+    void refinesAScenesVolumeBodyAndWritesItsTable(@TempDir Path dir) throws Exception {
+        String[] r = run("volume-study", "--scene", "docs/examples/cantilever.yaml", "--refine", "1", "--out",
+                dir.toString());
+        assertEquals("0", r[0], r[2]);
+        assertEquals(1 + 1, Files.readAllLines(dir.resolve("volume-scene.csv")).size());
+        JsonNode s = new ObjectMapper().readTree(dir.resolve("summary.json").toFile());
+        assertEquals("cantilever", s.get("kind").asText());
+        assertEquals(-0.187, s.get("finest_error").asDouble(), 0.01);
+        String[] bad = run("volume-study", "--scene", "docs/examples/cube.yaml", "--out", dir.resolve("b").toString());
+        assertTrue(!"0".equals(bad[0]) && bad[2].contains("expected one volume body"), bad[2]);
+        assertTrue(!bad[2].contains("\tat org."), "no stack trace: " + bad[2]);
+    }
 }
