@@ -32,7 +32,9 @@ import org.tensim.solver.integrators.Integrators;
  * <ul>
  * <li>each force's work-conjugate displacement {@code sum_i f_i . u_i / |F|}, which for equal forces on the nodes
  * is the mean displacement of the loaded nodes along the force (m; positive along the force);</li>
- * <li>each region probe's mean displacement (m, x, y, z).</li>
+ * <li>each region probe's mean displacement (m, x, y, z);</li>
+ * <li>what oscillation is left (the first force's displacement's range over the run's last sixth), and where the
+ * run settles: the same lattice's small-displacement statics under the same loads.</li>
  * </ul>
  */
 public final class SceneRefinement {
@@ -59,9 +61,12 @@ public final class SceneRefinement {
      * @param steps       steps made
      * @param spreadM     the first force's conjugate displacement's range (max - min) over the run's last sixth, m:
      *                    what oscillation is left at the end (0 without a force)
+     * @param staticM     the first force's conjugate displacement in the small-displacement statics of the same
+     *                    lattice ({@link LinearStatics}: the file's fixed and driven nodes held, its forces at
+     *                    their full value), m: where the run settles, without its oscillation (NaN without a force)
      */
     public record Level(int factor, double cellM, int nodes, int[] loadedNodes, double[] conjugateM,
-            Map<String, double[]> probesM, long steps, double spreadM) {
+            Map<String, double[]> probesM, long steps, double spreadM, double staticM) {
     }
 
     /**
@@ -77,6 +82,11 @@ public final class SceneRefinement {
         /** (the first force's conjugate displacement - the known answer) / the known answer, at level i. */
         public double error(int i) {
             return levels.get(i).conjugateM()[0] / answer.displacementM() - 1;
+        }
+
+        /** As {@link #error}, for the same lattice's linear statics. */
+        public double staticError(int i) {
+            return levels.get(i).staticM() / answer.displacementM() - 1;
         }
     }
 
@@ -271,7 +281,38 @@ public final class SceneRefinement {
             }
         }
         return new Level(factor, cellM, s.bodies().get(name).topology().nodeCount(), loaded, conjugate, probes,
-                steps, loads.isEmpty() ? 0 : hi - lo);
+                steps, loads.isEmpty() ? 0 : hi - lo, statics(s, name, loads, loaded));
+    }
+
+    /** The first force's conjugate displacement in the linear statics of the body's lattice, m. */
+    private static double statics(Scene s, String name, List<Load> loads, int[] loaded) {
+        if (loads.isEmpty()) {
+            return Double.NaN;
+        }
+        var t = s.bodies().get(name).topology();
+        boolean[] fixed = new boolean[3 * t.nodeCount()];
+        for (var n : t.nodes()) {
+            boolean held = n.isFixed() || n.isDriven();
+            fixed[3 * n.id()] = fixed[3 * n.id() + 1] = fixed[3 * n.id() + 2] = held;
+        }
+        double[] f = new double[fixed.length];
+        for (int k = 0; k < loads.size(); k++) {
+            BitSet nodes = nodesIn(s, loads.get(k).region(), name);
+            double per = loads.get(k).totalN() / loaded[k];
+            for (int n = nodes.nextSetBit(0); n >= 0; n = nodes.nextSetBit(n + 1)) {
+                for (int a = 0; a < 3; a++) {
+                    f[3 * n + a] += per * loads.get(k).direction()[a];
+                }
+            }
+        }
+        double[] u = LinearStatics.solve(t, fixed, f, 1e-10).displacementM();
+        BitSet nodes = nodesIn(s, loads.get(0).region(), name);
+        double[] dir = loads.get(0).direction();
+        double sum = 0;
+        for (int n = nodes.nextSetBit(0); n >= 0; n = nodes.nextSetBit(n + 1)) {
+            sum += u[3 * n] * dir[0] + u[3 * n + 1] * dir[1] + u[3 * n + 2] * dir[2];
+        }
+        return sum / nodes.cardinality();
     }
 
     /** Equal forces F / N on N nodes: {@code sum f . u / F} is the mean of u along the force, m. */

@@ -30,7 +30,7 @@ final class VolumeSceneStudy {
         SceneRefinement.Result r = SceneRefinement.run(file, body, factors, sets);
         SceneRefinement.Answer a = r.answer();
         List<String> header = new ArrayList<>(List.of("factor", "cell_m", "nodes", "loaded_nodes", "load_n",
-                "displacement_m", "known_answer_m", "error", "last_sixth_range_m"));
+                "displacement_m", "known_answer_m", "error", "last_sixth_range_m", "statics_m", "statics_error"));
         List<String> lateral = a == null ? List.of() : new ArrayList<>(a.lateral().keySet());
         for (String p : lateral) {
             header.add(p + "_lateral_strain");
@@ -39,6 +39,7 @@ final class VolumeSceneStudy {
         List<Double> errors = new ArrayList<>();
         List<Double> displacements = new ArrayList<>();
         List<Double> spreads = new ArrayList<>();
+        List<Double> staticErrors = new ArrayList<>();
         Map<String, List<Double>> nus = new LinkedHashMap<>();
         double total = r.loads().isEmpty() ? Double.NaN : r.loads().get(0).totalN();
         System.out.printf("%s, body %s: %s; load %.6g N (kept at every resolution)%n", file, r.body(),
@@ -53,15 +54,20 @@ final class VolumeSceneStudy {
                         Integer.toString(l.nodes()), l.loadedNodes().length == 0 ? "" : Integer.toString(
                                 l.loadedNodes()[0]), Double.toString(total), Double.toString(u),
                         Double.toString(a == null ? Double.NaN : a.displacementM()), Double.toString(err),
-                        Double.toString(l.spreadM())));
+                        Double.toString(l.spreadM()), Double.toString(l.staticM()),
+                        Double.toString(a == null ? Double.NaN : r.staticError(i))));
                 StringBuilder text = new StringBuilder(String.format("cell %.4g mm (%d nodes, %d loaded): %.6g m"
                         + " along the load", l.cellM() * 1e3, l.nodes(), l.loadedNodes().length == 0 ? 0
                         : l.loadedNodes()[0], u));
                 if (a != null) {
                     text.append(String.format(" (%+.2f %% against %.6g m)", 100 * err, a.displacementM()));
                 }
-                text.append(String.format(", ranging over %.2f %% of it in the run's last sixth", 100 * l.spreadM()
-                        / Math.abs(u)));
+                text.append(String.format(", ranging over %.2f %% of it in the run's last sixth; linear statics"
+                        + " %.6g m", 100 * l.spreadM() / Math.abs(u), l.staticM()));
+                if (a != null) {
+                    text.append(String.format(" (%+.2f %%)", 100 * r.staticError(i)));
+                    staticErrors.add(r.staticError(i));
+                }
                 for (String p : lateral) {
                     int axis = a.lateral().get(p);
                     double strain = l.probesM().get(p)[axis] / a.extentsM()[axis];
@@ -97,6 +103,13 @@ final class VolumeSceneStudy {
                         1.0 / factors.get(i)));
             }
             json.put("order", order);
+            json.put("statics_error", staticErrors);
+            List<Double> staticOrder = new ArrayList<>();
+            for (int i = 1; i < staticErrors.size(); i++) {
+                staticOrder.add(VolumeStudy.orderAgainst(staticErrors.get(i - 1), staticErrors.get(i),
+                        1.0 / factors.get(i - 1), 1.0 / factors.get(i)));
+            }
+            json.put("statics_order", staticOrder);
             if (!nus.isEmpty()) {
                 json.put("measured_poisson", nus);
             }
@@ -110,7 +123,8 @@ final class VolumeSceneStudy {
             }
         }
         json.put("observed_order", observed);
-        System.out.println("order against the known answer " + json.get("order") + ", observed order " + observed);
+        System.out.println("order against the known answer " + json.get("order") + " (linear statics: "
+                + json.get("statics_order") + "), observed order " + observed);
         run.finish(RunStatus.OK, json);
         System.out.println(Json.line(json));
     }
