@@ -136,6 +136,9 @@ public final class VolumeStudyCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (scene != null) {
+            if (refine.isEmpty() || refine.stream().anyMatch(f -> f < 1)) {
+                throw new IllegalArgumentException("--refine must be whole numbers >= 1, got " + refine);
+            }
             return RunFolder.run(out.folder(spec), "volume-study", OUTPUTS,
                     run -> VolumeSceneStudy.run(run, scene, body, refine, sets));
         }

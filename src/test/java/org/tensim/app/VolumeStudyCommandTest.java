@@ -108,5 +108,9 @@ class VolumeStudyCommandTest {
         String[] bad = run("volume-study", "--scene", "docs/examples/cube.yaml", "--out", dir.resolve("b").toString());
         assertTrue(!"0".equals(bad[0]) && bad[2].contains("expected one volume body"), bad[2]);
         assertTrue(!bad[2].contains("\tat org."), "no stack trace: " + bad[2]);
+        String[] zero = run("volume-study", "--scene", "docs/examples/cantilever.yaml", "--refine", "0,1", "--out",
+                dir.resolve("z").toString());
+        assertTrue(!"0".equals(zero[0]) && zero[2].contains("--refine must be whole numbers >= 1, got [0, 1]"),
+                zero[2]);
     }
 }
