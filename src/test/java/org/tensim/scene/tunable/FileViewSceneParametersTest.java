@@ -21,10 +21,10 @@ import org.tensim.solver.SystemState;
  * A scene file's named parameters in the GUI's scene: one control each (name, unit, range, live or restarting), a
  * live change seen by the running simulation's very next step, a rebuild one making a new scene from the file.
  */
-class FileViewSceneParametersTest {
+public class FileViewSceneParametersTest {
     static final Path CUBE = Path.of("docs/examples/cube.yaml");
     /** A coarse volume with a stiffer zone: E, the zone's E and gravity live, the cell size a rebuild. */
-    static final String VOLUME = String.join("\n",
+    public static final String VOLUME = String.join("\n",
             "version: 1",
             "units: {length: mm}",
             "bodies:",
