@@ -156,6 +156,11 @@ public final class FileViewScene implements ViewScene {
      */
     @Override
     public List<TunableParameter> parameters() {
+        return controls(scene);
+    }
+
+    /** A loaded scene file's named parameters as the GUI's controls and the sweeps' parameters. */
+    public static List<TunableParameter> controls(Scene scene) {
         List<TunableParameter> out = new ArrayList<>();
         for (SceneParameter p : scene.parameters()) {
             boolean log = p.min() > 0 && p.max() / p.min() >= 10;
