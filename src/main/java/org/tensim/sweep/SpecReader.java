@@ -171,7 +171,7 @@ public final class SpecReader {
             if (!v.isNumber() && !v.isTextual()) {
                 throw fail("overrides." + e.getKey(), v, "a number or a value with its unit (\"8 kPa\")");
             }
-            out.add(e.getKey() + "=" + (v.isNumber() ? Double.toString(v.asDouble()) : v.asText()));
+            out.add(e.getKey() + "=" + v.asText());
         }
         return out;
     }

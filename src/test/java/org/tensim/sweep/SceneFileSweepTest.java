@@ -38,7 +38,7 @@ class SceneFileSweepTest {
         Path f = Files.writeString(dir.resolve("s.json"), spec(""));
         SweepSpec s = SpecReader.readSweep(f);
         assertEquals(CUBE.toString(), s.setup().scene());
-        assertEquals(java.util.List.of("stiffness=200.0"), s.setup().overrides());
+        assertEquals(java.util.List.of("stiffness=200"), s.setup().overrides());
         assertEquals("rk2", s.setup().integrator(), "the file's integrator");
         Sweep.Outcome o;
         try (LocalEngine e = new LocalEngine(1)) {
@@ -75,7 +75,7 @@ class SceneFileSweepTest {
         Path over = Files.writeString(dir.resolve("c.json"), spec("").replace("\"stiffness\": 200",
                 "\"stiffness\": 5000"));
         e = assertThrows(SpecReader.SpecException.class, () -> SpecReader.readSweep(over));
-        assertTrue(e.getMessage().contains("field 'scene': --set stiffness=5000.0: bodies.mss.stiffness: 5000 is"
+        assertTrue(e.getMessage().contains("field 'scene': --set stiffness=5000: bodies.mss.stiffness: 5000 is"
                 + " outside parameter stiffness's range"), e.getMessage());
         Path builtIn = Files.writeString(dir.resolve("d.json"), "{\"scene\": \"cube\", \"overrides\": {\"x\": 1},"
                 + " \"parameters\": {\"forceAmplitudeN\": {\"values\": [1]}}, \"outputs\": [\"steps\"]}");

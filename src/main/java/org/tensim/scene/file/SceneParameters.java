@@ -87,8 +87,30 @@ final class SceneParameters {
                 continue;
             }
             String unit = d.keys().has("unit") ? d.keys().string("unit").strip() : "";
+            earlyRangeCheck(d, unit, set, kv[1]);
             String value = BARE.matcher(kv[1]).matches() && !unit.isEmpty() ? kv[1] + " " + unit : kv[1];
             Overrides.apply(root, "--set " + set, d.path(), value);
+        }
+    }
+
+    /**
+     * Refuses a value outside the parameter's range before the scene is built (a build with it might fail for
+     * another reason first). Values and ranges that do not convert are left to {@link #resolve}, which names why.
+     */
+    private static void earlyRangeCheck(Declared d, String unit, String set, String text) {
+        SceneNode range = d.keys().has("range") ? d.keys().required("range") : null;
+        if (range == null || !range.isList() || range.items().size() != 2 || !range.items().get(0).isScalar()
+                || !range.items().get(1).isScalar()) {
+            return;
+        }
+        double lo = SceneUnits.in(range.items().get(0).text(), unit);
+        double hi = SceneUnits.in(range.items().get(1).text(), unit);
+        double v = SceneUnits.in(text, unit);
+        double slack = 1e-12 * Math.max(Math.abs(lo), Math.abs(hi));
+        if (Double.isFinite(lo) && Double.isFinite(hi) && Double.isFinite(v) && (v < lo - slack || v > hi + slack)) {
+            throw new SceneException("--set " + set + ": " + d.path() + ": " + SceneParameter.format(v)
+                    + " is outside parameter " + d.name() + "'s range [" + SceneParameter.format(lo) + ", "
+                    + SceneParameter.format(hi) + "]" + (unit.isEmpty() ? "" : " " + unit));
         }
     }
 

@@ -104,6 +104,29 @@ public final class SceneUnits {
         }
     }
 
+    /**
+     * A value's text ({@code "8"}, {@code "8 kPa"}) in {@code unit} (a bare number is taken to be in it); NaN when
+     * either does not parse or they are of different dimensions (the loader then says why).
+     */
+    static double in(String text, String unit) {
+        Matcher m = VALUE.matcher(text);
+        if (!m.matches()) {
+            return Double.NaN;
+        }
+        double v = Double.parseDouble(m.group(1));
+        if (m.group(2).isEmpty() || m.group(2).equals(unit.strip())) {
+            return v;
+        }
+        try {
+            Unit<?> to = unit.isBlank() ? tech.units.indriya.AbstractUnit.ONE
+                    : SimpleUnitFormat.getInstance().parse(unit.strip());
+            return SimpleUnitFormat.getInstance().parse(m.group(2)).getConverterToAny(to).convert(v);
+        } catch (MeasurementParseException | IllegalArgumentException | IncommensurableException
+                | UnconvertibleException e) {
+            return Double.NaN;
+        }
+    }
+
     /** A unit's text parsed by indriya, refused at {@code node} unless it is a unit of the kind. */
     static Unit<?> unit(SceneNode node, String text, QuantityKind kind) {
         Unit<?> u;
