@@ -99,6 +99,8 @@ public final class FileViewScene implements ViewScene {
      */
     public static SceneFactory factory(Path file, List<String> sets) {
         FileViewScene checked = new FileViewScene(file, sets, SceneLoader.load(file, sets));
+        // The values the file and the options give, before any control moves (the first scene's change live).
+        Map<String, Double> defaults = new LinkedHashMap<>(checked.values);
         return new SceneFactory() {
             private FileViewScene next = checked;
 
@@ -114,13 +116,13 @@ public final class FileViewScene implements ViewScene {
 
             @Override
             public ViewScene create(boolean tensegrityTendon, Map<String, Double> values) {
-                Map<String, Double> asked = new LinkedHashMap<>(checked.values);
+                Map<String, Double> asked = new LinkedHashMap<>(defaults);
                 for (Map.Entry<String, Double> e : values.entrySet()) {
                     if (asked.containsKey(e.getKey())) {
                         asked.put(e.getKey(), e.getValue());
                     }
                 }
-                FileViewScene s = next != null && asked.equals(checked.values) ? next
+                FileViewScene s = next != null && asked.equals(defaults) ? next
                         : new FileViewScene(file, sets, SceneLoader.load(file, checked.sets(asked)));
                 next = null;
                 return s;

@@ -109,4 +109,16 @@ class SceneParametersTest {
             assertTrue(why != null && why.startsWith(rebuild + " can only apply on rebuild"), rebuild + ": " + why);
         }
     }
+
+    @Test
+    void checkListsEachParameterWithItsUnitRangeAndApplyMode() {
+        picocli.CommandLine cl = org.tensim.app.Main.commandLine();
+        java.io.StringWriter out = new java.io.StringWriter();
+        cl.setOut(new java.io.PrintWriter(out));
+        assertEquals(0, cl.execute("check", "docs/examples/cube.yaml", "--set", "force=500"));
+        assertTrue(out.toString().contains("parameter force: conditions[1].magnitude = 500 N (default 400), range"
+                + " [0, 1000] N, applies live\n"), out.toString());
+        assertTrue(out.toString().contains("parameter stiffness: bodies.mss.stiffness = 100 N/m (default 100), range"
+                + " [10, 1000] N/m, applies live\n"), out.toString());
+    }
 }
