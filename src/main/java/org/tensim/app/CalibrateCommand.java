@@ -22,7 +22,8 @@ import picocli.CommandLine.Option;
             "Each generation's candidates run at once on the sweep engine. The targets are summary figures with"
                 + " tolerances, landmark trajectories (CSV id,t,x,y,z) or a target surface at a breathing phase"
                 + " (OBJ, STL or OFF; mean and 95th-percentile distance). Writes best-preset.json (for ./tensim gui"
-                + " --preset), history.csv, convergence.png, residuals.json and evaluations.csv to --out.",
+                + " --preset; for a scene file best-set.txt, its --set options), history.csv, convergence.png,"
+                + " residuals.json and evaluations.csv to --out.",
             "With --make-target it writes a synthetic target surface instead. Guide: docs/calibration.md."})
 public final class CalibrateCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
@@ -58,7 +59,7 @@ public final class CalibrateCommand implements Callable<Integer> {
     long seed = 1;
 
     /** What a calibration writes into --out (it writes no summary.json: these names tell its folder). */
-    static final java.util.List<String> OUTPUTS = java.util.List.of("best-preset.json", "history.csv",
+    static final java.util.List<String> OUTPUTS = java.util.List.of("best-preset.json", "best-set.txt", "history.csv",
             "convergence.png", "residuals.json", "evaluations.csv");
 
     @Override
@@ -78,7 +79,9 @@ public final class CalibrateCommand implements Callable<Integer> {
             System.out.println("calibrating " + s.names() + " of " + s.setup().geometry() + " on " + e.describe()
                     + " into " + dir);
             Calibration.Result r = Calibration.run(s, e, dir, System.out);
-            System.out.println("wrote " + dir.resolve("best-preset.json") + ", history.csv, convergence.png,"
+            boolean file = org.tensim.sweep.SceneFileRun.isFile(s.setup().scene());
+            System.out.println("wrote " + dir.resolve(file ? "best-set.txt" : "best-preset.json") + ", history.csv,"
+                    + " convergence.png,"
                     + " residuals.json, evaluations.csv");
             for (String w : CalibrationReport.warnings(s.free(), r.summary())) {
                 System.err.println("tensim calibrate: " + w);

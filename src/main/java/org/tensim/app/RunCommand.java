@@ -40,8 +40,9 @@ public final class RunCommand implements Callable<Integer> {
     OutFolderOption out = new OutFolderOption(Path.of("out", "run", OutFolderOption.SPEC_NAME));
 
     @Option(names = "--set", paramLabel = "KEY.PATH=VALUE",
-            description = "Replaces one value of the file, for example --set bodies.mss.stiffness=\"200 N/m\""
-                    + " (repeatable).")
+            description = "Replaces one value of the file, for example --set bodies.mss.stiffness=\"200 N/m\", or"
+                    + " sets one of its named parameters, for example --set E=8kPa (a bare number is in the"
+                    + " parameter's unit, and the value must lie in its range); repeatable.")
     List<String> sets = new ArrayList<>();
 
     @picocli.CommandLine.Mixin

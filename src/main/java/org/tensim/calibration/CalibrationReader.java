@@ -50,7 +50,8 @@ public final class CalibrationReader {
     }
 
     private CalibrationSpec spec(JsonNode root) throws SpecException {
-        r.allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "diaphragm", "fixed", "solver", "fit", "optimizer",
+        r.allowOnly(root, "", Set.of("scene", "overrides", "mesh", "boxes", "muscleLoad", "diaphragm", "fixed", "solver",
+                "fit", "optimizer",
                 "targets"));
         RunSetup setup = r.setup(root);
         JsonNode fit = root.get("fit");

@@ -18,7 +18,8 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
 
 /**
  * Writes what a calibration found: {@code best-preset.json} (a GUI preset with the fitted
- * and fixed values, opened by {@code ./tensim gui --preset}), {@code history.csv} and
+ * and fixed values, opened by {@code ./tensim gui --preset}; for a scene file {@code best-set.txt}, the
+ * overrides and the values as {@code --set} options, one a line, for {@code tensim run/gui FILE}), {@code history.csv} and
  * {@code convergence.png} (best score per generation), {@code residuals.json} (each target's
  * residuals at the best candidate, whether it is met, and which fitted parameters ended at a bound)
  * and returns the summary.
@@ -53,8 +54,19 @@ public final class CalibrationReport {
         // The diaphragm's scene goes with them too: the preset holds the whole scene the values were found on.
         List<String> scene = spec.setup().scene().equals("diaphragm")
                 ? PresetScene.withoutMuscleLoad(spec.setup().diaphragm()) : null;
-        PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
-                spec.setup().integrator(), true, values, load, scene));
+        if (org.tensim.sweep.SceneFileRun.isFile(spec.setup().scene())) {
+            // A scene file takes its values as --set options (tensim run/gui FILE --set NAME=VALUE), not a preset.
+            List<String> sets = new ArrayList<>(spec.setup().overrides());
+            for (Map.Entry<String, Double> e : values.entrySet()) {
+                if (!e.getKey().equals(Tuning.TIME_STEP)) {
+                    sets.add(e.getKey() + "=" + e.getValue());
+                }
+            }
+            java.nio.file.Files.write(out.resolve("best-set.txt"), sets.stream().map(x -> "--set " + x).toList());
+        } else {
+            PresetFile.write(out.resolve("best-preset.json"), new Settings(spec.setup().scene(),
+                    spec.setup().integrator(), true, values, load, scene));
+        }
 
         List<String> header = new ArrayList<>(List.of("generation", "runs", "best_of_generation", "best_so_far",
                 "wall_s"));

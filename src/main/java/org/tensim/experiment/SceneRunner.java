@@ -109,7 +109,11 @@ public final class SceneRunner {
         return Double.isFinite(v) ? v : "none";
     }
 
-    private static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row) {
+    /**
+     * One CSV row of the scene's probes ({@link SceneExpectation#columns}) at time t: the time, then every
+     * probe's values from the bodies' simulations (by body name).
+     */
+    public static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row) {
         row[0] = t;
         int c = 1;
         double[] d = new double[3];

@@ -17,7 +17,8 @@ import org.tensim.tuning.TunableScenes;
  * of the parameters that are not swept, and extra measures taken during each run
  * (calibration targets).
  *
- * @param scene       scene name, as in {@link org.tensim.tuning.TunableScenes} ({@code diaphragm} or {@code cube})
+ * @param scene       scene name, as in {@link org.tensim.tuning.TunableScenes} ({@code diaphragm} or {@code cube}),
+ *                    or the absolute path of a scene file (docs/scenes.md)
  * @param diaphragm   the diaphragm's options as a command line gives them ({@link DiaphragmOptions}, e.g.
  *                    {@code ["--thorax", "/data/thorax", "--muscle-load", "pressure"]}); empty for the defaults
  *                    (the generated double dome at the GUI's resolution in the parametric cage) and for the cube
@@ -27,20 +28,30 @@ import org.tensim.tuning.TunableScenes;
  * @param seconds     simulated time of each run, s
  * @param fixed       values of parameters held fixed, by key (the others not swept keep their defaults)
  * @param measures    extra measures taken during each run; they add fields to the summary
+ * @param overrides   for a scene file ({@code scene} its absolute path, {@link SceneFileRun}): the spec's
+ *                    {@code overrides} as {@code --set} options ({@code NAME=VALUE} or {@code key.path=VALUE}),
+ *                    applied before the point's values; empty for the built-in scenes
  */
 public record RunSetup(String scene, List<String> diaphragm, String integrator, double dtS, double seconds,
-        Map<String, Double> fixed, List<Measure> measures) implements Serializable {
-    private static final long serialVersionUID = 2L;
+        Map<String, Double> fixed, List<Measure> measures, List<String> overrides) implements Serializable {
+    private static final long serialVersionUID = 3L;
 
     public RunSetup {
         diaphragm = List.copyOf(diaphragm);
         fixed = Collections.unmodifiableMap(new LinkedHashMap<>(fixed));
         measures = Collections.unmodifiableList(new ArrayList<>(measures));
+        overrides = List.copyOf(overrides);
+    }
+
+    /** A setup of a built-in scene (no overrides). */
+    public RunSetup(String scene, List<String> diaphragm, String integrator, double dtS, double seconds,
+            Map<String, Double> fixed, List<Measure> measures) {
+        this(scene, diaphragm, integrator, dtS, seconds, fixed, measures, List.of());
     }
 
     /** The same setup with other measures (calibration adds its targets'). */
     public RunSetup withMeasures(List<Measure> m) {
-        return new RunSetup(scene, diaphragm, integrator, dtS, seconds, fixed, m);
+        return new RunSetup(scene, diaphragm, integrator, dtS, seconds, fixed, m, overrides);
     }
 
     /** The diaphragm's scene definition (meaningful for the diaphragm scene only). */
@@ -55,6 +66,9 @@ public record RunSetup(String scene, List<String> diaphragm, String integrator, 
 
     /** One line describing the geometry, for logs and reports. */
     public String geometry() {
+        if (SceneFileRun.isFile(scene)) {
+            return "scene file " + scene + (overrides.isEmpty() ? "" : " with " + String.join(", ", overrides));
+        }
         if (!scene.equals("diaphragm")) {
             return scene;
         }

@@ -47,6 +47,9 @@ public final class SceneRun {
 
     /** The summary fields a scene can report (before the measures' own), for validating outputs. */
     public static List<String> knownFields(String scene) {
+        if (SceneFileRun.isFile(scene)) {
+            return SceneFileRun.knownFields(scene);
+        }
         List<String> f = new ArrayList<>();
         if (scene.equals("diaphragm")) {
             f.addAll(List.of("dome_excursion_mm", "apex_descent_mm", "ap_extent_change_mm",
@@ -61,6 +64,9 @@ public final class SceneRun {
 
     /** The tunable parameters of a scene (the GUI's), without building it. */
     public static List<TunableParameter> parameters(String scene) {
+        if (SceneFileRun.isFile(scene)) {
+            return SceneFileRun.parameters(scene);
+        }
         return switch (scene) {
             case "diaphragm" -> DiaphragmViewScene.PARAMETERS;
             case "cube" -> org.tensim.scene.tunable.CubeViewScene.PARAMETERS;
@@ -71,6 +77,9 @@ public final class SceneRun {
 
     /** Runs one point; never throws for a bad value or a divergence (they become the status). */
     public static PointResult run(RunSetup setup, List<String> names, Point point) {
+        if (SceneFileRun.isFile(setup.scene())) {
+            return SceneFileRun.run(setup, names, point);
+        }
         long t0 = System.nanoTime();
         long c0 = cpu();
         Map<String, Double> fields = new LinkedHashMap<>();
@@ -153,21 +162,21 @@ public final class SceneRun {
                 org.tensim.tuning.DiaphragmOptions.parse(s.diaphragm())));
     }
 
-    private static String message(Throwable e) {
+    static String message(Throwable e) {
         String m = e.getMessage();
         return m == null ? e.getClass().getSimpleName() : m;
     }
 
-    private static long cpu() {
+    static long cpu() {
         java.lang.management.ThreadMXBean b = java.lang.management.ManagementFactory.getThreadMXBean();
         return b.isCurrentThreadCpuTimeSupported() ? b.getCurrentThreadCpuTime() : -1;
     }
 
-    private static double cpuSince(long c0) {
+    static double cpuSince(long c0) {
         return c0 < 0 ? Double.NaN : (cpu() - c0) / 1e9;
     }
 
-    private static double wall(long t0) {
+    static double wall(long t0) {
         return (System.nanoTime() - t0) / 1e9;
     }
 

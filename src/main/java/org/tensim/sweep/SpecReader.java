@@ -71,8 +71,8 @@ public final class SpecReader {
 
     /** A sweep spec from its JSON object. */
     public SweepSpec sweep(JsonNode root) throws SpecException {
-        allowOnly(root, "", Set.of("scene", "mesh", "boxes", "muscleLoad", "diaphragm", "parameters", "sampling", "fixed", "solver",
-                "outputs"));
+        allowOnly(root, "", Set.of("scene", "overrides", "mesh", "boxes", "muscleLoad", "diaphragm", "parameters",
+                "sampling", "fixed", "solver", "outputs"));
         RunSetup setup = setup(root);
         SweepSpec.Sampling sampling = sampling(root.get("sampling"));
         JsonNode params = root.get("parameters");
@@ -95,14 +95,29 @@ public final class SpecReader {
     /** The shared part of sweep and calibration specs: scene, mesh, boxes, solver and fixed values. */
     public RunSetup setup(JsonNode root) throws SpecException {
         String scene = text(root, "scene", null);
-        if (!TunableScenes.names().contains(scene)) {
-            throw fail("scene", root.get("scene"), "one of " + TunableScenes.names());
+        org.tensim.scene.file.Scene file = null;
+        List<String> overrides = List.of();
+        if (SceneFileRun.isFile(scene)) {
+            scene = existing("scene", scene).toAbsolutePath().toString();
+            overrides = overrides(root.get("overrides"));
+            try {
+                file = SceneFileRun.load(scene, overrides);
+            } catch (org.tensim.scene.file.SceneException e) {
+                throw new SpecException(where + ": field 'scene': " + e.getMessage());
+            }
+        } else if (!TunableScenes.names().contains(scene)) {
+            throw fail("scene", root.get("scene"), "one of " + TunableScenes.names() + ", or a scene file (.yaml,"
+                    + " .yml, .json; docs/scenes.md)");
+        } else if (root.has("overrides")) {
+            throw fail("overrides", root.get("overrides"), "left out: overrides change a scene file's values (the"
+                    + " built-in scenes take fixed values)");
         }
         List<String> args = SpecDiaphragm.args(this, root, scene);
         JsonNode solver = root.get("solver");
-        String integrator = "rk2";
+        String integrator = file != null ? file.run().integrator() : "rk2";
         double dt = 0;
-        double seconds = scene.equals("diaphragm") ? 4 : org.tensim.scene.CubeParameters.paper().durationS();
+        double seconds = file != null ? file.run().durationS() : scene.equals("diaphragm") ? 4
+                : org.tensim.scene.CubeParameters.paper().durationS();
         if (solver != null) {
             if (!solver.isObject()) {
                 throw fail("solver", solver, "an object {\"integrator\": .., \"dtS\": .., \"seconds\": ..}");
@@ -135,7 +150,30 @@ public final class SpecReader {
                 fixed.put(e.getKey(), v);
             }
         }
-        return new RunSetup(scene, args, integrator, dt, seconds, fixed, List.of());
+        return new RunSetup(scene, args, integrator, dt, seconds, fixed, List.of(), overrides);
+    }
+
+    /**
+     * A scene file's {@code overrides}: {"NAME or key.path": value}, a number (in a named parameter's unit, or the
+     * file's) or a string with its unit ("8 kPa"), as {@code --set} options in order.
+     */
+    private List<String> overrides(JsonNode o) throws SpecException {
+        List<String> out = new ArrayList<>();
+        if (o == null) {
+            return out;
+        }
+        if (!o.isObject()) {
+            throw fail("overrides", o, "an object {\"NAME or key.path\": value}, e.g. {\"E\": 8, \"run.dt\": \"5 ms\"}");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = o.fields(); it.hasNext();) {
+            Map.Entry<String, JsonNode> e = it.next();
+            JsonNode v = e.getValue();
+            if (!v.isNumber() && !v.isTextual()) {
+                throw fail("overrides." + e.getKey(), v, "a number or a value with its unit (\"8 kPa\")");
+            }
+            out.add(e.getKey() + "=" + v.asText());
+        }
+        return out;
     }
 
     private SweepSpec.Sampling sampling(JsonNode s) throws SpecException {

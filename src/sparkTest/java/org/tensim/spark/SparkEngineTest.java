@@ -16,8 +16,8 @@ import org.tensim.sweep.SweepSpec;
 
 /**
  * One spec gives the same results on the local engine and on Spark {@code local[2]}, to the
- * last bit: for the cube (a grid, with points that diverge) and for the diaphragm (a Latin
- * hypercube on a coarse generated dome).
+ * last bit: for the cube (a grid, with points that diverge), for the diaphragm (a Latin
+ * hypercube on a coarse generated dome) and for a scene file's named parameter (the cube example's force).
  */
 class SparkEngineTest {
     @TempDir
@@ -36,8 +36,13 @@ class SparkEngineTest {
                 + " \"max\": 1.5}}, \"sampling\": {\"method\": \"lhs\", \"points\": 4, \"seed\": 7},"
                 + " \"solver\": {\"seconds\": 1.4, \"dtS\": 0.01, \"integrator\": \"implicit-euler-cg1e-3\"},"
                 + " \"outputs\": [\"dome_excursion_mm\", \"ap_extent_change_mm\", \"transverse_extent_change_mm\"]}");
+        // A scene file's named parameter (the cube example's force), its stiffness overridden.
+        Path file = dir.resolve("file.json");
+        Files.writeString(file, "{\"scene\": \"" + Path.of("docs/examples/cube.yaml").toAbsolutePath() + "\","
+                + " \"overrides\": {\"stiffness\": 300}, \"parameters\": {\"force\": {\"min\": 100, \"max\": 900,"
+                + " \"steps\": 3}}, \"solver\": {\"seconds\": 1}, \"outputs\": [\"mss_dy_m_min\", \"ts_dy_m_min\"]}");
         try (SparkEngine spark = new SparkEngine("local[2]")) {
-            for (Path f : List.of(cube, dia)) {
+            for (Path f : List.of(cube, dia, file)) {
                 SweepSpec s = SpecReader.readSweep(f);
                 Sweep.Outcome local;
                 try (LocalEngine e = new LocalEngine(2)) {

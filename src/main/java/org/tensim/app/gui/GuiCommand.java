@@ -1,8 +1,6 @@
 package org.tensim.app.gui;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
@@ -15,7 +13,6 @@ import org.tensim.tuning.ConfigDir;
 import org.tensim.tuning.DiaphragmOptions;
 import org.tensim.tuning.PresetFile;
 import org.tensim.tuning.PresetScene;
-import org.tensim.tuning.Settings;
 import org.tensim.tuning.TunableScenes;
 import org.tensim.tuning.Tuning;
 import picocli.CommandLine.Command;
@@ -33,10 +30,8 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
-    @picocli.CommandLine.Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
-            description = "A scene file (docs/scenes.md) to open instead of a built-in scene; it runs with its own"
-                    + " integrator and step.")
-    Path file;
+    @picocli.CommandLine.Mixin
+    SceneFileGui sceneFile = new SceneFileGui();
 
     @Option(names = "--scene", paramLabel = "NAME",
             description = "Scene to show: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).",
@@ -137,7 +132,8 @@ public final class GuiCommand implements Callable<Integer> {
                     + " dome, and the preset " + preset + " opens the mesh " + options.mesh
                     + ": leave out one of them");
         }
-        SceneFactory factory = file != null ? sceneFile() : TunableScenes.factory(scene, options);
+        sceneFile.refuseSetsWithoutFile();
+        SceneFactory factory = sceneFile.given() ? sceneFile.factory(spec) : TunableScenes.factory(scene, options);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);
@@ -145,7 +141,7 @@ public final class GuiCommand implements Callable<Integer> {
         // A scripted run starts paused and plays once the view is up (takeScreenshotAndClose, TimedRun).
         // It never overwrites what the user tuned last.
         // A scene file runs with its own settings: nothing last-used is restored over them, nor saved.
-        boolean keep = file == null;
+        boolean keep = !sceneFile.given();
         GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
                 !paused && !script, threadCount,
                 keep && TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
@@ -175,17 +171,6 @@ public final class GuiCommand implements Callable<Integer> {
         }
         w.awaitClosed();
         return 0;
-    }
-
-    /** The factory of the scene file, loaded (and so checked) before any window; refuses built-in scene options. */
-    private SceneFactory sceneFile() {
-        for (String o : java.util.List.of("--scene", "--mesh", "--pick", "--preset", "--thorax", "--muscle-load")) {
-            if (spec.commandLine().getParseResult().hasMatchedOption(o)) {
-                throw new IllegalArgumentException(o + " chooses a built-in scene: leave it out with a scene file ("
-                        + file + ")");
-            }
-        }
-        return org.tensim.scene.tunable.FileViewScene.factory(file);
     }
 
     /**
@@ -321,88 +306,14 @@ public final class GuiCommand implements Callable<Integer> {
         return scene;
     }
 
-    /** Restores last-used parameters; returns a note for the status bar when they could not be used. */
+    /** Restores last-used parameters ({@link LastUsedParameters#restore(Tuning, Path, boolean)}). */
     static String restore(Tuning tuning, Path file) {
-        return restore(tuning, file, false);
+        return LastUsedParameters.restore(tuning, file, false);
     }
 
-    /**
-     * As {@link #restore(Tuning, Path)}; with {@code keepLoad} (a muscle load named on the command line) parameters
-     * tuned with another muscle load are left alone, with a note: they would replace the load asked for.
-     */
+    /** As {@link LastUsedParameters#restore(Tuning, Path, boolean)}. */
     static String restore(Tuning tuning, Path file, boolean keepLoad) {
-        if (!Files.exists(file)) {
-            return null;
-        }
-        try {
-            Settings s = readLastUsed(file, tuning);
-            if (keepLoad && s.muscleLoad() != null && !s.muscleLoad().equals(tuning.muscleLoad())) {
-                return "Last-used parameters not restored: they were tuned with muscle load "
-                        + BoundaryConditions.name(s.muscleLoad()) + ", and --muscle-load "
-                        + BoundaryConditions.name(tuning.muscleLoad()) + " was given (" + file + ")";
-            }
-            tuning.apply(s, file.toString());
-            return null;
-        } catch (PresetFile.PresetException | IllegalArgumentException e) {
-            // Keep the file for the user to inspect, out of the way of the next save.
-            Path bad = file.resolveSibling(file.getFileName() + ".bad");
-            try {
-                Files.move(file, bad, StandardCopyOption.REPLACE_EXISTING);
-            } catch (java.io.IOException io) {
-                bad = file;
-            }
-            return "Last-used parameters not restored (kept as " + bad + "): " + e.getMessage();
-        }
-    }
-
-    /**
-     * Reads last-used parameters for this window. The tendon boundary's control belongs to how the scene was opened
-     * (the tendon rule, or none with a label file), which may change from one start to the next (tune the plane, save
-     * the labels, reopen with them): a tendon control this window does not have is left out rather than making the
-     * whole file unusable. Anything else wrong is refused as {@link PresetFile#read} refuses it.
-     */
-    static Settings readLastUsed(Path file, Tuning tuning) throws PresetFile.PresetException {
-        try {
-            return PresetFile.read(file, tuning);
-        } catch (PresetFile.PresetException first) {
-            com.fasterxml.jackson.databind.node.ObjectNode root;
-            try {
-                com.fasterxml.jackson.databind.JsonNode n = org.tensim.io.Json.mapper().readTree(Files.readAllBytes(file));
-                if (!(n instanceof com.fasterxml.jackson.databind.node.ObjectNode o)
-                        || !(o.get("parameters") instanceof com.fasterxml.jackson.databind.node.ObjectNode params)) {
-                    throw first;
-                }
-                boolean dropped = false;
-                for (String key : java.util.List.of(org.tensim.scene.tunable.DiaphragmViewScene.TENDON_PLANE,
-                        org.tensim.scene.tunable.DiaphragmViewScene.TENDON_SHARE)) {
-                    if (params.has(key) && !tuning.keys().contains(key)) {
-                        params.remove(key);
-                        dropped = true;
-                    }
-                }
-                if (!dropped) {
-                    throw first;
-                }
-                root = o;
-            } catch (java.io.IOException e) {
-                throw first;
-            }
-            Path tmp = file.resolveSibling(file.getFileName() + ".tendon.tmp");
-            try {
-                Files.write(tmp, org.tensim.io.Json.mapper().writeValueAsBytes(root));
-                return PresetFile.read(tmp, tuning);
-            } catch (java.io.IOException e) {
-                throw first;
-            } catch (PresetFile.PresetException e) {
-                throw new PresetFile.PresetException(e.getMessage().replace(tmp.toString(), file.toString()), e);
-            } finally {
-                try {
-                    Files.deleteIfExists(tmp);
-                } catch (java.io.IOException ignored) {
-                    // a left-over temporary file is harmless
-                }
-            }
-        }
+        return LastUsedParameters.restore(tuning, file, keepLoad);
     }
 
     /**

@@ -47,4 +47,19 @@ public interface BodyType {
     default void applyZone(ZoneContext zone, Topology topology, java.util.BitSet nodes) {
         throw SceneException.at(zone.node(), "body type '" + name() + "' has no zones");
     }
+
+    /**
+     * The keys of this type's body map, as paths below the body (e.g. {@code material.E}), that a running
+     * simulation can take a new value of: those that change only the constants of the compiled state (spring
+     * stiffness and damping), never its nodes, springs, links or masses. A named parameter may say
+     * {@code apply: live} only for these (and the other live keys of {@link LiveKeys}); none by default.
+     */
+    default List<String> liveKeys() {
+        return List.of();
+    }
+
+    /** As {@link #liveKeys()} for the keys of a zone's {@code material:} map on a body of this type. */
+    default List<String> liveZoneMaterialKeys() {
+        return List.of();
+    }
 }

@@ -22,13 +22,44 @@ public final class Overrides {
     }
 
     private static void apply(SceneNode root, String set) {
-        String where = "--set " + set;
+        String[] kv = split(set);
+        apply(root, "--set " + set, kv[0], kv[1]);
+    }
+
+    /** {@code path=value} as {path, value}; refused unless there is a key before the '='. */
+    static String[] split(String set) {
         int eq = set.indexOf('=');
         if (eq <= 0) {
-            throw new SceneException(where + ": expected key.path=value, e.g. run.duration=\"1 s\"");
+            throw new SceneException("--set " + set + ": expected key.path=value or NAME=value (a parameter of the"
+                    + " file), e.g. run.duration=\"1 s\"");
         }
-        String path = set.substring(0, eq).strip();
-        String value = set.substring(eq + 1).strip();
+        return new String[] {set.substring(0, eq).strip(), set.substring(eq + 1).strip()};
+    }
+
+    /**
+     * The node at a key path of the tree, or null when the path leads nowhere (its last key absent); refused when
+     * it cannot be a path of this tree. {@code where} names the path's origin in messages.
+     */
+    static SceneNode find(SceneNode root, String path, String where) {
+        SceneNode at = root;
+        for (Object step : steps(path, where)) {
+            if (step instanceof Integer k) {
+                if (!at.isList() || k >= at.items().size()) {
+                    return null;
+                }
+                at = at.items().get(k);
+            } else {
+                if (!at.isMap() || at.get((String) step) == null) {
+                    return null;
+                }
+                at = at.get((String) step);
+            }
+        }
+        return at;
+    }
+
+    /** Sets the scalar at {@code path} to {@code value}, the new node's place being {@code where}. */
+    static void apply(SceneNode root, String where, String path, String value) {
         List<Object> steps = steps(path, where);
         SceneNode at = root;
         String walked = "";
@@ -73,7 +104,7 @@ public final class Overrides {
     }
 
     /** "a.b[2].c" as ["a", "b", 2, "c"]. */
-    private static List<Object> steps(String path, String where) {
+    static List<Object> steps(String path, String where) {
         List<Object> out = new ArrayList<>();
         for (String part : path.split("\\.", -1)) {
             String p = part;

@@ -13,8 +13,13 @@ import org.tensim.scene.conditions.TimeLaw;
  * @param file      the scene file
  * @param overrides the {@code --set} options applied, in order
  * @param expect    the {@code expect:} block's checks, in order (empty without one)
+ * @param parameters the {@code parameters:} block's named parameters, in order (empty without one)
  */
 public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
         Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
-        List<SceneExpectation> expect) {
+        List<SceneExpectation> expect, List<SceneParameter> parameters) {
+    /** The named parameter, or null. */
+    public SceneParameter parameter(String name) {
+        return parameters.stream().filter(p -> p.name().equals(name)).findFirst().orElse(null);
+    }
 }

@@ -14,7 +14,8 @@ public final class SceneCheck {
 
     /**
      * The report's lines: each body's type and counts (nodes, springs, rigid links, fixed nodes, loads), each
-     * region's resolved node count and bounding box per body, each probe's columns, each expectation's range and
+     * region's resolved node count and bounding box per body, each probe's columns, each named parameter (path, value,
+     * default, unit, range, apply mode), each expectation's range and
      * the run's settings.
      */
     public static List<String> report(Scene s) {
@@ -42,6 +43,9 @@ public final class SceneCheck {
         }
         for (SceneProbe p : s.probes()) {
             out.add("probe " + p.name() + " on " + p.body() + ": " + String.join(", ", p.columns()));
+        }
+        for (SceneParameter p : s.parameters()) {
+            out.add(p.describe());
         }
         for (SceneExpectation e : s.expect()) {
             out.add("expect " + e.label() + " " + e.range());

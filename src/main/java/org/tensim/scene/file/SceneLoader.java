@@ -11,7 +11,9 @@ import org.tensim.scene.conditions.TimeLaw;
  * Reads a scene file (docs/scenes.md; schema docs/scene.schema.json) into a {@link Scene}: the tree with every
  * value's place ({@link SceneTree}), the {@code --set} overrides ({@link Overrides}), then, in this order, the
  * units, the laws, the bodies (each built by its {@link BodyType}), the regions, the zones, the conditions, the
- * probes, the run settings and the expectations ({@link ExpectBlock}). Every refusal is a {@link SceneException}
+ * probes, the run settings and the expectations ({@link ExpectBlock}), then the named parameters
+ * ({@link SceneParameters}: declared before the overrides, so that {@code --set NAME=VALUE} names one, and checked
+ * once the scene is built against the dimension each key was read in). Every refusal is a {@link SceneException}
  * naming file, line, column and key path.
  */
 public final class SceneLoader {
@@ -19,7 +21,7 @@ public final class SceneLoader {
     public static final int VERSION = 1;
     /** The top-level keys. */
     public static final List<String> KEYS = List.of("version", "description", "units", "bodies", "laws", "regions",
-            "zones", "conditions", "probes", "run", "expect");
+            "zones", "conditions", "probes", "run", "expect", "parameters");
 
     private SceneLoader() {
     }
@@ -29,7 +31,10 @@ public final class SceneLoader {
         return load(file, List.of());
     }
 
-    /** Loads a scene file with {@code --set path=value} overrides applied to its tree first. */
+    /**
+     * Loads a scene file with {@code --set path=value} overrides applied to its tree first; {@code NAME=value}
+     * sets a named parameter (range checked; a bare number is in the parameter's unit).
+     */
     public static Scene load(Path file, List<String> overrides) {
         Path parent = file.toAbsolutePath().getParent();
         return load(file, SceneTree.read(file), parent == null ? Path.of(".") : parent, overrides);
@@ -44,7 +49,8 @@ public final class SceneLoader {
     }
 
     private static Scene load(Path file, SceneNode root, Path folder, List<String> overrides) {
-        Overrides.apply(root, overrides);
+        Map<String, SceneParameters.Declared> declared = SceneParameters.declare(root);
+        SceneParameters.override(root, declared, overrides);
         MapReader top = new MapReader(root, KEYS);
         version(top);
         if (top.has("description")) {
@@ -59,7 +65,8 @@ public final class SceneLoader {
         List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions);
         RunSettings run = RunSettings.read(top, units);
         List<SceneExpectation> expect = ExpectBlock.read(top.optional("expect"), bodies, probes, units);
-        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect);
+        List<SceneParameter> parameters = SceneParameters.resolve(declared, root, units);
+        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters);
     }
 
     private static void version(MapReader top) {

@@ -27,6 +27,8 @@ public final class SceneNode {
     private final Map<String, SceneNode> map;
     private final List<SceneNode> list;
     private final Map<String, String> keyWhere;
+    /** The kind of quantity the loader read this scalar as (null: not read as a quantity). */
+    private QuantityKind readAs;
 
     private SceneNode(Kind kind, Token token, String text, String where, String path) {
         this.kind = kind;
@@ -62,6 +64,19 @@ public final class SceneNode {
     /** A scalar's text as written (null for maps, lists and null). */
     public String text() {
         return text;
+    }
+
+    /**
+     * The kind of quantity the loader read this scalar as ({@link SceneUnits#si}), or null when it was not read as
+     * one: named parameters take their dimension from it, so that a parameter's unit is checked against what the
+     * key really is.
+     */
+    public QuantityKind readAs() {
+        return readAs;
+    }
+
+    void markRead(QuantityKind kind) {
+        readAs = kind;
     }
 
     /** {@code file:line:column}, or the {@code --set} option that gave the value. */

@@ -81,6 +81,13 @@ public final class SceneUnits {
         }
         String unitText = m.group(2);
         Unit<?> unit = unitText.isEmpty() ? unitOf(kind) : unit(node, unitText, kind);
+        double si = toSi(unit, value, node, kind);
+        node.markRead(kind);
+        return si;
+    }
+
+    /** {@code value} in {@code unit} (of the kind) converted to the kind's SI unit. */
+    static double toSi(Unit<?> unit, double value, SceneNode node, QuantityKind kind) {
         try {
             return unit.getConverterToAny(kind.unit()).convert(value);
         } catch (IncommensurableException | UnconvertibleException e) {
@@ -88,7 +95,40 @@ public final class SceneUnits {
         }
     }
 
-    private static Unit<?> unit(SceneNode node, String text, QuantityKind kind) {
+    /** {@code si} (in the kind's SI unit) converted to {@code unit}. */
+    static double fromSi(Unit<?> unit, double si, SceneNode node, QuantityKind kind) {
+        try {
+            return kind.unit().getConverterToAny(unit).convert(si);
+        } catch (IncommensurableException | UnconvertibleException e) {
+            throw notKind(node, kind);
+        }
+    }
+
+    /**
+     * A value's text ({@code "8"}, {@code "8 kPa"}) in {@code unit} (a bare number is taken to be in it); NaN when
+     * either does not parse or they are of different dimensions (the loader then says why).
+     */
+    static double in(String text, String unit) {
+        Matcher m = VALUE.matcher(text);
+        if (!m.matches()) {
+            return Double.NaN;
+        }
+        double v = Double.parseDouble(m.group(1));
+        if (m.group(2).isEmpty() || m.group(2).equals(unit.strip())) {
+            return v;
+        }
+        try {
+            Unit<?> to = unit.isBlank() ? tech.units.indriya.AbstractUnit.ONE
+                    : SimpleUnitFormat.getInstance().parse(unit.strip());
+            return SimpleUnitFormat.getInstance().parse(m.group(2)).getConverterToAny(to).convert(v);
+        } catch (MeasurementParseException | IllegalArgumentException | IncommensurableException
+                | UnconvertibleException e) {
+            return Double.NaN;
+        }
+    }
+
+    /** A unit's text parsed by indriya, refused at {@code node} unless it is a unit of the kind. */
+    static Unit<?> unit(SceneNode node, String text, QuantityKind kind) {
         Unit<?> u;
         try {
             u = SimpleUnitFormat.getInstance().parse(text.strip());

@@ -66,4 +66,57 @@ class GuiSceneFileTest {
         assertTrue(((Number) m.get("steps")).longValue() > 0, "steps made: " + m);
         assertEquals(null, m.get("diverged"));
     }
+
+    /** The liver example opens with its parameters' controls and prints its line as every scripted run. */
+    @Test
+    @Tag("gui")
+    void runForOnTheLiverPrintsItsLine() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.Files.exists(
+                Path.of("../shared/meshes/thorax/liver.obj")), "missing ../shared/meshes/thorax/liver.obj");
+        Map<String, Object> m = GuiCommandTest.scriptedSummary("gui", "docs/examples/liver.yaml", "--run-for", "2",
+                "--unpaced", "--set", "E=8");
+        assertEquals("file-liver", m.get("scene"));
+        assertTrue(((Number) m.get("steps")).longValue() > 0, "steps made: " + m);
+        assertEquals(null, m.get("diverged"));
+    }
+
+    /**
+     * A scene file's window: one control per named parameter, labelled with its unit (a rebuild one says it
+     * restarts); a live value typed in reaches the running springs without a restart, a rebuild one makes a new
+     * scene (a finer lattice) from rest.
+     */
+    @Test
+    @Tag("gui")
+    void theControlsAreTheFilesParametersLiveOrRebuilding() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        Path file = java.nio.file.Files.writeString(dir.resolve("bar.yaml"),
+                org.tensim.scene.tunable.FileViewSceneParametersTest.VOLUME);
+        GuiWindow w = GuiCommand.open(FileViewScene.factory(file), null, null, null, true);
+        try {
+            GuiTestSupport.waitFor("the first steps", () -> w.scene() != null && w.runner().steps() > 3);
+            assertEquals("E (kPa)", w.controls().control("E").labelText());
+            assertEquals("g (m/s^2)", w.controls().control("g").labelText());
+            assertEquals("cell (mm), restarts", w.controls().control("cell").labelText());
+            org.tensim.solver.Simulation sim = w.scene().bodies().get(0).simulation();
+            double k0 = sim.state().springK[0];
+            GuiTestSupport.onEdt(() -> w.controls().control("E").enter("6"));
+            GuiTestSupport.waitFor("E to reach the springs", () -> Math.abs(sim.state().springK[0] - 2 * k0) < 1e-12 * k0);
+            assertTrue(w.scene().bodies().get(0).simulation() == sim, "the same running simulation");
+            assertTrue(sim.time() > 0, "not restarted");
+            int nodes = sim.state().nodeCount;
+            GuiTestSupport.onEdt(() -> w.controls().control("cell").enter("4"));
+            GuiTestSupport.waitFor("a finer lattice", () -> w.scene().bodies().get(0).simulation().state().nodeCount
+                    > nodes);
+            org.tensim.solver.SystemState rebuilt = w.scene().bodies().get(0).simulation().state();
+            double kFresh = org.tensim.solver.SystemState.compile(org.tensim.scene.file.SceneLoader.load(file,
+                    java.util.List.of("cell=4", "E=6")).bodies().get("v").topology()).springK[0];
+            assertEquals(kFresh, rebuilt.springK[0], 0, "the rebuild keeps E = 6 kPa");
+        } finally {
+            GuiTestSupport.onEdt(w::close);
+        }
+    }
+
+    @org.junit.jupiter.api.io.TempDir
+    Path dir;
 }

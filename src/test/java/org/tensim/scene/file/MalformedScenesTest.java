@@ -104,6 +104,23 @@ class MalformedScenesTest {
             {"expect-both-ranges.yaml", "expect-both-ranges.yaml:12:5: expect[0]", "give either between"},
             {"expect-negative-tolerance.yaml", "expect-negative-tolerance.yaml:12:57: expect[0].tolerance",
                 "a tolerance must be >= 0"},
+            {"parameter-live-on-rebuild-key.yaml", "parameter-live-on-rebuild-key.yaml:10:63: parameters.side.apply",
+                "parameter side is marked live, but bodies.c.side can only apply on rebuild"},
+            {"parameter-live-cell-size.yaml", "parameter-live-cell-size.yaml:12:64: parameters.cell.apply",
+                "bodies.v.cell can only apply on rebuild"},
+            {"parameter-default-out-of-range.yaml", "parameter-default-out-of-range.yaml:10:51: parameters.k.range",
+                "the default of parameter k, 100 N/m (bodies.c.stiffness at parameter-default-out-of-range.yaml:3:30),"
+                    + " is outside its range [200, 400] N/m"},
+            {"parameter-unit-wrong-dimension.yaml", "parameter-unit-wrong-dimension.yaml:10:39: parameters.k.unit",
+                "\"kPa\" is not a unit of stiffness, the dimension of bodies.c.stiffness"},
+            {"parameter-path-not-in-file.yaml", "parameter-path-not-in-file.yaml:10:13: parameters.m.path",
+                "the file has no value at bodies.c.node_mass"},
+            {"parameter-bad-apply.yaml", "parameter-bad-apply.yaml:10:69: parameters.k.apply",
+                "\"later\" is not one of live, rebuild"},
+            {"parameter-range-reversed.yaml", "parameter-range-reversed.yaml:10:57: parameters.k.range[1]",
+                "the range's max \"10\" must be above its min \"400\""},
+            {"parameter-not-a-quantity.yaml", "parameter-not-a-quantity.yaml:10:18: parameters.region.path",
+                "conditions[0].region (parameter-not-a-quantity.yaml:7:27) is not a quantity this scene reads"},
         });
     }
 

@@ -35,6 +35,7 @@ class SceneSchemaTest {
         m.put("zone", SceneZones.KEYS);
         m.put("probe", SceneProbe.KEYS);
         m.put("expect", ExpectBlock.KEYS);
+        m.put("parameter", SceneParameters.KEYS);
         return m;
     }
 

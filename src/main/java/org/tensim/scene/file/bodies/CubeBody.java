@@ -38,6 +38,12 @@ public final class CubeBody implements BodyType {
         return List.of("side", "node_mass", "stiffness", "damping", "element");
     }
 
+    /** Spring stiffness and damping change the compiled state's constants only. */
+    @Override
+    public List<String> liveKeys() {
+        return List.of("stiffness", "damping");
+    }
+
     @Override
     public int[] build(BodyContext ctx, Topology t) {
         CubeParameters d = CubeParameters.paper();

@@ -54,6 +54,18 @@ public final class VolumeBodyType implements BodyType {
         return List.of("surface", "box", "cell", "material", "fit");
     }
 
+    /** Spring stiffness and damping change the compiled state's constants only. */
+    @Override
+    public List<String> liveKeys() {
+        return List.of("material.E", "material.damping_time");
+    }
+
+    /** A zone's E sets its parallel springs' stiffness only. */
+    @Override
+    public List<String> liveZoneMaterialKeys() {
+        return List.of("E");
+    }
+
     @Override
     public int[] build(BodyContext ctx, Topology t) {
         MapReader r = ctx.keys();
