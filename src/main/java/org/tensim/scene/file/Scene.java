@@ -13,8 +13,15 @@ import org.tensim.scene.conditions.TimeLaw;
  * @param file      the scene file
  * @param overrides the {@code --set} options applied, in order
  * @param expect    the {@code expect:} block's checks, in order (empty without one)
+ * @param rigids    the {@code type: rigid} bodies, which have no nodes (not among {@code bodies}), in file order
  */
 public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
         Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
-        List<SceneExpectation> expect) {
+        List<SceneExpectation> expect, Map<String, RigidBody> rigids) {
+    /** A scene without rigid bodies. */
+    public Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
+            Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
+            List<SceneExpectation> expect) {
+        this(file, overrides, bodies, laws, regions, probes, run, expect, Map.of());
+    }
 }

@@ -14,31 +14,45 @@ import java.util.Map;
  * <li>{@code {body: b, region: r}} (or {@code quantity: mean}): the mean displacement of the region's nodes,
  * {@code NAME_mean_dx_m, ...};</li>
  * <li>{@code {body: b, region: r, quantity: extents}}: the bounding box of the region's current positions,
- * {@code NAME_min_x_m, NAME_max_x_m, NAME_min_y_m, ...}.</li>
+ * {@code NAME_min_x_m, NAME_max_x_m, NAME_min_y_m, ...};</li>
+ * <li>{@code {body: b, region: r, quantity: energy}} (or {@code {body: b, quantity: energy}}, the whole body): the
+ * elastic energy of the springs with both ends in the region, {@code sum 1/2 k (l - l0)^2}, and the kinetic energy
+ * of its free nodes, {@code sum 1/2 m v^2}, {@code NAME_elastic_J, NAME_kinetic_J} (membrane triangles, shear
+ * elements and contact penalties are not counted);</li>
+ * <li>{@code {rigid: plate}}: a rigid body's pose {@code x = R x0 + c}: c and R's rotation vector (axis times angle),
+ * {@code NAME_cx_m, NAME_cy_m, NAME_cz_m, NAME_rx_rad, NAME_ry_rad, NAME_rz_rad}.</li>
  * </ul>
  * {@code body} may be left out when the scene has one body.
  *
  * @param name     the probe's name (its key under {@code probes:}), the columns' prefix
  * @param body     the body's name
  * @param nodes    the nodes it reads
- * @param quantity displacement (one node or surface vertex), mean or extents
+ * @param quantity displacement (one node or surface vertex), mean, extents, energy or pose (body: the rigid body's
+ *                 name, no node)
  * @param weights  the nodes' weights of a surface vertex (summing to 1); null for a node or a region
  */
 public record SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights) {
     /** The keys of a probe. */
-    public static final List<String> KEYS = List.of("body", "node", "vertex", "region", "quantity");
+    public static final List<String> KEYS = List.of("body", "node", "vertex", "region", "quantity", "rigid");
 
     /** A probe of a node or a region. */
     public SceneProbe(String name, String body, int[] nodes, String quantity) {
         this(name, body, nodes, quantity, null);
     }
     /** The quantities of a region probe. */
-    public static final List<String> REGION_QUANTITIES = List.of("mean", "extents");
+    public static final List<String> REGION_QUANTITIES = List.of("mean", "extents", "energy");
 
     /** The probe's CSV columns. */
     public List<String> columns() {
         List<String> c = new ArrayList<>();
-        if (quantity.equals("extents")) {
+        if (quantity.equals("energy")) {
+            c.add(name + "_elastic_J");
+            c.add(name + "_kinetic_J");
+        } else if (quantity.equals("pose")) {
+            for (String a : List.of("cx_m", "cy_m", "cz_m", "rx_rad", "ry_rad", "rz_rad")) {
+                c.add(name + "_" + a);
+            }
+        } else if (quantity.equals("extents")) {
             for (String a : List.of("x", "y", "z")) {
                 c.add(name + "_min_" + a + "_m");
                 c.add(name + "_max_" + a + "_m");
@@ -54,7 +68,7 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
 
     /** Reads the {@code probes:} block (absent: none). */
     static List<SceneProbe> read(SceneNode block, Map<String, SceneBody> bodies,
-            Map<String, SceneRegions.Region> regions) {
+            Map<String, SceneRegions.Region> regions, Map<String, RigidBody> rigids) {
         List<SceneProbe> out = new ArrayList<>();
         if (block == null) {
             return out;
@@ -64,6 +78,10 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
         }
         for (Map.Entry<String, SceneNode> e : block.entries().entrySet()) {
             MapReader r = new MapReader(e.getValue(), KEYS);
+            if (r.has("rigid")) {
+                out.add(pose(e.getKey(), r, rigids));
+                continue;
+            }
             String body;
             if (r.has("body")) {
                 body = SceneCheck.bodyName(r.scalar("body"), bodies);
@@ -74,9 +92,14 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
                         + bodies.size() + " bodies: " + String.join(", ", bodies.keySet()) + ")");
             }
             int ways = (r.has("node") ? 1 : 0) + (r.has("vertex") ? 1 : 0) + (r.has("region") ? 1 : 0);
+            if (ways == 0 && r.has("quantity") && r.scalar("quantity").text().equals("energy")) {
+                out.add(new SceneProbe(e.getKey(), body, java.util.stream.IntStream.range(0,
+                        bodies.get(body).topology().nodeCount()).toArray(), "energy"));
+                continue;
+            }
             if (ways != 1) {
                 throw SceneException.at(r.node(), "give one of node (an index), vertex (a surface vertex's index) or"
-                        + " region (a name)");
+                        + " region (a name), or quantity: energy for the whole body");
             }
             if (r.has("vertex")) {
                 out.add(vertex(e.getKey(), body, bodies.get(body), r));
@@ -102,6 +125,22 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
             }
         }
         return out;
+    }
+
+    private static SceneProbe pose(String name, MapReader r, Map<String, RigidBody> rigids) {
+        SceneNode n = r.scalar("rigid");
+        for (String k : List.of("body", "node", "vertex", "region")) {
+            if (r.has(k)) {
+                throw SceneException.at(r.node().get(k), "a rigid body's probe is its pose: leave out " + k);
+            }
+        }
+        if (!rigids.containsKey(n.text())) {
+            throw SceneException.at(n, n.describe() + " is not a rigid body of this file"
+                    + DidYouMean.suggest(n.text(), rigids.keySet()) + (rigids.isEmpty() ? " (it has none)"
+                    : " (rigid bodies: " + String.join(", ", rigids.keySet()) + ")"));
+        }
+        r.choice("quantity", List.of("pose"), "pose");
+        return new SceneProbe(name, n.text(), new int[0], "pose");
     }
 
     private static SceneProbe vertex(String name, String body, SceneBody b, MapReader r) {

@@ -25,6 +25,9 @@ import org.tensim.model.Node;
  * plane included;</li>
  * <li>{@code indices: [0, 1, 2]}: vertices by 0-based index;</li>
  * <li>{@code labels: {file: f.labels, label: tendon}}: the vertices a {@link VertexLabelsFile} gives that label;</li>
+ * <li>{@code surface: BODY}: the nodes that carry the body's surface (a volume's embedded surface: each vertex's
+ * node of largest weight), on that body only; intersected with a box or a plane it is a part of the surface, on
+ * whose faces a pressure acts ({@link SurfaceFaces});</li>
  * <li>{@code union|intersection|difference: [r1, r2, ...]}: of other regions (difference: the first less the
  * others).</li>
  * </ul>
@@ -33,8 +36,8 @@ import org.tensim.model.Node;
  */
 public final class SceneRegions {
     /** Ways of choosing nodes. */
-    public static final List<String> KINDS = List.of("box", "sphere", "plane", "indices", "labels", "union",
-            "intersection", "difference");
+    public static final List<String> KINDS = List.of("box", "sphere", "plane", "indices", "labels", "surface",
+            "union", "intersection", "difference");
     /** The keys of a region. */
     public static final List<String> KEYS;
     /** The keys of each geometric kind. */
@@ -118,7 +121,7 @@ public final class SceneRegions {
         }
         String kind = kinds.get(0);
         Map<String, BitSet> sel = new LinkedHashMap<>();
-        for (String b : bodyNames(r)) {
+        for (String b : kind.equals("surface") ? surfaceBody(r) : bodyNames(r)) {
             SceneBody body = bodies.get(b);
             BitSet s = select(kind, r.required(kind), body);
             if (s.isEmpty()) {
@@ -164,6 +167,8 @@ public final class SceneRegions {
                 return indices(v, body);
             case "labels":
                 return labels(v, body);
+            case "surface":
+                return surface(v, body);
             default:
                 return combination(kind, v, body);
         }
@@ -246,6 +251,26 @@ public final class SceneRegions {
                         + body.vertexCount() + " (0 to " + (body.vertexCount() - 1) + ")");
             }
             s.set(body.nodeOfVertex((int) k));
+        }
+        return s;
+    }
+
+    private List<String> surfaceBody(MapReader r) {
+        if (r.has("body") || r.has("bodies")) {
+            throw SceneException.at(r.node().get(r.has("body") ? "body" : "bodies"), "a surface region is on the body"
+                    + " it names (surface: BODY); leave out body and bodies");
+        }
+        return List.of(SceneCheck.bodyName(r.scalar("surface"), bodies));
+    }
+
+    private static BitSet surface(SceneNode v, SceneBody body) {
+        if (body.surface() == null) {
+            throw SceneException.at(v, "body '" + body.name() + "' (type " + body.type() + ") carries no surface: "
+                    + "select its nodes by a box, a sphere, a plane, indices or labels");
+        }
+        BitSet s = new BitSet();
+        for (int n : SurfaceFaces.carriers(body.surface().mapping())) {
+            s.set(n);
         }
         return s;
     }
