@@ -54,7 +54,8 @@ public final class SceneLoader {
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
         Map<String, RigidBody> rigids = new LinkedHashMap<>();
         Map<String, SceneBody> bodies = bodies(top, units, folder, laws, rigids);
-        Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder);
+        Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder,
+                rigids.keySet());
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
         SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units, rigids);
         List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids);

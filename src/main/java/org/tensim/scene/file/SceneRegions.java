@@ -69,6 +69,7 @@ public final class SceneRegions {
     private final Path folder;
     private final Map<String, Region> done = new LinkedHashMap<>();
     private final List<String> resolving = new ArrayList<>();
+    private java.util.Set<String> rigid = java.util.Set.of();
 
     private SceneRegions(SceneNode block, Map<String, SceneBody> bodies, SceneUnits units, Path folder) {
         this.block = block;
@@ -80,6 +81,12 @@ public final class SceneRegions {
     /** Every region of the block, resolved, in file order; an absent block is none. */
     public static Map<String, Region> read(SceneNode block, Map<String, SceneBody> bodies, SceneUnits u,
             Path folder) {
+        return read(block, bodies, u, folder, java.util.Set.of());
+    }
+
+    /** As {@link #read(SceneNode, Map, SceneUnits, Path)}, refusing a region on one of the rigid bodies named. */
+    public static Map<String, Region> read(SceneNode block, Map<String, SceneBody> bodies, SceneUnits u,
+            Path folder, java.util.Set<String> rigid) {
         if (block == null) {
             return Map.of();
         }
@@ -87,6 +94,7 @@ public final class SceneRegions {
             throw SceneException.at(block, "expected a map of named regions, got " + block.describe());
         }
         SceneRegions r = new SceneRegions(block, bodies, u, folder);
+        r.rigid = rigid;
         for (String name : block.entries().keySet()) {
             r.resolve(name, block.get(name));
         }
@@ -149,7 +157,7 @@ public final class SceneRegions {
         }
         List<SceneNode> items = v.isList() ? v.items() : List.of(v);
         for (SceneNode i : items) {
-            names.add(SceneCheck.bodyName(i, bodies));
+            names.add(bodyName(i));
         }
         if (names.isEmpty()) {
             throw SceneException.at(v, "expected at least one body name");
@@ -260,7 +268,15 @@ public final class SceneRegions {
             throw SceneException.at(r.node().get(r.has("body") ? "body" : "bodies"), "a surface region is on the body"
                     + " it names (surface: BODY); leave out body and bodies");
         }
-        return List.of(SceneCheck.bodyName(r.scalar("surface"), bodies));
+        return List.of(bodyName(r.scalar("surface")));
+    }
+
+    private String bodyName(SceneNode n) {
+        if (n.isScalar() && rigid.contains(n.text())) {
+            throw SceneException.at(n, "body '" + n.text() + "' is rigid: it has no nodes for a region to select;"
+                    + " a condition refers to it by with: " + n.text());
+        }
+        return SceneCheck.bodyName(n, bodies);
     }
 
     private static BitSet surface(SceneNode v, SceneBody body) {
