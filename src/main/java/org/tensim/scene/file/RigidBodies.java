@@ -120,7 +120,8 @@ public final class RigidBodies {
             sdf = RigidShapes.complement(sdf);
         }
         RigidMotion motion = r.has("motion") ? motion(r.required("motion"), u, laws) : RigidMotion.FIXED;
-        return new RigidBody(name, shape, b, sdf, motion, bounds, mesh, cavity);
+        String motionType = r.has("motion") ? r.required("motion").get("type").text() : "fixed";
+        return new RigidBody(name, shape, b, sdf, motion, bounds, mesh, cavity, motionType);
     }
 
     private static RigidMotion motion(SceneNode node, SceneUnits u, Map<String, TimeLaw> laws) {

@@ -21,9 +21,10 @@ import org.tensim.scene.rigid.RigidShapes;
  * @param boundsM its surface's rest bounding box {min x, y, z, max x, y, z}, m (a plane's spans +/-1 km)
  * @param mesh    its surface mesh at rest, m, for drawing (null for the built-in shapes)
  * @param cavity  whether the solid is the outside of the closed surface (nodes are kept inside it)
+ * @param motionType the motion's {@code type}: fixed, translation, rotation or helical
  */
 public record RigidBody(String name, String shape, SceneNode node, SignedDistance surface, RigidMotion motion,
-        double[] boundsM, TriangleMesh mesh, boolean cavity) {
+        double[] boundsM, TriangleMesh mesh, boolean cavity, String motionType) {
     /** A contact body of this rigid body for one topology; {@code hard}: projected after each step. */
     public ContactBody contactBody(boolean hard) {
         return new ContactBody(name, surface, motion, boundsM.clone(), hard);
