@@ -101,11 +101,13 @@ public final class RigidBodies {
                     h[a] = (hi[a] - lo[a]) / 2;
                 }
                 sdf = RigidShapes.box(c, h);
+                mesh = org.tensim.scene.rigid.RigidMeshes.box(lo, hi);
                 bounds = new double[] {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
             } else if (shape.equals("sphere")) {
                 double[] c = m.vector("centre", QuantityKind.LENGTH, u);
                 double rad = m.positive("radius", QuantityKind.LENGTH, u, Double.NaN);
                 sdf = RigidShapes.sphere(c, rad);
+                mesh = org.tensim.scene.rigid.RigidMeshes.sphere(c, rad);
                 bounds = new double[] {c[0] - rad, c[1] - rad, c[2] - rad, c[0] + rad, c[1] + rad, c[2] + rad};
             } else {
                 double[] p = m.vector("point", QuantityKind.LENGTH, u);

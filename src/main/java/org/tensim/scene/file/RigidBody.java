@@ -19,7 +19,8 @@ import org.tensim.scene.rigid.RigidShapes;
  *                or outside it for a cavity)
  * @param motion  its pose over time
  * @param boundsM its surface's rest bounding box {min x, y, z, max x, y, z}, m (a plane's spans +/-1 km)
- * @param mesh    its surface mesh at rest, m, for drawing (null for the built-in shapes)
+ * @param mesh    its surface mesh at rest, m, for drawing: the file's, or a box's or a sphere's; null for a plane,
+ *                which has no extent (a view draws a square of it about the deformable bodies)
  * @param cavity  whether the solid is the outside of the closed surface (nodes are kept inside it)
  * @param motionType the motion's {@code type}: fixed, translation, rotation or helical
  */
