@@ -85,6 +85,38 @@ class RigidScenesTest {
     }
 
     @Test
+    void aFloorReadFromAnObjFileCarriesTheBlockAsTheExactPlaneDoes() throws java.io.IOException {
+        // The floor as a closed box surface in an OBJ file, in mm: its top face is the plane y = 0. Its distance is
+        // sampled on a 1 mm grid (the bones' DistanceGrid), linear across the flat face, so the block rests as on
+        // the exact plane.
+        org.tensim.io.mesh.TriangleMesh floor = org.tensim.scene.rigid.RigidMeshes.box(
+                new double[] {-0.02, -0.01, -0.02}, new double[] {0.035, 0, 0.035});
+        org.tensim.io.mesh.ObjWriter.write(dir.resolve("floor.obj"), floor, org.tensim.io.mesh.MeshUnits.MM,
+                java.util.List.of("a floor"), 6);
+        double k = 20;
+        String contact = "{type: contact, region: base, with: floor, stiffness: " + k + " N/m}";
+        Scene plane = blockOnPlane(contact, "implicit-euler");
+        // The same file (written by blockOnPlane as rest.yaml) with the floor read from the OBJ file.
+        Scene mesh = SceneFiles.load(dir, "mesh.yaml", java.nio.file.Files.readString(dir.resolve("rest.yaml"))
+                        .replace("floor: {type: rigid, plane: {point: [0, 0, 0], normal: [0, 1, 0]}}",
+                                "floor: {type: rigid, mesh: {file: floor.obj, units: mm}, cell: 1}"));
+        assertEquals("mesh", mesh.rigids().get("floor").shape());
+        double deepPlane = deepest(run(plane, plane.bodies().get("block")).state());
+        double deepMesh = deepest(run(mesh, mesh.bodies().get("block")).state());
+        System.out.printf("block on a floor from an OBJ file: deepest %.6g mm (exact plane %.6g mm)%n",
+                deepMesh * 1e3, deepPlane * 1e3);
+        assertEquals(deepPlane, deepMesh, 1e-3 * deepPlane, "the grid is exact across a flat face");
+    }
+
+    private static double deepest(SystemState st) {
+        double lowest = 0;
+        for (int n = 0; n < st.nodeCount; n++) {
+            lowest = Math.min(lowest, st.position(n, 1));
+        }
+        return -lowest;
+    }
+
+    @Test
     void aHardContactKeepsTheBlockOnThePlaneToRoundOff() {
         // The contact integrator (BDF2 with the contacts in its Newton matrix): implicit Euler followed by the
         // projection lets this block fold through its own base within a second (docs/scenes.md).
