@@ -181,6 +181,31 @@ public final class SceneRunner {
         out[o + 5] = f * wz;
     }
 
+    /**
+     * A contact probe's largest penetration {@code max(0, g - d)} and separation {@code max(0, d - g)} over its
+     * pairs at time t, m, into out[o], out[o + 1]; d is the node's signed distance to the rigid solid at its pose.
+     */
+    static void contact(RigidBody b, SceneProbe p, SystemState st, double t, double[] out, int o) {
+        double[] r = new double[9];
+        double[] c = new double[3];
+        double[] g = new double[3];
+        b.motion().pose(t, r, 0, c, 0);
+        double pen = 0;
+        double sep = 0;
+        for (int i = 0; i < p.nodes().length; i++) {
+            int n = 3 * p.nodes()[i];
+            double dx = st.x[n] - c[0];
+            double dy = st.x[n + 1] - c[1];
+            double dz = st.x[n + 2] - c[2];
+            double d = b.surface().distance(r[0] * dx + r[3] * dy + r[6] * dz, r[1] * dx + r[4] * dy + r[7] * dz,
+                    r[2] * dx + r[5] * dy + r[8] * dz, g, 0);
+            pen = Math.max(pen, p.weights()[i] - d);
+            sep = Math.max(sep, d - p.weights()[i]);
+        }
+        out[o] = pen;
+        out[o + 1] = sep;
+    }
+
     private static void sample(Scene scene, Map<String, Simulation> sims, Map<SceneProbe, int[]> springs, double t,
             double[] row) {
         row[0] = t;
@@ -193,6 +218,11 @@ public final class SceneRunner {
                 continue;
             }
             SystemState st = sims.get(p.body()).state();
+            if (p.quantity().equals("contact")) {
+                contact(scene.rigids().get(p.with()), p, st, t, row, c);
+                c += 2;
+                continue;
+            }
             if (p.quantity().equals("energy")) {
                 row[c++] = elasticEnergy(st, springs.get(p));
                 row[c++] = kineticEnergy(st, p.nodes());

@@ -151,4 +151,50 @@ class SceneProbesEnergyTest {
         assertEquals(List.of("rib_cx_m", "rib_cy_m", "rib_cz_m", "rib_rx_rad", "rib_ry_rad", "rib_rz_rad"),
                 s.probes().get(1).columns());
     }
+
+    @Test
+    void theContactProbeReadsTheDeepestPenetrationAndTheWidestSeparation() throws IOException {
+        Scene s = load("""
+                version: 1
+                units: {length: mm}
+                bodies:
+                  block: {type: volume, box: [10, 10, 10], cell: 5, material: {E: 1 kPa}}
+                  floor: {type: rigid, plane: {point: [0, 0, 0], normal: [0, 1, 0]}}
+                  wall: {type: rigid, box: {min: [-40, 0, -40], max: [50, 10, 50]}, cavity: true}
+                regions:
+                  base: {box: {min: [0, 0, 0], max: [1, 0, 1], frame: relative}}
+                  top: {box: {min: [0, 1, 0], max: [1, 1, 1], frame: relative}}
+                conditions:
+                  - {type: contact, region: base, with: floor, stiffness: 10 N/m}
+                  - {type: sliding, region: top, with: wall, stiffness: 10 N/m}
+                probes:
+                  base: {body: block, with: floor}
+                  top: {body: block, with: wall}
+                run: {dt: 1 ms, duration: 0.01 s}
+                """);
+        SceneBody b = s.bodies().get("block");
+        SystemState st = SystemState.compile(b.topology());
+        BitSet base = s.regions().get("base").in("block");
+        BitSet top = s.regions().get("top").in("block");
+        SceneProbe pb = s.probes().get(0);
+        SceneProbe pt = s.probes().get(1);
+        assertEquals(base.cardinality(), pb.nodes().length, "one pair a base node");
+        assertEquals(top.cardinality(), pt.nodes().length, "the sliding's pairs on the wall, not its complement's");
+        assertEquals(List.of("base_penetration_m", "base_separation_m"), pb.columns());
+        int a = base.nextSetBit(0);
+        int c = base.nextSetBit(a + 1);
+        st.x[3 * a + 1] = -0.001;
+        st.x[3 * c + 1] = 0.002;
+        int u = top.nextSetBit(0);
+        int w = top.nextSetBit(u + 1);
+        st.x[3 * u + 1] = 0.0107;
+        st.x[3 * w + 1] = 0.0096;
+        double[] out = new double[4];
+        SceneRunner.contact(s.rigids().get("floor"), pb, st, 0, out, 0);
+        SceneRunner.contact(s.rigids().get("wall"), pt, st, 0, out, 2);
+        assertEquals(0.001, out[0], 1e-15, "the base node 1 mm into the floor");
+        assertEquals(0.002, out[1], 1e-15, "the base node 2 mm above it");
+        assertEquals(0.0007, out[2], 1e-15, "the top node 0.7 mm into the wall's ceiling");
+        assertEquals(0.0004, out[3], 1e-15, "the top node 0.4 mm off it");
+    }
 }

@@ -49,7 +49,7 @@ final class RigidConditions {
                 : " (rigid bodies: " + String.join(", ", rigids.keySet()) + ")";
         if (bodies.containsKey(w.text())) {
             throw SceneException.at(w, "body '" + w.text() + "' is of type " + bodies.get(w.text()).type()
-                    + ", not rigid: a " + r.string("type") + " is with a rigid body" + list);
+                    + ", not rigid: a " + r.string("type", "probe") + " is with a rigid body" + list);
         }
         throw SceneException.at(w, w.describe() + " is not a rigid body of this file"
                 + DidYouMean.suggest(w.text(), rigids.keySet()) + list);

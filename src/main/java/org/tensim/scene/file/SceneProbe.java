@@ -20,7 +20,10 @@ import java.util.Map;
  * of its free nodes, {@code sum 1/2 m v^2}, {@code NAME_elastic_J, NAME_kinetic_J} (membrane triangles, shear
  * elements and contact penalties are not counted);</li>
  * <li>{@code {rigid: plate}}: a rigid body's pose {@code x = R x0 + c}: c and R's rotation vector (axis times angle),
- * {@code NAME_cx_m, NAME_cy_m, NAME_cz_m, NAME_rx_rad, NAME_ry_rad, NAME_rz_rad}.</li>
+ * {@code NAME_cx_m, NAME_cy_m, NAME_cz_m, NAME_rx_rad, NAME_ry_rad, NAME_rz_rad};</li>
+ * <li>{@code {body: b, with: plate}} ({@code quantity: contact}): over the body's contact (and sliding) pairs with
+ * the rigid body, the largest penetration {@code max(0, g - d)} and the largest separation {@code max(0, d - g)},
+ * d a node's signed distance to the rigid solid and g its gap, {@code NAME_penetration_m, NAME_separation_m}.</li>
  * </ul>
  * {@code body} may be left out when the scene has one body.
  *
@@ -29,11 +32,18 @@ import java.util.Map;
  * @param nodes    the nodes it reads
  * @param quantity displacement (one node or surface vertex), mean, extents, energy or pose (body: the rigid body's
  *                 name, no node)
- * @param weights  the nodes' weights of a surface vertex (summing to 1); null for a node or a region
+ * @param weights  the nodes' weights of a surface vertex (summing to 1); for a contact probe, each node's gap (m);
+ *                 null for a node or a region
+ * @param with     the rigid body of a contact probe; null for the others
  */
-public record SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights) {
+public record SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights, String with) {
+    /** A probe of a node, a region or a surface vertex. */
+    public SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights) {
+        this(name, body, nodes, quantity, weights, null);
+    }
+
     /** The keys of a probe. */
-    public static final List<String> KEYS = List.of("body", "node", "vertex", "region", "quantity", "rigid");
+    public static final List<String> KEYS = List.of("body", "node", "vertex", "region", "quantity", "rigid", "with");
 
     /** A probe of a node or a region. */
     public SceneProbe(String name, String body, int[] nodes, String quantity) {
@@ -45,7 +55,10 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
     /** The probe's CSV columns. */
     public List<String> columns() {
         List<String> c = new ArrayList<>();
-        if (quantity.equals("energy")) {
+        if (quantity.equals("contact")) {
+            c.add(name + "_penetration_m");
+            c.add(name + "_separation_m");
+        } else if (quantity.equals("energy")) {
             c.add(name + "_elastic_J");
             c.add(name + "_kinetic_J");
         } else if (quantity.equals("pose")) {
@@ -91,6 +104,10 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
                 throw SceneException.at(r.node(), "missing required key 'body' (the scene has "
                         + bodies.size() + " bodies: " + String.join(", ", bodies.keySet()) + ")");
             }
+            if (r.has("with")) {
+                out.add(contact(e.getKey(), body, bodies.get(body), r, rigids));
+                continue;
+            }
             int ways = (r.has("node") ? 1 : 0) + (r.has("vertex") ? 1 : 0) + (r.has("region") ? 1 : 0);
             if (ways == 0 && r.has("quantity") && r.scalar("quantity").text().equals("energy")) {
                 out.add(new SceneProbe(e.getKey(), body, java.util.stream.IntStream.range(0,
@@ -125,6 +142,36 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
             }
         }
         return out;
+    }
+
+    private static SceneProbe contact(String name, String body, SceneBody b, MapReader r,
+            Map<String, RigidBody> rigids) {
+        for (String k : List.of("node", "vertex", "region")) {
+            if (r.has(k)) {
+                throw SceneException.at(r.node().get(k), "a contact probe reads every pair of the body with the rigid"
+                        + " body: leave out " + k);
+            }
+        }
+        RigidBody rigid = RigidConditions.rigid(r, bodies(b), rigids);
+        r.choice("quantity", List.of("contact"), "contact");
+        List<Integer> nodes = new ArrayList<>();
+        List<Double> gaps = new ArrayList<>();
+        for (org.tensim.model.ContactPair p : b.topology().contacts()) {
+            if (b.topology().contactBodies().get(p.body()).name().equals(rigid.name())) {
+                nodes.add(p.node());
+                gaps.add(p.gapM());
+            }
+        }
+        if (nodes.isEmpty()) {
+            throw SceneException.at(r.node().get("with"), "body '" + body + "' has no contact or sliding with rigid"
+                    + " body '" + rigid.name() + "'");
+        }
+        return new SceneProbe(name, body, nodes.stream().mapToInt(Integer::intValue).toArray(), "contact",
+                gaps.stream().mapToDouble(Double::doubleValue).toArray(), rigid.name());
+    }
+
+    private static Map<String, SceneBody> bodies(SceneBody b) {
+        return Map.of(b.name(), b);
     }
 
     private static SceneProbe pose(String name, MapReader r, Map<String, RigidBody> rigids) {
