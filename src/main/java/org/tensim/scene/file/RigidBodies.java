@@ -69,6 +69,7 @@ public final class RigidBodies {
         SignedDistance sdf;
         double[] bounds;
         TriangleMesh mesh = null;
+        String report = "";
         if (shape.equals("mesh")) {
             double cell = r.positive("cell", QuantityKind.LENGTH, u, DistanceGrid.DEFAULT_CELL_M);
             mesh = new BodyContext(name, r, u, folder).mesh(s, "rigid body", 1e-3, 100).mesh();
@@ -80,6 +81,7 @@ public final class RigidBodies {
             }
             sdf = grid;
             bounds = grid.boundsM();
+            report = "distance grid: " + grid.report().describe();
         } else {
             if (r.has("cell")) {
                 throw SceneException.at(r.node().get("cell"), "cell is the grid spacing of a mesh's distance; a "
@@ -123,7 +125,7 @@ public final class RigidBodies {
         }
         RigidMotion motion = r.has("motion") ? motion(r.required("motion"), u, laws) : RigidMotion.FIXED;
         String motionType = r.has("motion") ? r.required("motion").get("type").text() : "fixed";
-        return new RigidBody(name, shape, b, sdf, motion, bounds, mesh, cavity, motionType);
+        return new RigidBody(name, shape, b, sdf, motion, bounds, mesh, cavity, motionType, report);
     }
 
     private static RigidMotion motion(SceneNode node, SceneUnits u, Map<String, TimeLaw> laws) {

@@ -23,9 +23,11 @@ import org.tensim.scene.rigid.RigidShapes;
  *                which has no extent (a view draws a square of it about the deformable bodies)
  * @param cavity  whether the solid is the outside of the closed surface (nodes are kept inside it)
  * @param motionType the motion's {@code type}: fixed, translation, rotation or helical
+ * @param report  what {@code tensim check} prints of its surface (a mesh's distance grid: triangles, holes, grid
+ *                size, build time); empty for the built-in shapes' exact distances
  */
 public record RigidBody(String name, String shape, SceneNode node, SignedDistance surface, RigidMotion motion,
-        double[] boundsM, TriangleMesh mesh, boolean cavity, String motionType) {
+        double[] boundsM, TriangleMesh mesh, boolean cavity, String motionType, String report) {
     /** A contact body of this rigid body for one topology; {@code hard}: projected after each step. */
     public ContactBody contactBody(boolean hard) {
         return new ContactBody(name, surface, motion, boundsM.clone(), hard);

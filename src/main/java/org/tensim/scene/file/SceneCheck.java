@@ -41,6 +41,9 @@ public final class SceneCheck {
         for (RigidBody r : s.rigids().values()) {
             out.add(String.format(Locale.ROOT, "rigid %s: %s%s, %s motion; surface in %s", r.name(), r.shape(),
                     r.cavity() ? " (cavity)" : "", r.motionType(), box(r.boundsM())));
+            if (!r.report().isEmpty()) {
+                out.add("  " + r.report());
+            }
         }
         for (SceneRegions.Region r : s.regions().values()) {
             for (Map.Entry<String, BitSet> e : r.nodes().entrySet()) {

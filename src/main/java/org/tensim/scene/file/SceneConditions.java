@@ -157,7 +157,8 @@ public final class SceneConditions {
         }
         double[] unit = SurfaceFaces.unitPressureForces(b.surface(), faces);
         List<Node> all = b.topology().nodes();
-        for (int i = 0; i < all.size(); i++) {
+        // The mapping's nodes are the body's first ones (a volume's lattice is its whole topology).
+        for (int i = 0; i < Math.min(all.size(), unit.length / 3); i++) {
             double fx = p * unit[3 * i];
             double fy = p * unit[3 * i + 1];
             double fz = p * unit[3 * i + 2];
