@@ -11,6 +11,7 @@ import org.tensim.io.Progress;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunSignals;
 import org.tensim.io.RunStatus;
+import org.tensim.scene.file.RigidBody;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneBody;
@@ -22,8 +23,10 @@ import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /**
- * Runs a loaded {@link Scene} headless: each body is its own {@link Simulation}, all stepped in lockstep with
- * the run's integrator and step; after the start and after every {@code every}-th step one CSV row holds the time
+ * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation}, all stepped in lockstep
+ * with the run's integrator and step, and coupled through the scene's rigid bodies, whose surfaces and motions
+ * every body's contacts, attachments and slidings share (a rigid body has no state to step: its pose is a function
+ * of time); after the start and after every {@code every}-th step one CSV row holds the time
  * ({@code t_s}, the first body's clock) and every probe's values. The summary holds the scene file and its digest,
  * every {@code --set}, the run's settings, each body's node count and each CSV column's minimum and maximum, then,
  * for a scene with an {@code expect:} block, each check's measured value and verdict ({@link SceneExpectations}).
@@ -41,6 +44,7 @@ public final class SceneRunner {
         for (SceneBody b : bodies) {
             sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator())));
         }
+        Map<SceneProbe, int[]> springs = energySprings(scene, sims);
         List<String> header = SceneExpectation.columns(scene.probes());
         double[] row = new double[header.size()];
         SceneExpectations.Columns stats = new SceneExpectations.Columns(header);
@@ -50,7 +54,7 @@ public final class SceneRunner {
         SimulationDivergedException diverged = null;
         try (CsvWriter w = folder.csv(run.csv(), header, 1000)) {
             Progress progress = Progress.start("run", run.durationS());
-            sample(scene, sims, 0, row);
+            sample(scene, sims, springs, 0, row);
             stats.add(row);
             w.row(row);
             for (long i = 1; i <= steps; i++) {
@@ -60,7 +64,7 @@ public final class SceneRunner {
                 }
                 made = i;
                 if (i % run.every() == 0) {
-                    sample(scene, sims, clock.time(), row);
+                    sample(scene, sims, springs, clock.time(), row);
                     stats.add(row);
                     w.row(row);
                 }
@@ -109,17 +113,131 @@ public final class SceneRunner {
         return Double.isFinite(v) ? v : "none";
     }
 
+    /** Each energy probe's springs (both ends among its nodes), found once: {@link #sample} reads them. */
+    public static Map<SceneProbe, int[]> energySprings(Scene scene, Map<String, Simulation> sims) {
+        Map<SceneProbe, int[]> springs = new java.util.HashMap<>();
+        for (SceneProbe p : scene.probes()) {
+            if (p.quantity().equals("energy")) {
+                springs.put(p, springsWithin(sims.get(p.body()).state(), p.nodes()));
+            }
+        }
+        return springs;
+    }
+
+    /** The springs of {@code st} with both ends among {@code nodes}. */
+    static int[] springsWithin(SystemState st, int[] nodes) {
+        java.util.BitSet in = new java.util.BitSet();
+        for (int n : nodes) {
+            in.set(n);
+        }
+        return java.util.stream.IntStream.range(0, st.springCount())
+                .filter(i -> in.get(st.springA[i]) && in.get(st.springB[i])).toArray();
+    }
+
+    /** {@code sum 1/2 k (l - l0)^2} over the springs, J. */
+    static double elasticEnergy(SystemState st, int[] springs) {
+        double e = 0;
+        for (int i : springs) {
+            int a = 3 * st.springA[i];
+            int b = 3 * st.springB[i];
+            double dx = st.x[b] - st.x[a];
+            double dy = st.x[b + 1] - st.x[a + 1];
+            double dz = st.x[b + 2] - st.x[a + 2];
+            double ext = Math.sqrt(dx * dx + dy * dy + dz * dz) - st.springL[i];
+            e += 0.5 * st.springK[i] * ext * ext;
+        }
+        return e;
+    }
+
+    /** {@code sum 1/2 m v^2} over the free nodes among {@code nodes}, J. */
+    static double kineticEnergy(SystemState st, int[] nodes) {
+        double e = 0;
+        for (int n : nodes) {
+            if (st.invMass[n] != 0) {
+                double vx = st.v[3 * n];
+                double vy = st.v[3 * n + 1];
+                double vz = st.v[3 * n + 2];
+                e += 0.5 * st.mass[n] * (vx * vx + vy * vy + vz * vz);
+            }
+        }
+        return e;
+    }
+
+    /**
+     * A rigid body's pose at t as {c, rotation vector}: 6 values into out[o..], m and rad. The rotation vector is
+     * the axis times the angle, {@code theta = acos((tr R - 1) / 2)}, axis from R's antisymmetric part (exact
+     * below pi; at pi its axis is not resolved and the vector is zero).
+     */
+    static void pose(RigidBody b, double t, double[] out, int o) {
+        double[] r = new double[9];
+        double[] c = new double[3];
+        b.motion().pose(t, r, 0, c, 0);
+        out[o] = c[0];
+        out[o + 1] = c[1];
+        out[o + 2] = c[2];
+        double wx = r[7] - r[5];
+        double wy = r[2] - r[6];
+        double wz = r[3] - r[1];
+        double cos = Math.max(-1, Math.min(1, (r[0] + r[4] + r[8] - 1) / 2));
+        double theta = Math.acos(cos);
+        double sin = Math.sqrt(wx * wx + wy * wy + wz * wz) / 2;
+        double f = sin < 1e-12 ? 0.5 : theta / (2 * sin);
+        out[o + 3] = f * wx;
+        out[o + 4] = f * wy;
+        out[o + 5] = f * wz;
+    }
+
+    /**
+     * A contact probe's largest penetration {@code max(0, g - d)} and separation {@code max(0, d - g)} over its
+     * pairs at time t, m, into out[o], out[o + 1]; d is the node's signed distance to the rigid solid at its pose.
+     */
+    static void contact(RigidBody b, SceneProbe p, SystemState st, double t, double[] out, int o) {
+        double[] r = new double[9];
+        double[] c = new double[3];
+        double[] g = new double[3];
+        b.motion().pose(t, r, 0, c, 0);
+        double pen = 0;
+        double sep = 0;
+        for (int i = 0; i < p.nodes().length; i++) {
+            int n = 3 * p.nodes()[i];
+            double dx = st.x[n] - c[0];
+            double dy = st.x[n + 1] - c[1];
+            double dz = st.x[n + 2] - c[2];
+            double d = b.surface().distance(r[0] * dx + r[3] * dy + r[6] * dz, r[1] * dx + r[4] * dy + r[7] * dz,
+                    r[2] * dx + r[5] * dy + r[8] * dz, g, 0);
+            pen = Math.max(pen, p.weights()[i] - d);
+            sep = Math.max(sep, d - p.weights()[i]);
+        }
+        out[o] = pen;
+        out[o + 1] = sep;
+    }
+
     /**
      * One CSV row of the scene's probes ({@link SceneExpectation#columns}) at time t: the time, then every
-     * probe's values from the bodies' simulations (by body name).
+     * probe's values from the bodies' simulations (by body name); {@code springs} are the energy probes' springs
+     * ({@link #energySprings}), found once before the run.
      */
-    public static void sample(Scene scene, Map<String, Simulation> sims, double t, double[] row) {
+    public static void sample(Scene scene, Map<String, Simulation> sims, Map<SceneProbe, int[]> springs, double t,
+            double[] row) {
         row[0] = t;
         int c = 1;
         double[] d = new double[3];
         for (SceneProbe p : scene.probes()) {
+            if (p.quantity().equals("pose")) {
+                pose(scene.rigids().get(p.body()), t, row, c);
+                c += 6;
+                continue;
+            }
             SystemState st = sims.get(p.body()).state();
-            if (p.quantity().equals("extents")) {
+            if (p.quantity().equals("contact")) {
+                contact(scene.rigids().get(p.with()), p, st, t, row, c);
+                c += 2;
+                continue;
+            }
+            if (p.quantity().equals("energy")) {
+                row[c++] = elasticEnergy(st, springs.get(p));
+                row[c++] = kineticEnergy(st, p.nodes());
+            } else if (p.quantity().equals("extents")) {
                 for (int a = 0; a < 3; a++) {
                     double lo = Double.POSITIVE_INFINITY;
                     double hi = Double.NEGATIVE_INFINITY;

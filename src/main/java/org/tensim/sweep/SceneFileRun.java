@@ -13,6 +13,7 @@ import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneBody;
 import org.tensim.scene.file.SceneExpectation;
 import org.tensim.scene.file.SceneLoader;
+import org.tensim.scene.file.SceneProbe;
 import org.tensim.scene.tunable.FileViewScene;
 import org.tensim.scene.tunable.TunableParameter;
 import org.tensim.solver.Simulation;
@@ -107,8 +108,9 @@ public final class SceneFileRun {
         String status = PointResult.OK;
         String message = "";
         long made = 0;
+        Map<SceneProbe, int[]> springs = SceneRunner.energySprings(scene, sims);
         try {
-            SceneRunner.sample(scene, sims, 0, row);
+            SceneRunner.sample(scene, sims, springs, 0, row);
             stats.add(row);
             for (long i = 1; i <= steps; i++) {
                 for (Simulation s : sims.values()) {
@@ -116,7 +118,7 @@ public final class SceneFileRun {
                 }
                 made = i;
                 if (i % scene.run().every() == 0) {
-                    SceneRunner.sample(scene, sims, clock.time(), row);
+                    SceneRunner.sample(scene, sims, springs, clock.time(), row);
                     stats.add(row);
                 }
             }

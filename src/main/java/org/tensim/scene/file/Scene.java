@@ -14,10 +14,18 @@ import org.tensim.scene.conditions.TimeLaw;
  * @param overrides the {@code --set} options applied, in order
  * @param expect    the {@code expect:} block's checks, in order (empty without one)
  * @param parameters the {@code parameters:} block's named parameters, in order (empty without one)
+ * @param rigids    the {@code type: rigid} bodies, which have no nodes (not among {@code bodies}), in file order
  */
 public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
         Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
-        List<SceneExpectation> expect, List<SceneParameter> parameters) {
+        List<SceneExpectation> expect, List<SceneParameter> parameters, Map<String, RigidBody> rigids) {
+    /** A scene without rigid bodies. */
+    public Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
+            Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
+            List<SceneExpectation> expect, List<SceneParameter> parameters) {
+        this(file, overrides, bodies, laws, regions, probes, run, expect, parameters, Map.of());
+    }
+
     /** The named parameter, or null. */
     public SceneParameter parameter(String name) {
         return parameters.stream().filter(p -> p.name().equals(name)).findFirst().orElse(null);

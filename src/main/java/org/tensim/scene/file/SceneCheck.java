@@ -33,6 +33,18 @@ public final class SceneCheck {
             for (String line : b.report()) {
                 out.add("  " + line);
             }
+            if (!b.topology().contacts().isEmpty()) {
+                out.add("  " + b.topology().contacts().size() + " contact pair(s) with "
+                        + String.join(", ", b.topology().contactBodies().stream().map(c -> c.name()
+                                + (c.hard() ? " (hard)" : "")).toList()));
+            }
+        }
+        for (RigidBody r : s.rigids().values()) {
+            out.add(String.format(Locale.ROOT, "rigid %s: %s%s, %s motion; surface in %s", r.name(), r.shape(),
+                    r.cavity() ? " (cavity)" : "", r.motionType(), box(r.boundsM())));
+            if (!r.report().isEmpty()) {
+                out.add("  " + r.report());
+            }
         }
         for (SceneRegions.Region r : s.regions().values()) {
             for (Map.Entry<String, BitSet> e : r.nodes().entrySet()) {

@@ -16,27 +16,48 @@ import org.tensim.scene.conditions.TimeLaw;
  *   - {type: force, region: top, direction: [0, -1, 0], magnitude: 400 N, law: wave}
  *   - {type: gravity, acceleration: [0, -9.81, 0], bodies: [liver]}
  *   - {type: motion, region: clamp, displacement: [0, 5 mm, 0], law: start}
+ *   - {type: pressure, region: top_face, pressure: 200 Pa, law: breath}
+ *   - {type: contact, region: base, with: plate, stiffness: 50 N/m, gap: 0 mm, hard: false}
+ *   - {type: attachment, region: back, with: spine, threshold: 3 mm}
+ *   - {type: sliding, region: pleura, with: cavity, stiffness: 50 N/m, hard: true}
  * </pre>
  * A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
  * motion moves every node of the region to {@code rest + displacement * law(t)}. The law is a name from
- * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent).
+ * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent). A
+ * pressure acts on the faces of the body's surface the region covers ({@link SurfaceFaces}): {@code -p law(t) A n}
+ * per face, a dead load, refused on a region that covers no face. Contact, attachment and sliding tie the region
+ * to the rigid body named by {@code with} ({@link RigidConditions}).
  */
 public final class SceneConditions {
     /** The condition types. */
-    public static final List<String> TYPES = List.of("fixed", "force", "gravity", "motion");
+    public static final List<String> TYPES = List.of("fixed", "force", "gravity", "motion", "pressure", "contact",
+            "attachment", "sliding");
     /** The keys of each type. */
-    public static final Map<String, List<String>> KEYS = Map.of(
-            "fixed", List.of("type", "region"),
-            "force", List.of("type", "region", "direction", "magnitude", "law"),
-            "gravity", List.of("type", "acceleration", "bodies"),
-            "motion", List.of("type", "region", "displacement", "law"));
+    public static final Map<String, List<String>> KEYS;
+
+    static {
+        Map<String, List<String>> k = new java.util.LinkedHashMap<>();
+        k.put("fixed", List.of("type", "region"));
+        k.put("force", List.of("type", "region", "direction", "magnitude", "law"));
+        k.put("gravity", List.of("type", "acceleration", "bodies"));
+        k.put("motion", List.of("type", "region", "displacement", "law"));
+        k.put("pressure", List.of("type", "region", "pressure", "law"));
+        k.putAll(RigidConditions.KEYS);
+        KEYS = java.util.Collections.unmodifiableMap(k);
+    }
 
     private SceneConditions() {
     }
 
-    /** Applies every condition of the list (absent: none). */
+    /** Applies every condition of the list (absent: none), in a scene without rigid bodies. */
     public static void apply(SceneNode list, Map<String, SceneBody> bodies, Map<String, SceneRegions.Region> regions,
             Map<String, TimeLaw> laws, SceneUnits u) {
+        apply(list, bodies, regions, laws, u, Map.of());
+    }
+
+    /** Applies every condition of the list (absent: none); {@code rigids} are the bodies {@code with:} names. */
+    public static void apply(SceneNode list, Map<String, SceneBody> bodies, Map<String, SceneRegions.Region> regions,
+            Map<String, TimeLaw> laws, SceneUnits u, Map<String, RigidBody> rigids) {
         if (list == null) {
             return;
         }
@@ -65,12 +86,19 @@ public final class SceneConditions {
                 }
                 continue;
             }
+            RigidBody rigid = RigidConditions.TYPES.contains(type) ? RigidConditions.rigid(r, bodies, rigids) : null;
             SceneRegions.Region region = region(r.scalar("region"), regions);
             TimeLaw law = r.has("law") ? law(r.scalar("law"), laws) : TimeLaw.one();
             for (Map.Entry<String, BitSet> e : region.nodes().entrySet()) {
                 SceneBody b = bodies.get(e.getKey());
                 try {
-                    applyTo(type, r, b, e.getValue(), law, u);
+                    if (rigid != null) {
+                        RigidConditions.apply(type, r, rigid, b, e.getValue(), u);
+                    } else if (type.equals("pressure")) {
+                        pressure(r, b, e.getValue(), law, u, region.name());
+                    } else {
+                        applyTo(type, r, b, e.getValue(), law, u);
+                    }
                 } catch (IllegalStateException ex) {
                     throw SceneException.at(c, ex.getMessage() + " (body '" + b.name() + "', region '"
                             + region.name() + "')");
@@ -113,6 +141,39 @@ public final class SceneConditions {
         }
     }
 
+    /** The pressure's nodal forces: {@code p law(t)} times those of a unit pressure on the faces covered. */
+    private static void pressure(MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u, String region) {
+        double p = r.quantity("pressure", QuantityKind.PRESSURE, u);
+        if (b.surface() == null) {
+            throw SceneException.at(r.node().get("region"), "body '" + b.name() + "' (type " + b.type() + ") carries"
+                    + " no surface for a pressure to act on: give it as nodal forces (type: force)");
+        }
+        BitSet faces = SurfaceFaces.faces(b.surface(), nodes);
+        if (faces.isEmpty()) {
+            throw SceneException.at(r.node().get("region"), "region '" + region + "' covers no face of body '"
+                    + b.name() + "''s surface (none of its " + b.surface().mesh().triangleCount() + " triangles has"
+                    + " the nodes of its three vertices among the region's " + nodes.cardinality() + "): select"
+                    + " a part of the surface, e.g. the intersection of surface: " + b.name() + " with a box");
+        }
+        double[] unit = SurfaceFaces.unitPressureForces(b.surface(), faces);
+        List<Node> all = b.topology().nodes();
+        // The mapping's nodes are the body's first ones (a volume's lattice is its whole topology).
+        for (int i = 0; i < Math.min(all.size(), unit.length / 3); i++) {
+            double fx = p * unit[3 * i];
+            double fy = p * unit[3 * i + 1];
+            double fz = p * unit[3 * i + 2];
+            if (fx == 0 && fy == 0 && fz == 0) {
+                continue;
+            }
+            b.topology().applyForce(all.get(i), (t, out, o) -> {
+                double s = law.value(t);
+                out[o] += fx * s;
+                out[o + 1] += fy * s;
+                out[o + 2] += fz * s;
+            });
+        }
+    }
+
     static SceneRegions.Region region(SceneNode name, Map<String, SceneRegions.Region> regions) {
         SceneRegions.Region r = regions.get(name.text());
         if (r == null) {
@@ -123,7 +184,7 @@ public final class SceneConditions {
         return r;
     }
 
-    private static TimeLaw law(SceneNode name, Map<String, TimeLaw> laws) {
+    static TimeLaw law(SceneNode name, Map<String, TimeLaw> laws) {
         TimeLaw l = laws.get(name.text());
         if (l == null) {
             throw SceneException.at(name, name.describe() + " is not a law of this file"

@@ -58,15 +58,17 @@ public final class SceneLoader {
         }
         SceneUnits units = SceneUnits.read(top.optional("units"));
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
-        Map<String, SceneBody> bodies = bodies(top, units, folder);
-        Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder);
+        Map<String, RigidBody> rigids = new LinkedHashMap<>();
+        Map<String, SceneBody> bodies = bodies(top, units, folder, laws, rigids);
+        Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder,
+                rigids.keySet());
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
-        SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units);
-        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions);
+        SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units, rigids);
+        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids);
         RunSettings run = RunSettings.read(top, units);
         List<SceneExpectation> expect = ExpectBlock.read(top.optional("expect"), bodies, probes, units);
         List<SceneParameter> parameters = SceneParameters.resolve(declared, root, units);
-        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters);
+        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters, rigids);
     }
 
     private static void version(MapReader top) {
@@ -77,7 +79,8 @@ public final class SceneLoader {
         }
     }
 
-    private static Map<String, SceneBody> bodies(MapReader top, SceneUnits units, Path folder) {
+    private static Map<String, SceneBody> bodies(MapReader top, SceneUnits units, Path folder,
+            Map<String, TimeLaw> laws, Map<String, RigidBody> rigids) {
         SceneNode block = top.required("bodies");
         if (!block.isMap() || block.entries().isEmpty()) {
             throw SceneException.at(block, "expected a map of named bodies (at least one), got " + block.describe());
@@ -88,7 +91,13 @@ public final class SceneLoader {
             if (!b.isMap()) {
                 throw SceneException.at(b, "expected a body {type: ..., ...}, got " + b.describe());
             }
-            String typeName = TimeLaws.typeOf(b, BodyTypes.names());
+            List<String> typeNames = new java.util.ArrayList<>(BodyTypes.names());
+            typeNames.add(RigidBodies.TYPE);
+            String typeName = TimeLaws.typeOf(b, typeNames);
+            if (typeName.equals(RigidBodies.TYPE)) {
+                rigids.put(e.getKey(), RigidBodies.read(e.getKey(), b, units, folder, laws));
+                continue;
+            }
             BodyType type = BodyTypes.get(typeName);
             java.util.List<String> keys = new java.util.ArrayList<>(type.keys());
             keys.add(0, "type");
@@ -108,6 +117,9 @@ public final class SceneLoader {
             }
             bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b, ctx.surface(),
                     ctx.reportLines()));
+        }
+        if (bodies.isEmpty()) {
+            throw SceneException.at(block, "every body is rigid: a scene needs at least one body with nodes");
         }
         return bodies;
     }

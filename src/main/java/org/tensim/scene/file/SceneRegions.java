@@ -25,6 +25,9 @@ import org.tensim.model.Node;
  * plane included;</li>
  * <li>{@code indices: [0, 1, 2]}: vertices by 0-based index;</li>
  * <li>{@code labels: {file: f.labels, label: tendon}}: the vertices a {@link VertexLabelsFile} gives that label;</li>
+ * <li>{@code surface: BODY}: the nodes that carry the body's surface (a volume's embedded surface: each vertex's
+ * node of largest weight), on that body only; intersected with a box or a plane it is a part of the surface, on
+ * whose faces a pressure acts ({@link SurfaceFaces});</li>
  * <li>{@code union|intersection|difference: [r1, r2, ...]}: of other regions (difference: the first less the
  * others).</li>
  * </ul>
@@ -33,8 +36,8 @@ import org.tensim.model.Node;
  */
 public final class SceneRegions {
     /** Ways of choosing nodes. */
-    public static final List<String> KINDS = List.of("box", "sphere", "plane", "indices", "labels", "union",
-            "intersection", "difference");
+    public static final List<String> KINDS = List.of("box", "sphere", "plane", "indices", "labels", "surface",
+            "union", "intersection", "difference");
     /** The keys of a region. */
     public static final List<String> KEYS;
     /** The keys of each geometric kind. */
@@ -66,6 +69,7 @@ public final class SceneRegions {
     private final Path folder;
     private final Map<String, Region> done = new LinkedHashMap<>();
     private final List<String> resolving = new ArrayList<>();
+    private java.util.Set<String> rigid = java.util.Set.of();
 
     private SceneRegions(SceneNode block, Map<String, SceneBody> bodies, SceneUnits units, Path folder) {
         this.block = block;
@@ -77,6 +81,12 @@ public final class SceneRegions {
     /** Every region of the block, resolved, in file order; an absent block is none. */
     public static Map<String, Region> read(SceneNode block, Map<String, SceneBody> bodies, SceneUnits u,
             Path folder) {
+        return read(block, bodies, u, folder, java.util.Set.of());
+    }
+
+    /** As {@link #read(SceneNode, Map, SceneUnits, Path)}, refusing a region on one of the rigid bodies named. */
+    public static Map<String, Region> read(SceneNode block, Map<String, SceneBody> bodies, SceneUnits u,
+            Path folder, java.util.Set<String> rigid) {
         if (block == null) {
             return Map.of();
         }
@@ -84,6 +94,7 @@ public final class SceneRegions {
             throw SceneException.at(block, "expected a map of named regions, got " + block.describe());
         }
         SceneRegions r = new SceneRegions(block, bodies, u, folder);
+        r.rigid = rigid;
         for (String name : block.entries().keySet()) {
             r.resolve(name, block.get(name));
         }
@@ -118,7 +129,7 @@ public final class SceneRegions {
         }
         String kind = kinds.get(0);
         Map<String, BitSet> sel = new LinkedHashMap<>();
-        for (String b : bodyNames(r)) {
+        for (String b : kind.equals("surface") ? surfaceBody(r) : bodyNames(r)) {
             SceneBody body = bodies.get(b);
             BitSet s = select(kind, r.required(kind), body);
             if (s.isEmpty()) {
@@ -146,7 +157,7 @@ public final class SceneRegions {
         }
         List<SceneNode> items = v.isList() ? v.items() : List.of(v);
         for (SceneNode i : items) {
-            names.add(SceneCheck.bodyName(i, bodies));
+            names.add(bodyName(i));
         }
         if (names.isEmpty()) {
             throw SceneException.at(v, "expected at least one body name");
@@ -164,6 +175,8 @@ public final class SceneRegions {
                 return indices(v, body);
             case "labels":
                 return labels(v, body);
+            case "surface":
+                return surface(v, body);
             default:
                 return combination(kind, v, body);
         }
@@ -246,6 +259,34 @@ public final class SceneRegions {
                         + body.vertexCount() + " (0 to " + (body.vertexCount() - 1) + ")");
             }
             s.set(body.nodeOfVertex((int) k));
+        }
+        return s;
+    }
+
+    private List<String> surfaceBody(MapReader r) {
+        if (r.has("body") || r.has("bodies")) {
+            throw SceneException.at(r.node().get(r.has("body") ? "body" : "bodies"), "a surface region is on the body"
+                    + " it names (surface: BODY); leave out body and bodies");
+        }
+        return List.of(bodyName(r.scalar("surface")));
+    }
+
+    private String bodyName(SceneNode n) {
+        if (n.isScalar() && rigid.contains(n.text())) {
+            throw SceneException.at(n, "body '" + n.text() + "' is rigid: it has no nodes for a region to select;"
+                    + " a condition refers to it by with: " + n.text());
+        }
+        return SceneCheck.bodyName(n, bodies);
+    }
+
+    private static BitSet surface(SceneNode v, SceneBody body) {
+        if (body.surface() == null) {
+            throw SceneException.at(v, "body '" + body.name() + "' (type " + body.type() + ") carries no surface: "
+                    + "select its nodes by a box, a sphere, a plane, indices or labels");
+        }
+        BitSet s = new BitSet();
+        for (int n : SurfaceFaces.carriers(body.surface().mapping())) {
+            s.set(n);
         }
         return s;
     }

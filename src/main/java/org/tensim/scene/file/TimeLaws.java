@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.tensim.scene.conditions.BreathingLaw;
 import org.tensim.scene.conditions.TimeLaw;
 
 /**
@@ -19,19 +20,25 @@ import org.tensim.scene.conditions.TimeLaw;
  *   start: {type: ramp, start: 0 s, duration: 1 s, from: 0, to: 1}
  *   steps: {type: table, points: [[0 s, 0], [1 s, 1], [2 s, 0.5]], extend: constant}
  *   trace: {type: csv, file: breath.csv, extend: extrapolate}
+ *   breath: {type: breathing, period: 4 s, inspiration: 0.333, amplitude: 1}
  * </pre>
+ * A breathing law is the diaphragm's cycle ({@link BreathingLaw}): inspiration (a share of the period, 1/3 by
+ * default: I:E = 1:2) then expiration, each a half cosine, from 0 to the amplitude (1) and back.
  * A csv file has a header line, then one {@code time,value} row a line (times in the file's time unit, or with
  * units); times must increase, in tables and files alike.
  */
 public final class TimeLaws {
     /** The law types. */
-    public static final List<String> TYPES = List.of("sine", "ramp", "table", "csv");
+    public static final List<String> TYPES = List.of("sine", "ramp", "table", "csv", "breathing");
     /** The keys of each type (each also takes {@code type}). */
     public static final Map<String, List<String>> KEYS = Map.of(
             "sine", List.of("type", "amplitude", "frequency", "phase"),
             "ramp", List.of("type", "start", "duration", "from", "to"),
             "table", List.of("type", "points", "extend"),
-            "csv", List.of("type", "file", "extend"));
+            "csv", List.of("type", "file", "extend"),
+            "breathing", List.of("type", "period", "inspiration", "amplitude"));
+    /** A breathing law's default period, s: 15 breaths a minute ({@code BreathingCycle.quiet()}). */
+    static final double DEFAULT_PERIOD_S = 4;
     private static final List<String> EXTENSIONS = List.of("constant", "extrapolate");
 
     private TimeLaws() {
@@ -54,7 +61,8 @@ public final class TimeLaws {
 
     static TimeLaw law(SceneNode node, SceneUnits u, Path folder) {
         if (!node.isMap()) {
-            throw SceneException.at(node, "expected a law {type: sine|ramp|table|csv, ...}, got " + node.describe());
+            throw SceneException.at(node, "expected a law {type: sine|ramp|table|csv|breathing, ...}, got "
+                    + node.describe());
         }
         String type = typeOf(node, TYPES);
         MapReader r = new MapReader(node, KEYS.get(type));
@@ -69,6 +77,8 @@ public final class TimeLaws {
                         r.quantity("from", QuantityKind.NUMBER, u, 0), r.quantity("to", QuantityKind.NUMBER, u, 1));
             case "table":
                 return table(r.list("points"), extension(r), u);
+            case "breathing":
+                return breathing(r, u);
             default:
                 return csv(r.scalar("file"), BodyContext.file(r.scalar("file"), folder), extension(r), u);
         }
@@ -86,6 +96,17 @@ public final class TimeLaws {
                     + DidYouMean.suggest(t.text(), types));
         }
         return t.text();
+    }
+
+    private static TimeLaw breathing(MapReader r, SceneUnits u) {
+        double period = r.positive("period", QuantityKind.TIME, u, DEFAULT_PERIOD_S);
+        double share = r.quantity("inspiration", QuantityKind.NUMBER, u, 1.0 / 3);
+        double amplitude = r.quantity("amplitude", QuantityKind.NUMBER, u, 1);
+        try {
+            return new BreathingLaw(period, share, amplitude);
+        } catch (IllegalArgumentException e) {
+            throw SceneException.at(r.has("inspiration") ? r.node().get("inspiration") : r.node(), e.getMessage());
+        }
     }
 
     private static TimeLaw.Extension extension(MapReader r) {

@@ -8,12 +8,15 @@ import java.util.Map;
 import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.scene.file.EmbeddedSurface;
+import org.tensim.scene.file.RigidBody;
 import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneBody;
 import org.tensim.scene.file.SceneLoader;
 import org.tensim.scene.file.SceneParameter;
 import org.tensim.scene.file.SceneProbe;
+import org.tensim.scene.rigid.RigidMeshes;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
@@ -30,6 +33,8 @@ import org.tensim.solver.SystemState;
  * NAME=VALUE}. A live one loads the file anew with the new value on the preparing thread while the simulation
  * steps ({@link #prepare}), then hands the running simulations the new build's constants ({@link LiveConstants}):
  * the next step runs with them, from the positions and velocities reached.
+ * A rigid body is drawn as its surface (a plane as a square about the deformable bodies), a display-only body like
+ * the carried surfaces, posed after every step of the first body at that body's time.
  */
 public final class FileViewScene implements ViewScene {
     private final Path file;
@@ -63,6 +68,56 @@ public final class FileViewScene implements ViewScene {
                 bodies.add(surface(b.name(), b.surface(), sim));
             }
         }
+        Simulation clock = bodies.get(0).simulation();
+        for (RigidBody r : scene.rigids().values()) {
+            bodies.add(rigid(r, r.mesh() != null ? r.mesh() : planeSquare(r, scene), clock));
+        }
+    }
+
+    /** A rigid body's surface, its vertices posed at the clock's time after each of its steps. */
+    private static Body rigid(RigidBody r, TriangleMesh mesh, Simulation clock) {
+        Topology t = new Topology();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            t.addNode(mesh.coord(v, 0), mesh.coord(v, 1), mesh.coord(v, 2), 1).fix();
+        }
+        Simulation shown = new Simulation(SystemState.compile(t));
+        double[] rest = mesh.coordinates().clone();
+        double[] rot = new double[9];
+        double[] c = new double[3];
+        clock.addListener(sim -> {
+            r.motion().pose(sim.time(), rot, 0, c, 0);
+            double[] x = shown.state().x;
+            for (int i = 0; i < rest.length; i += 3) {
+                for (int a = 0; a < 3; a++) {
+                    x[i + a] = rot[3 * a] * rest[i] + rot[3 * a + 1] * rest[i + 1] + rot[3 * a + 2] * rest[i + 2]
+                            + c[a];
+                }
+            }
+        });
+        return new Body(r.name() + " (rigid " + r.shape() + ")", shown, mesh.triangles().clone(), null, Vec3.ZERO,
+                0);
+    }
+
+    /**
+     * A plane drawn as a square about the deformable bodies: centred on their bounding box's centre projected on
+     * it (a point minus its signed distance along the normal), of half-side that box's diagonal.
+     */
+    private static TriangleMesh planeSquare(RigidBody r, Scene scene) {
+        double[] lo = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
+        double[] hi = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (SceneBody b : scene.bodies().values()) {
+            double[] bb = b.bounds();
+            for (int a = 0; a < 3; a++) {
+                lo[a] = Math.min(lo[a], bb[a]);
+                hi[a] = Math.max(hi[a], bb[a + 3]);
+            }
+        }
+        double[] m = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+        double[] n = new double[3];
+        double d = r.surface().distance(m[0], m[1], m[2], n, 0);
+        double[] p = {m[0] - d * n[0], m[1] - d * n[1], m[2] - d * n[2]};
+        double diag = Math.sqrt(Math.pow(hi[0] - lo[0], 2) + Math.pow(hi[1] - lo[1], 2) + Math.pow(hi[2] - lo[2], 2));
+        return RigidMeshes.square(p, n, diag > 0 ? diag : 1);
     }
 
     /** The display body of a carried surface, its positions mapped from {@code carrier} after every step. */

@@ -121,6 +121,20 @@ class MalformedScenesTest {
                 "the range's max \"10\" must be above its min \"400\""},
             {"parameter-not-a-quantity.yaml", "parameter-not-a-quantity.yaml:10:18: parameters.region.path",
                 "conditions[0].region (parameter-not-a-quantity.yaml:7:27) is not a quantity this scene reads"},
+            {"unknown-rigid-body.yaml", "unknown-rigid-body.yaml:8:43: conditions[0].with",
+                "\"plat\" is not a rigid body of this file; did you mean 'plate'?"},
+            {"contact-with-deformable.yaml", "contact-with-deformable.yaml:8:43: conditions[0].with",
+                "body 'c' is of type cube, not rigid"},
+            {"region-on-rigid-body.yaml", "region-on-rigid-body.yaml:6:17: regions.under.body",
+                "body 'plate' is rigid: it has no nodes"},
+            {"pressure-no-face.yaml", "pressure-no-face.yaml:9:30: conditions[0].region",
+                "region 'line' covers no face of body 'b''s surface"},
+            {"surface-of-cube.yaml", "surface-of-cube.yaml:5:19: regions.skin.surface",
+                "body 'c' (type cube) carries no surface"},
+            {"rigid-two-surfaces.yaml", "rigid-two-surfaces.yaml:4:9: bodies.tool",
+                "a rigid body needs exactly one surface"},
+            {"helical-without-breathing.yaml", "helical-without-breathing.yaml:7:86: bodies.rib.motion.law",
+                "the helical-axis rib law follows a breathing cycle"},
         });
     }
 

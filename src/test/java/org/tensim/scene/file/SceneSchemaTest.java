@@ -28,6 +28,8 @@ class SceneSchemaTest {
             k.addAll(BodyTypes.get(t).keys());
             m.put("body_" + t, k);
         }
+        m.put("body_" + RigidBodies.TYPE, RigidBodies.KEYS);
+        RigidBodies.MOTION_KEYS.forEach((t, k) -> m.put("rigid_motion_" + t, k));
         m.put("mesh", BodyContext.MESH_KEYS);
         m.put("region", SceneRegions.KEYS);
         SceneRegions.KIND_KEYS.forEach((kind, k) -> m.put("region_" + kind, k));
@@ -59,7 +61,8 @@ class SceneSchemaTest {
                     e.getKey() + " refuses other keys, as the loader does");
         }
         // Every body type and law type is one of the schema's choices.
-        assertEquals(BodyTypes.names().size(), defs.get("body").get("oneOf").size());
+        assertEquals(BodyTypes.names().size() + 1, defs.get("body").get("oneOf").size(), "the types and rigid");
+        assertEquals(RigidBodies.MOTIONS.size(), defs.get("rigid_motion").get("oneOf").size());
         assertEquals(TimeLaws.TYPES.size(), defs.get("law").get("oneOf").size());
         assertEquals(SceneConditions.TYPES.size(), defs.get("condition").get("oneOf").size());
     }

@@ -118,17 +118,7 @@ public final class VolumeBodyType implements BodyType {
 
     /** For each surface vertex, the node carrying it with the largest weight (the first of equals). */
     static int[] carriers(LinearMapping map) {
-        int[] out = new int[map.pointCount()];
-        for (int i = 0; i < out.length; i++) {
-            int best = 0;
-            for (int k = 1; k < map.entries(i); k++) {
-                if (map.weight(i, k) > map.weight(i, best)) {
-                    best = k;
-                }
-            }
-            out[i] = map.node(i, best);
-        }
-        return out;
+        return org.tensim.scene.file.SurfaceFaces.carriers(map);
     }
 
     /** {@code tensegrity} and {@code mass-spring} zones ({@link #applyZone}). */
