@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.scene.shell.ShellMaterial;
 
 /**

@@ -10,7 +10,7 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.TendonRule;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import picocli.CommandLine.Option;
 
 /**

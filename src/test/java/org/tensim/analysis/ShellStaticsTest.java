@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.scene.shell.ShellMaterial;
 
 /**

@@ -31,7 +31,7 @@ import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.scene.diaphragm.Decimation;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 

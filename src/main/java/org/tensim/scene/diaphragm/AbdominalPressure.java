@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import java.util.Locale;
 import org.tensim.io.mesh.QuadricDecimation;
 import org.tensim.model.Check;

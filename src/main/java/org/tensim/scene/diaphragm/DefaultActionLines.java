@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import java.util.ArrayList;
 import java.util.List;
 

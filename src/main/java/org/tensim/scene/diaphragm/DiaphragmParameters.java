@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TissueModel;
+
 import org.tensim.model.Check;
 import org.tensim.model.Vec3;
 

@@ -1,5 +1,10 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+import org.tensim.scene.shell.ShellNetwork;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TissueModel;
+
 import java.util.List;
 import java.util.Map;
 import org.tensim.model.Topology;

@@ -1,5 +1,9 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+import org.tensim.scene.shell.ShellNetwork;
+import org.tensim.scene.shell.SurfaceGeometry;
+
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.nio.file.Files;

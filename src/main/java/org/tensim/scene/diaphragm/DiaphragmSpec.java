@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TissueModel;
+
 import java.nio.file.Path;
 import java.util.List;
 import org.tensim.io.mesh.MeshCleaner;

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.SurfaceGeometry;
+
 import java.util.Arrays;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;

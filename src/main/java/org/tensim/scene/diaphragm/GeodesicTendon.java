@@ -1,5 +1,8 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+import org.tensim.scene.shell.SurfaceGeometry;
+
 import java.util.Arrays;
 import java.util.PriorityQueue;
 import org.tensim.io.mesh.TriangleMesh;

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import org.tensim.io.mesh.VertexLabel;
 
 /** The labels of a built diaphragm scene's mesh vertices, as a label file holds them. */

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.ShellNetwork;
+
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;

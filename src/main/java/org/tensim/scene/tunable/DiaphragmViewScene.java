@@ -15,7 +15,7 @@ import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.RibCage;
 import org.tensim.scene.diaphragm.TendonPlane;
 import org.tensim.scene.diaphragm.TendonRule;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.io.mesh.VertexLabel;
 import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.solver.Simulation;

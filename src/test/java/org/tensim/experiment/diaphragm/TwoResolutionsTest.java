@@ -16,7 +16,7 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The same diaphragm scene at two resolutions: a small double dome and the same mesh refined

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TissueModel;
+
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;

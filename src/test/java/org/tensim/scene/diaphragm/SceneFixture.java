@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;

@@ -1,5 +1,9 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+import org.tensim.scene.shell.StandaloneShell;
+import org.tensim.scene.shell.TissueModel;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,4 +1,5 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
+import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

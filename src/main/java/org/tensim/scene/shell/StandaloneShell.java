@@ -1,9 +1,8 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
-import org.tensim.scene.shell.ShellMaterial;
 
 /** A shell network on its own ({@link ShellNetwork}), for the accuracy scenes and the shell's tests. */
 public final class StandaloneShell {
