@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.Json;
@@ -106,8 +107,12 @@ class DiaphragmSceneFileTest {
         assertEquals(DEFAULT.toString(), Json.readMap(b.resolve("summary.json")).get("scene"));
     }
 
-    /** The thorax file for two bdf2 steps of 2.5 ms, against the command's --thorax run. */
+    /**
+     * The thorax file for two bdf2 steps of 2.5 ms, against the command's --thorax run: minutes on two cores (the
+     * full BodyParts3D mesh among the thorax's bones), so tagged slow, out of the default run.
+     */
     @Test
+    @Tag("slow")
     void runningTheThoraxFileWritesTheCommandsFiguresBitForBit() throws Exception {
         Assumptions.assumeTrue(Files.isRegularFile(SHARED_MESH), "absent: " + SHARED_MESH);
         Assumptions.assumeTrue(Files.isRegularFile(SHARED_THORAX.resolve("parts.json")), "absent: "
