@@ -1,9 +1,8 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TissueModel;
-
 import org.tensim.model.Check;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * Tissue, structure and attachment parameters of the diaphragm scene, SI units.

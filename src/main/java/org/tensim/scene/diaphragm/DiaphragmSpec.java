@@ -1,12 +1,11 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TissueModel;
-
 import java.nio.file.Path;
 import java.util.List;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * The one definition of a diaphragm scene: every input, grouped, with named defaults

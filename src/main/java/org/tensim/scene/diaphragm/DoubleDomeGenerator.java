@@ -1,10 +1,9 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.SurfaceGeometry;
-
 import java.util.Arrays;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
+import org.tensim.scene.shell.SurfaceGeometry;
 
 /**
  * The project's own parametric diaphragm: a thin closed shell shaped as a double

@@ -1,11 +1,10 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TwoSurfaces;
-import org.tensim.scene.shell.SurfaceGeometry;
-
 import java.util.Arrays;
 import java.util.PriorityQueue;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The central tendon as the region of the upper surface nearest, along the surface, to a few

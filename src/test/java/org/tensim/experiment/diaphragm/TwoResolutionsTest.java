@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.FlatMeshes;
+import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BoundaryConditions;

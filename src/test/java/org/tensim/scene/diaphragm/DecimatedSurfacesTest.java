@@ -1,8 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TwoSurfaces;
-import org.tensim.scene.shell.SurfaceGeometry;
-
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -14,6 +11,8 @@ import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.testsupport.SharedData;
 
 /**

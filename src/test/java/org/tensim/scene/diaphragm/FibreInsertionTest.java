@@ -1,7 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TwoSurfaces;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.Simulation;
 
 /**

@@ -1,7 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.SurfaceGeometry;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -12,6 +10,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.ActiveFibre;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
 import org.tensim.solver.Simulation;
 
 /**

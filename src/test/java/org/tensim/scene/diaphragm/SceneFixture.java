@@ -1,7 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TwoSurfaces;
-
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
@@ -9,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import org.tensim.io.BoxesJson;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * Shared by the diaphragm tests: the project's parametric rib cage (always there) and, for the tests of the

@@ -1,8 +1,5 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.scene.shell.TwoSurfaces;
-import org.tensim.scene.shell.SurfaceGeometry;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -17,6 +14,8 @@ import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The BodyParts3D diaphragm in the shared thorax of bone surfaces: attached at its origins only, the

@@ -1,5 +1,4 @@
 package org.tensim.scene.shell;
-import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,6 +10,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.tensim.analysis.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
+import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.SystemState;
 

@@ -16,6 +16,7 @@ import org.tensim.scene.file.ZoneContext;
 import org.tensim.scene.shell.ShellMaterial;
 import org.tensim.scene.shell.ShellNetwork;
 import org.tensim.scene.shell.StandaloneShell;
+import org.tensim.scene.shell.SurfacePair;
 import org.tensim.scene.shell.TissueModel;
 import org.tensim.scene.shell.TwoSurfaces;
 
@@ -26,7 +27,7 @@ import org.tensim.scene.shell.TwoSurfaces;
  * <ul>
  * <li>{@code surface: {file, units}} and {@code thickness} (length): one surface, offset by the thickness along
  * its vertex normals ({@link TwoSurfaces#offset}); or {@code upper: {file, units}} and {@code lower: {file,
- * units}}: the two boundary surfaces ({@link TwoSurfaces#pair}), their median gap the thickness. Exactly one
+ * units}}: the two boundary surfaces ({@link SurfacePair#of}), their median gap the thickness. Exactly one
  * form;</li>
  * <li>{@code material: {E, nu, density, damping_time}}: Young's modulus (pressure, required), Poisson's ratio
  * (1/3), density (1060 kg/m^3, soft tissue) and the stiffness-proportional damping time (time, 0);</li>
@@ -79,7 +80,7 @@ public final class ShellBodyType implements BodyType {
                 throw SceneException.at(r.node().get("thickness"), "two boundary surfaces give the thickness (their"
                         + " median gap); leave out thickness");
             }
-            s = TwoSurfaces.pair(mesh(ctx, "upper"), mesh(ctx, "lower"));
+            s = SurfacePair.of(mesh(ctx, "upper"), mesh(ctx, "lower"));
         }
         ShellMaterial m = material(r, ctx, s.thicknessM());
         double beta = new MapReader(r.required("material"), MATERIAL_KEYS).nonNegative("damping_time",
