@@ -66,7 +66,15 @@ public final class FileViewScene implements ViewScene {
 
     /** A factory that reads the file anew for every scene it makes (a reset rebuilds from the file). */
     public static SceneFactory factory(Path file) {
-        FileViewScene checked = new FileViewScene(SceneLoader.load(file));
+        org.tensim.scene.file.Scene loaded = SceneLoader.load(file);
+        for (org.tensim.scene.file.SceneBody b : loaded.bodies().values()) {
+            if (org.tensim.scene.file.BodyTypes.get(b.type()).standalone()) {
+                throw org.tensim.scene.file.SceneException.at(b.node(), "a " + b.type() + " body runs as its own"
+                        + " experiment, which the GUI opens by name: tensim gui --scene " + b.type() + " with its"
+                        + " options (the body's keys, - for _)");
+            }
+        }
+        FileViewScene checked = new FileViewScene(loaded);
         return new SceneFactory() {
             private FileViewScene next = checked;
 
