@@ -5,11 +5,11 @@ import java.util.List;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 import org.tensim.model.Topology;
-import org.tensim.scene.diaphragm.ShellNetwork;
-import org.tensim.scene.diaphragm.StandaloneShell;
-import org.tensim.scene.diaphragm.TissueModel;
-import org.tensim.scene.diaphragm.TwoSurfaces;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.ShellNetwork;
+import org.tensim.scene.shell.StandaloneShell;
+import org.tensim.scene.shell.TissueModel;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * Static scenes with known answers for the two-surface shell (the diaphragm's discretisation,

@@ -5,8 +5,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
-import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * The shell's static accuracy against element size, for a tissue model: the patch test on three

@@ -18,7 +18,7 @@ import org.tensim.io.CsvWriter;
 import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunStatus;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;

@@ -143,8 +143,24 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     private void simulate(RunFolder run, DiaphragmSpec sceneSpec, DiaphragmReport.Options o,
             org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads) throws Exception {
-        BoundaryConditions bc = sceneSpec.boundary();
         DiaphragmSetup.Built built = DiaphragmSetup.build(sceneSpec);
+        Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh);
+        if (pick.file() != null) {
+            fields.put("resolution_pick_file", pick.file().toString());
+        }
+        finish(spec, run, fields);
+    }
+
+    /**
+     * Runs a built diaphragm into {@code run} as the command does (the mesh report and the real-time setting
+     * printed, {@link DiaphragmReport#run} on {@code threads} threads, 0 for the automatic count) and returns the
+     * summary's fields, not yet written.
+     *
+     * @param meshGiven the mesh file the user gave, null for the default (for the real-time setting's line)
+     */
+    static Map<String, Object> report(RunFolder run, DiaphragmSetup.Built built, DiaphragmReport.Options o,
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads, Path meshGiven)
+            throws Exception {
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
@@ -154,25 +170,28 @@ public final class DiaphragmCommand implements Callable<Integer> {
                                 built.scene().topology().springs().size());
         if (setting != null) {
             System.out.println("realtime: " + setting.describe()
-                    + (scene.mesh == null ? ""
+                    + (meshGiven == null ? ""
                             : setting.equals(RealTimeSetting.THORAX)
                                     ? "; measured on the shared BodyParts3D diaphragm (diaphragm realtime-study"
                                             + " --thorax measures this mesh)"
-                                    : "; this mesh (" + scene.mesh + ") was not measured"));
+                                    : "; this mesh (" + meshGiven + ") was not measured"));
         }
         Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
         // muscle_force_pa is an active fibre stress or a pressure: the load says which.
-        fields.put("muscle_load", BoundaryConditions.name(bc.muscleLoad()));
+        fields.put("muscle_load", BoundaryConditions.name(built.scene().spec().boundary().muscleLoad()));
         if (setting != null) {
             fields.put("realtime_setting", setting.toMap());
         }
-        if (pick.file() != null) {
-            fields.put("resolution_pick_file", pick.file().toString());
-        }
+        return fields;
+    }
+
+    /** Writes the summary (status diverged when the run diverged, said on standard error) and prints it. */
+    static void finish(picocli.CommandLine.Model.CommandSpec spec, RunFolder run, Map<String, Object> fields)
+            throws java.io.IOException {
         Map<String, Object> summary = run.finish(fields.containsKey("diverged") ? RunStatus.DIVERGED : RunStatus.OK,
                 fields);
         if (fields.containsKey("diverged")) {
-            spec.commandLine().getErr().println("tensim diaphragm: " + fields.get("diverged")
+            spec.commandLine().getErr().println("tensim " + spec.name() + ": " + fields.get("diverged")
                     + " (outputs up to that step are in " + run.dir() + ", figures marked DIVERGED)");
         }
         System.out.println(Json.line(summary));

@@ -91,16 +91,26 @@ public final class DiaphragmSolverOptions {
     }
 
     /**
+     * Gives a plain {@code bdf2} ({@code name}) in a thorax with contact that thorax's converged iterations
+     * ({@link PrefactoredBdf2#CONTACT_NEWTON_ITERATIONS}; a named setup keeps its own), as every diaphragm run does.
+     */
+    static Integrator contactDefaults(Integrator i, String name, DiaphragmSpec s) {
+        if (i instanceof PrefactoredBdf2 b && s.cage().boneSurfaces() && s.cage().contact()
+                && name.equals(PrefactoredBdf2.NAME)) {
+            b.setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
+            b.setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
+        }
+        return i;
+    }
+
+    /**
      * The integrator as the options configure it (the run's, and every model's of a study): a thorax's converged
      * {@code bdf2} step for plain {@code bdf2} (a named setup keeps its own iterations; docs/thorax.md), then
      * {@code --newton}, {@code --cg-iterations} and {@code --cg-tolerance}.
      */
     private Integrator configured(Integrator i, DiaphragmSpec s) {
+        contactDefaults(i, integrator.name(), s);
         if (i instanceof PrefactoredBdf2 b) {
-            if (s.cage().boneSurfaces() && s.cage().contact() && integrator.name().equals(PrefactoredBdf2.NAME)) {
-                b.setNewtonIterations(PrefactoredBdf2.CONTACT_NEWTON_ITERATIONS);
-                b.setKrylovIterations(PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS);
-            }
             if (newton != null) {
                 b.setNewtonIterations(newton);
             }

@@ -70,6 +70,10 @@ public final class RunCommand implements Callable<Integer> {
             CommandChecks.positive(spec, "--seconds", duration, "s");
         }
         RunSettings run = scene.run().with(name, step > 0 ? step : null, duration);
+        var diaphragm = DiaphragmSceneRun.diaphragm(scene);
+        if (diaphragm != null) {
+            return DiaphragmSceneRun.run(spec, scene, diaphragm, run, folder, out.overwrite());
+        }
         OptionChecks.stepFits(spec, "--dt", run.dtS(), "--seconds", run.durationS());
         return RunFolder.run(folder, "run", List.of(run.csv()), f -> {
             Map<String, Object> s = SceneRunner.run(scene, run, f);

@@ -2,7 +2,7 @@ package org.tensim.tuning;
 
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.TendonRule;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
 

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.tensim.scene.diaphragm.TissueModel;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * The shell's known answers on small meshes: the patch test (uniform stretch sigma / E) and the

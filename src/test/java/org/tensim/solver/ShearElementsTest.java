@@ -242,9 +242,9 @@ class ShearElementsTest {
     void stepsWithShearElementsAllocateNothing() {
         for (Integrator in : new Integrator[] {new MidpointRK2(), new PrefactoredBdf2(), new ImplicitEuler()}) {
             var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
-            var s = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(3, 0.03), T);
-            Topology t = org.tensim.scene.diaphragm.StandaloneShell.of(s, m,
-                    org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
+            var s = org.tensim.scene.shell.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(3, 0.03), T);
+            Topology t = org.tensim.scene.shell.StandaloneShell.of(s, m,
+                    org.tensim.scene.shell.TissueModel.MATERIAL, 1);
             int half = s.mesh().vertexCount() / 2;
             for (int v = 0; v < half; v++) {
                 if (Math.hypot(t.node(v).position().x(), t.node(v).position().y()) > 0.0299) {
@@ -274,9 +274,9 @@ class ShearElementsTest {
     @Test
     void theParallelForcePassAddsTheShearElements() {
         var m = new org.tensim.scene.shell.ShellMaterial(40e3, 0.45, T, 1060);
-        var sh = org.tensim.scene.diaphragm.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(6, 0.05), T);
-        Topology t = org.tensim.scene.diaphragm.StandaloneShell.of(sh, m,
-                org.tensim.scene.diaphragm.TissueModel.MATERIAL, 1);
+        var sh = org.tensim.scene.shell.TwoSurfaces.offset(org.tensim.analysis.FlatMeshes.disc(6, 0.05), T);
+        Topology t = org.tensim.scene.shell.StandaloneShell.of(sh, m,
+                org.tensim.scene.shell.TissueModel.MATERIAL, 1);
         Simulation serial = new Simulation(SystemState.compile(t));
         Simulation parallel = new Simulation(SystemState.compile(t));
         Random rnd = new Random(13);

@@ -8,7 +8,7 @@ import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.ObjWriter;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** Coarse copies of a thin-shell mesh for tests that must run in seconds. */
 public final class CoarseMeshes {

@@ -3,6 +3,7 @@ package org.tensim.scene.diaphragm;
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The rise of the abdominal pressure on the diaphragm's lower face during inspiration (package-private, called by

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 /**
  * The zone of apposition (package-private, read by the scene builder): the part of the diaphragm that lies against
  * the inner chest wall, where the abdominal pressure holds the muscle on the lower rib cage (De Troyer and Boriek,

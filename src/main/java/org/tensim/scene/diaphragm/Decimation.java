@@ -3,6 +3,7 @@ package org.tensim.scene.diaphragm;
 import java.util.Locale;
 import org.tensim.io.mesh.QuadricDecimation;
 import org.tensim.model.Check;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * How the resolution study coarsens a two-surface shell, both with the two faces kept apart and each vertex

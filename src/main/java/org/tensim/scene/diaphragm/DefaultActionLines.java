@@ -2,6 +2,7 @@ package org.tensim.scene.diaphragm;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** Where the muscle's action lines go when none are given: one through each dome's top. */
 public final class DefaultActionLines {

@@ -2,6 +2,7 @@ package org.tensim.scene.diaphragm;
 
 import org.tensim.model.Check;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * Tissue, structure and attachment parameters of the diaphragm scene, SI units.

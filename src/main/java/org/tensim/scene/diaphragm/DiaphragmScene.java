@@ -3,6 +3,10 @@ package org.tensim.scene.diaphragm;
 import java.util.List;
 import java.util.Map;
 import org.tensim.model.Topology;
+import org.tensim.scene.shell.ShellNetwork;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TissueModel;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.integrators.Integrators;
@@ -59,53 +63,26 @@ public final class DiaphragmScene {
     private final Topology topology;
     private final TwoSurfaces surfaces;
     private final int[] labels;
-    private final RibCage cage;
-    private final int apex;
-    private final DiaphragmControls controls;
-    private final BreathingCycle cycle;
-    private final ActionLines actionLines;
-    private final int attachedToRibs;
-    private final int attachedToCartilage;
-    private final int attachedToSpine;
-    private final boolean[] attached;
     private final ModalBounds modes;
     private final double timeStep;
-    private final double tendonAreaFraction;
-    private final int firstAnchor;
-    private final double addedMass;
     private final Map<String, double[]> boxes;
-    private final DiaphragmParameters parameters;
     private final DiaphragmSpec spec;
     private final Bones bones;
-    private final DiaphragmSceneBuilder.Parts parts;
-
+    private final DiaphragmParts parts;
     private final org.tensim.io.mesh.VertexLabel[] vertexLabels;
 
-    private DiaphragmScene(DiaphragmSceneBuilder.Parts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones,
+    private DiaphragmScene(DiaphragmParts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones,
             org.tensim.io.mesh.VertexLabel[] vertexLabels) {
         this.vertexLabels = vertexLabels;
         this.parts = b;
         this.spec = spec;
         this.bones = bones;
         this.boxes = boxes;
-        this.parameters = b.parameters();
         this.topology = b.topology();
         this.surfaces = b.surfaces();
         this.labels = b.labels();
-        this.cage = b.cage();
-        this.apex = b.apex();
-        this.controls = b.controls();
-        this.cycle = b.cycle();
-        this.actionLines = b.actionLines();
-        this.attachedToRibs = b.attachedToRibs();
-        this.attachedToCartilage = b.attachedToCartilage();
-        this.attachedToSpine = b.attachedToSpine();
-        this.attached = b.attached();
         this.modes = b.modes();
         this.timeStep = TimeStepPolicy.recommend(Integrators.DEFAULT, ButcherTableau.MIDPOINT, true, modes).seconds();
-        this.tendonAreaFraction = b.tendonAreaFraction();
-        this.firstAnchor = b.firstAnchor();
-        this.addedMass = b.addedMassKg();
     }
 
     /**
@@ -254,12 +231,12 @@ public final class DiaphragmScene {
      * running simulation can take the new scene's constants ({@link #copyConstantsTo}).
      */
     public DiaphragmScene rebuiltWith(DiaphragmParameters p) {
-        return build(surfaces, spec.withTissue(p), boxes, bones, vertexLabels, cycle, controls);
+        return build(surfaces, spec.withTissue(p), boxes, bones, vertexLabels, parts.cycle(), parts.controls());
     }
 
     /** The parameters this scene was built with. */
     public DiaphragmParameters parameters() {
-        return parameters;
+        return parts.parameters();
     }
 
     /** The default action lines of a mesh ({@link DefaultActionLines#of}). */
@@ -324,12 +301,12 @@ public final class DiaphragmScene {
      * (they are not free and are left out of outputs).
      */
     public int simulatedNodes() {
-        return firstAnchor;
+        return parts.firstAnchor();
     }
 
     /** Anchor nodes of the attachment band and the abdominal support. */
     public int anchorNodes() {
-        return topology.nodeCount() - firstAnchor;
+        return topology.nodeCount() - parts.firstAnchor();
     }
 
     /**
@@ -345,58 +322,58 @@ public final class DiaphragmScene {
     }
 
     public RibCage cage() {
-        return cage;
+        return parts.cage();
     }
 
     /** The dome apex probe: the highest upper-surface node at rest that is not attached (driven, fixed, in the band). */
     public int apexNode() {
-        return apex;
+        return parts.apex();
     }
 
     public DiaphragmControls controls() {
-        return controls;
+        return parts.controls();
     }
 
     public BreathingCycle cycle() {
-        return cycle;
+        return parts.cycle();
     }
 
     public ActionLines actionLines() {
-        return actionLines;
+        return parts.actionLines();
     }
 
     /** Diaphragm nodes attached to ribs (driven rigidly with their rib, or tied to it by the band). */
     public int attachedToRibs() {
-        return attachedToRibs;
+        return parts.attachedToRibs();
     }
 
     /** Diaphragm nodes tied by springs to cartilage or sternum. */
     public int attachedToCartilage() {
-        return attachedToCartilage;
+        return parts.attachedToCartilage();
     }
 
     /** Diaphragm nodes fixed or tied to the spine (crura). */
     public int attachedToSpine() {
-        return attachedToSpine;
+        return parts.attachedToSpine();
     }
 
     /** Whether diaphragm node v is attached to ribs, cartilage, sternum or spine (its origins). */
     public boolean isAttached(int v) {
-        return v < attached.length && attached[v];
+        return v < parts.attached().length && parts.attached()[v];
     }
 
     public int attachedNodes() {
-        return attachedToRibs + attachedToCartilage + attachedToSpine;
+        return attachedToRibs() + attachedToCartilage() + attachedToSpine();
     }
 
     /** Share of the upper surface's area that is tendon. */
     public double tendonAreaFraction() {
-        return tendonAreaFraction;
+        return parts.tendonAreaFraction();
     }
 
     /** Mass added by the mass floor, kg. */
     public double addedMassKg() {
-        return addedMass;
+        return parts.addedMassKg();
     }
 
     /** Gershgorin bound on the highest angular frequency of the network, rad/s. */

@@ -11,46 +11,24 @@ import org.tensim.model.Node;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.ShellNetwork;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.stability.ModalBounds;
 
 /**
  * Builds a {@link DiaphragmScene}: {@link #build} runs the named steps in their order (nodes,
  * tendon, membrane and bending springs, rigid links, thickness springs, cage, attachment,
  * thickness columns, muscle, abdominal support, damping) on private state, and hands everything
- * the scene holds back as one {@link Parts} record. The formulas are documented on
+ * the scene holds back as one {@link DiaphragmParts} record. The formulas are documented on
  * DiaphragmScene, the attachment band on {@link AttachmentBand}, the muscle's load on
  * {@link MusclePressure} or {@link MuscleFibres}. The few fields left package-visible are the attachment strategies'
  * view of the build ({@link AttachmentBand}, {@link ThresholdAttachment}): the mesh, the
  * topology and springs being built, the node areas and the cage, and what they record.
  */
 final class DiaphragmSceneBuilder {
-    /**
-     * What the steps produce: everything a {@link DiaphragmScene} holds.
-     *
-     * @param parameters         the tissue parameters it was built with
-     * @param topology           nodes, springs and rigid links (diaphragm, cage, anchors)
-     * @param labels             tissue label per diaphragm node ({@link DiaphragmScene#TENDON}, MUSCLE)
-     * @param apex               the apex node (highest upper-surface node)
-     * @param actionLines        the muscle's action lines
-     * @param attachedToRibs     diaphragm nodes attached to ribs
-     * @param attachedToCartilage diaphragm nodes attached to cartilage or sternum
-     * @param attachedToSpine    diaphragm nodes attached to the spine
-     * @param attached           per diaphragm node: attached to ribs, cartilage, sternum or spine
-     * @param modes              bounds on the highest angular frequency, rad/s
-     * @param tendonAreaFraction tendon's share of the upper surface's area
-     * @param firstAnchor        id of the first anchor node (-1: none)
-     * @param addedMassKg        mass added by the mass floor, kg
-     * @param appositionAreaM2   lower-face area pressed by the pressure on the zone of apposition, m^2 (0: none)
-     */
-    record Parts(DiaphragmParameters parameters, Topology topology, TwoSurfaces surfaces, int[] labels, RibCage cage,
-            int apex, DiaphragmControls controls, BreathingCycle cycle, ActionLines actionLines, int attachedToRibs,
-            int attachedToCartilage, int attachedToSpine, boolean[] attached, ModalBounds modes,
-            double tendonAreaFraction, int firstAnchor, double addedMassKg, Map<String, double[]> attachedPerBone,
-            Map<String, Integer> contactPairsPerBone, double appositionAreaM2) {
-    }
-
     /** Runs every step, in its order, and returns what the scene holds. */
-    static Parts build(TwoSurfaces surfaces, Map<String, double[]> boxes, Bones bones,
+    static DiaphragmParts build(TwoSurfaces surfaces, Map<String, double[]> boxes, Bones bones,
             org.tensim.io.mesh.VertexLabel[] vertexLabels, DiaphragmSpec spec, BreathingCycle cycle,
             DiaphragmControls controls, List<ActionLines.Line> actionLines) {
         if (vertexLabels != null && vertexLabels.length != surfaces.mesh().vertexCount()) {
@@ -91,7 +69,7 @@ final class DiaphragmSceneBuilder {
         }
         b.support();
         b.damping();
-        return new Parts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
+        return new DiaphragmParts(p, b.t, surfaces, b.labels, b.cage, b.apex, controls, cycle, b.lines, b.attachedRibs,
                 b.attachedCartilage, b.attachedSpine, b.attached, b.modes, b.tendonFraction, b.firstAnchor,
                 b.addedMass, b.attachedPerBone, b.contactPairs, b.appositionArea);
     }
@@ -198,16 +176,23 @@ final class DiaphragmSceneBuilder {
         if (tendonRegion == null) {
             return;
         }
+        for (int v = 0; v < nv; v++) {
+            labels[v] = tendonRegion[v] ? DiaphragmScene.TENDON : DiaphragmScene.MUSCLE;
+        }
+        tendonFraction = tendonShare();
+    }
+
+    /** The share of the upper surface's area labelled tendon. */
+    private double tendonShare() {
         double tendonArea = 0;
         double upperArea = 0;
         for (int v = 0; v < nv; v++) {
-            labels[v] = tendonRegion[v] ? DiaphragmScene.TENDON : DiaphragmScene.MUSCLE;
             if (surfaces.isUpper(v)) {
                 upperArea += area[v];
-                tendonArea += tendonRegion[v] ? area[v] : 0;
+                tendonArea += labels[v] == DiaphragmScene.TENDON ? area[v] : 0;
             }
         }
-        tendonFraction = tendonArea / upperArea;
+        return tendonArea / upperArea;
     }
 
     /** The paper's rule: the tendon is the cap on the positive side of a plane. */
@@ -221,20 +206,10 @@ final class DiaphragmSceneBuilder {
         }
         tendonCut = cut;
         labels = new int[nv];
-        double tendonArea = 0;
-        double upperArea = 0;
         for (int v = 0; v < nv; v++) {
-            labels[v] = height(n, v) >= cut ? DiaphragmScene.TENDON : DiaphragmScene.MUSCLE;
-            if (surfaces.isUpper(v)) {
-                upperArea += area[v];
-                tendonArea += labels[v] == DiaphragmScene.TENDON ? area[v] : 0;
-            }
+            labels[v] = TendonPlane.height(surfaces, n, v) >= cut ? DiaphragmScene.TENDON : DiaphragmScene.MUSCLE;
         }
-        tendonFraction = tendonArea / upperArea;
-    }
-
-    private double height(Vec3 n, int v) {
-        return n.x() * mesh.coord(v, 0) + n.y() * mesh.coord(v, 1) + n.z() * mesh.coord(v, 2);
+        tendonFraction = tendonShare();
     }
 
     private double young(int a, int b) {
@@ -259,7 +234,7 @@ final class DiaphragmSceneBuilder {
         for (int[] c : ShellNetwork.columnPairs(surfaces, v -> all || labels[v] == DiaphragmScene.TENDON)) {
             linked[c[0]] = true;
             linked[c[1]] = true;
-            linkPairs.add(key(c[0], c[1]));
+            linkPairs.add(ShellNetwork.key(c[0], c[1]));
             if (labels[c[0]] == DiaphragmScene.TENDON && labels[c[1]] == DiaphragmScene.TENDON) {
                 t.addRigidLink(t.node(c[0]), t.node(c[1]));
             } else {
@@ -360,7 +335,7 @@ final class DiaphragmSceneBuilder {
             for (int v = 0; v < nv; v++) {
                 // The fibres are clipped at a continuous edge (the plane's, or the geodesic distance's), so that
                 // the muscle's share of a triangle cut by it does not depend on which corners are tendon.
-                height[v] = tendonRegion == null ? height(p.tendonNormal(), v) - tendonCut
+                height[v] = tendonRegion == null ? TendonPlane.height(surfaces, p.tendonNormal(), v) - tendonCut
                         : tendonLevel != null ? tendonLevel[v] : tendon[v] ? 1 : -1;
             }
             MuscleFibres.add(t, mesh, height, tendon, area, thickness, lines,
@@ -407,9 +382,5 @@ final class DiaphragmSceneBuilder {
         double alpha = p.viscousPerS();
         t.setViscousDamping(alpha * meanMass);
         modes = new ModalBounds(omegaMax, beta, alpha, "Gershgorin bound");
-    }
-
-    private static long key(int i, int j) {
-        return ((long) Math.min(i, j) << 32) | Math.max(i, j);
     }
 }

@@ -1,18 +1,19 @@
 package org.tensim.scene.diaphragm;
 
-import org.tensim.io.ProjectFolder;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.tensim.io.BoxesJson;
+import org.tensim.io.ProjectFolder;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * From files to a {@link DiaphragmScene}: reads and cleans the mesh, finds its two

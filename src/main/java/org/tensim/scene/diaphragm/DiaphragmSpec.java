@@ -5,6 +5,7 @@ import java.util.List;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.model.Check;
+import org.tensim.scene.shell.TissueModel;
 
 /**
  * The one definition of a diaphragm scene: every input, grouped, with named defaults

@@ -1,6 +1,7 @@
 package org.tensim.scene.diaphragm;
 
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The height of each hemidiaphragm's top in a state of the scene, read where {@link MeasuringSites} says: the run's

@@ -3,6 +3,7 @@ package org.tensim.scene.diaphragm;
 import java.util.Arrays;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
+import org.tensim.scene.shell.SurfaceGeometry;
 
 /**
  * The project's own parametric diaphragm: a thin closed shell shaped as a double

@@ -1,6 +1,7 @@
 package org.tensim.scene.diaphragm;
 
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * Where the muscle's active fibre tension enters the skeleton (package-private, used with

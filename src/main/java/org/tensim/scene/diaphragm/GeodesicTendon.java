@@ -3,6 +3,8 @@ package org.tensim.scene.diaphragm;
 import java.util.Arrays;
 import java.util.PriorityQueue;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The central tendon as the region of the upper surface nearest, along the surface, to a few

@@ -1,5 +1,7 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.scene.shell.TwoSurfaces;
+
 /**
  * Where a diaphragm scene is measured (by the run's summary and the GUI's readouts alike): each hemidiaphragm's top
  * ({@link DomeHeights}), and the 3rd-5th costal cartilages' markers.

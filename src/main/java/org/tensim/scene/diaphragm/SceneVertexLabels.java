@@ -1,6 +1,7 @@
 package org.tensim.scene.diaphragm;
 
 import org.tensim.io.mesh.VertexLabel;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** The labels of a built diaphragm scene's mesh vertices, as a label file holds them. */
 final class SceneVertexLabels {

@@ -1,6 +1,7 @@
 package org.tensim.scene.diaphragm;
 
 import org.tensim.model.LinearMapping;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.scene.thorax.TriangleTree;
 
 /**

@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import org.tensim.model.Topology;
+import org.tensim.scene.shell.ShellNetwork;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.stability.CriticalTimeStep;
 import org.tensim.solver.stability.ExtraStiffness;

@@ -2,6 +2,8 @@ package org.tensim.scene.diaphragm;
 
 import java.util.Arrays;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The paper's tendon rule: the central tendon is the cap of the mesh on the side of a plane its unit normal n

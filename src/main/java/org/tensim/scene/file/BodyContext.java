@@ -22,6 +22,8 @@ public final class BodyContext {
     private final SceneUnits units;
     private final Path folder;
     private EmbeddedSurface surface;
+    private org.tensim.model.Topology topology;
+    private Object built;
     private final java.util.List<String> report = new java.util.ArrayList<>();
 
     public BodyContext(String name, MapReader keys, SceneUnits units, Path folder) {
@@ -88,6 +90,37 @@ public final class BodyContext {
         } catch (IOException e) {
             throw SceneException.at(node, "cannot read " + f + " (" + e.getMessage() + ")");
         }
+    }
+
+    /** A folder named by a scalar, relative to the scene file's folder; refused if it is not a folder. */
+    public Path folder(SceneNode node) {
+        if (!node.isScalar()) {
+            throw SceneException.at(node, "expected a folder name, got " + node.describe());
+        }
+        Path p = folder.resolve(node.text());
+        if (!Files.isDirectory(p)) {
+            throw SceneException.at(node, "no such folder: " + p);
+        }
+        return p;
+    }
+
+    /**
+     * Hands over a topology the type's own builder made (the diaphragm's) to be the body's instead of the empty one
+     * {@link BodyType#build} was given, with what else that builder made ({@link SceneBody#built()}).
+     */
+    public void own(org.tensim.model.Topology topology, Object built) {
+        this.topology = topology;
+        this.built = built;
+    }
+
+    /** The topology handed over by {@link #own}, or null. */
+    public org.tensim.model.Topology ownTopology() {
+        return topology;
+    }
+
+    /** What the type built besides its topology ({@link #own}), or null. */
+    public Object built() {
+        return built;
     }
 
     /** Records the surface the body carries on its nodes (drawn by the GUI, read by surface probes). */

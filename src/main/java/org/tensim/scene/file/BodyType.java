@@ -29,6 +29,16 @@ public interface BodyType {
      */
     int[] build(BodyContext ctx, Topology topology);
 
+    /**
+     * Whether a body of this type is a whole experiment (the diaphragm): it brings its own supports, loads and
+     * outputs, so its file has it alone, without zones, conditions, probes or expectations (refused), its run is its
+     * type's own, and {@code run: {dt: auto}} leaves the step to its time-step policy. False by default (and
+     * {@code dt: auto} is refused).
+     */
+    default boolean standalone() {
+        return false;
+    }
+
     /** The zone models this type supports ({@code zones:} with {@code model:}); none by default. */
     default List<String> zoneModels() {
         return List.of();

@@ -5,6 +5,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.tensim.scene.file.bodies.CubeBody;
+import org.tensim.scene.file.bodies.DiaphragmBodyType;
+import org.tensim.scene.file.bodies.ShellBodyType;
 import org.tensim.scene.file.bodies.VolumeBodyType;
 
 /** The body types scene files may name, by their {@link BodyType#name()}: the built-in ones and any registered. */
@@ -14,6 +16,8 @@ public final class BodyTypes {
     static {
         register(new CubeBody());
         register(new VolumeBodyType());
+        register(new ShellBodyType());
+        register(new DiaphragmBodyType());
     }
 
     private BodyTypes() {

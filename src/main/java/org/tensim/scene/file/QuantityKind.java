@@ -21,6 +21,8 @@ public enum QuantityKind {
     DENSITY("density", "kg/m^3", "1050 kg/m^3"),
     ACCELERATION("acceleration", "m/s^2", "9.81 m/s^2"),
     ANGLE("angle", "rad", "0.5 rad"),
+    /** Stiffness per unit area of a surface (a penalty, an elastic foundation's modulus): Pa/m. */
+    AREAL_STIFFNESS("areal_stiffness", "Pa/m", "5e7 Pa/m"),
     /** Factors, fractions, Poisson's ratio: a plain number. */
     NUMBER("number", "", "0.45");
 

@@ -7,10 +7,17 @@ import org.tensim.model.Topology;
  * One body of a loaded scene: its name, its type, its own topology (each body is simulated on its own, stepped
  * in lockstep with the others) and the node of each of its vertices (index lists and label files select
  * vertices; null when the vertices are the nodes in order), the surface it carries on its nodes (null when none:
- * its nodes are what is drawn) and its type's lines for {@code tensim check}.
+ * its nodes are what is drawn), its type's lines for {@code tensim check} and what its type built besides the
+ * topology (a diaphragm's scene, which runs it; null for most types).
  */
 public record SceneBody(String name, String type, Topology topology, int[] vertexNodes, SceneNode node,
-        EmbeddedSurface surface, java.util.List<String> report) {
+        EmbeddedSurface surface, java.util.List<String> report, Object built) {
+    /** A body whose type built nothing besides its topology. */
+    public SceneBody(String name, String type, Topology topology, int[] vertexNodes, SceneNode node,
+            EmbeddedSurface surface, java.util.List<String> report) {
+        this(name, type, topology, vertexNodes, node, surface, report, null);
+    }
+
     /** A body that carries no surface and reports nothing beyond its counts. */
     public SceneBody(String name, String type, Topology topology, int[] vertexNodes, SceneNode node) {
         this(name, type, topology, vertexNodes, node, null, java.util.List.of());

@@ -60,15 +60,42 @@ public final class SceneLoader {
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
         Map<String, RigidBody> rigids = new LinkedHashMap<>();
         Map<String, SceneBody> bodies = bodies(top, units, folder, laws, rigids);
+        standalone(top, bodies);
         Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder,
                 rigids.keySet());
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
         SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units, rigids);
         List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids);
         RunSettings run = RunSettings.read(top, units);
+        for (SceneBody b : bodies.values()) {
+            if (run.autoStep() && !BodyTypes.get(b.type()).standalone()) {
+                throw SceneException.at(top.required("run").get("dt"), "dt: " + RunSettings.AUTO + " leaves the step"
+                        + " to the body, and body '" + b.name() + "' (type " + b.type() + ") does not choose one:"
+                        + " give a time step, e.g. \"1 ms\"");
+            }
+        }
         List<SceneExpectation> expect = ExpectBlock.read(top.optional("expect"), bodies, probes, units);
         List<SceneParameter> parameters = SceneParameters.resolve(declared, root, units);
         return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters, rigids);
+    }
+
+    /** A {@link BodyType#standalone()} body is the file's only one, without the blocks it brings itself. */
+    private static void standalone(MapReader top, Map<String, SceneBody> bodies) {
+        for (SceneBody b : bodies.values()) {
+            if (!BodyTypes.get(b.type()).standalone()) {
+                continue;
+            }
+            if (bodies.size() > 1) {
+                throw SceneException.at(top.required("bodies"), "a " + b.type() + " body brings its own supports and"
+                        + " loads and is a file's only body; got " + bodies.keySet());
+            }
+            for (String key : List.of("zones", "conditions", "probes", "expect")) {
+                if (top.has(key)) {
+                    throw SceneException.at(top.required(key), "a " + b.type() + " body brings its own supports,"
+                            + " loads and outputs: its file has no " + key + " block (docs/scenes.md)");
+                }
+            }
+        }
     }
 
     private static void version(MapReader top) {
@@ -112,11 +139,14 @@ public final class SceneLoader {
             } catch (IllegalArgumentException ex) {
                 throw SceneException.at(b, ex.getMessage());
             }
+            if (ctx.ownTopology() != null) {
+                t = ctx.ownTopology();
+            }
             if (t.nodeCount() == 0) {
                 throw SceneException.at(b, "body '" + e.getKey() + "' has no node");
             }
             bodies.put(e.getKey(), new SceneBody(e.getKey(), typeName, t, vertices, b, ctx.surface(),
-                    ctx.reportLines()));
+                    ctx.reportLines(), ctx.built()));
         }
         if (bodies.isEmpty()) {
             throw SceneException.at(block, "every body is rigid: a scene needs at least one body with nodes");

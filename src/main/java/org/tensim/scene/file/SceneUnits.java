@@ -66,6 +66,14 @@ public final class SceneUnits {
 
     /** A scalar node's value in SI units; refused naming the node if it is not a value of this kind. */
     public double si(SceneNode node, QuantityKind kind) {
+        return in(node, kind, kind.unit());
+    }
+
+    /**
+     * A scalar node's value in {@code target}, a unit of the kind (a value written in that unit is returned as
+     * written: an option taking millimetres gets "2.5 mm" as 2.5, not as 2.5e-3 times 1e3).
+     */
+    public double in(SceneNode node, QuantityKind kind, Unit<?> target) {
         if (!node.isScalar() || node.token() == SceneNode.Token.BOOLEAN) {
             throw SceneException.at(node, node.describe() + " is not " + article(kind) + " (expected a value in "
                     + siText(kind) + ", e.g. \"" + kind.example() + "\")");
@@ -81,15 +89,20 @@ public final class SceneUnits {
         }
         String unitText = m.group(2);
         Unit<?> unit = unitText.isEmpty() ? unitOf(kind) : unit(node, unitText, kind);
-        double si = toSi(unit, value, node, kind);
+        double converted = convert(unit, value, target, node, kind);
         node.markRead(kind);
-        return si;
+        return converted;
     }
 
     /** {@code value} in {@code unit} (of the kind) converted to the kind's SI unit. */
     static double toSi(Unit<?> unit, double value, SceneNode node, QuantityKind kind) {
+        return convert(unit, value, kind.unit(), node, kind);
+    }
+
+    /** {@code value} in {@code unit} converted to {@code target} (both of the kind); as written when they are equal. */
+    private static double convert(Unit<?> unit, double value, Unit<?> target, SceneNode node, QuantityKind kind) {
         try {
-            return unit.getConverterToAny(kind.unit()).convert(value);
+            return unit.equals(target) ? value : unit.getConverterToAny(target).convert(value);
         } catch (IncommensurableException | UnconvertibleException e) {
             throw notKind(node, kind);
         }

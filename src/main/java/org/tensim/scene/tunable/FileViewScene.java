@@ -153,7 +153,15 @@ public final class FileViewScene implements ViewScene {
      * names) before the values of the controls.
      */
     public static SceneFactory factory(Path file, List<String> sets) {
-        FileViewScene checked = new FileViewScene(file, sets, SceneLoader.load(file, sets));
+        org.tensim.scene.file.Scene loaded = SceneLoader.load(file, sets);
+        for (org.tensim.scene.file.SceneBody b : loaded.bodies().values()) {
+            if (org.tensim.scene.file.BodyTypes.get(b.type()).standalone()) {
+                throw org.tensim.scene.file.SceneException.at(b.node(), "a " + b.type() + " body runs as its own"
+                        + " experiment, which the GUI opens by name: tensim gui --scene " + b.type() + " with its"
+                        + " options (the body's keys, - for _)");
+            }
+        }
+        FileViewScene checked = new FileViewScene(file, sets, loaded);
         // The values the file and the options give, before any control moves (the first scene's change live).
         Map<String, Double> defaults = new LinkedHashMap<>(checked.values);
         return new SceneFactory() {

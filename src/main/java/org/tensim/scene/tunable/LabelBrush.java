@@ -1,7 +1,7 @@
 package org.tensim.scene.tunable;
 
 import org.tensim.io.mesh.VertexLabel;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * A brush that paints labels onto the diaphragm's mesh at rest: a ray (from the eye through the pointer) picks the

@@ -9,7 +9,7 @@ import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
-import org.tensim.scene.diaphragm.TissueModel;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.solver.Simulation;
 
 /**

@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.FlatMeshes;
+import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.scene.diaphragm.ActionLines;
 import org.tensim.scene.diaphragm.BoundaryConditions;
@@ -16,7 +16,7 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DoubleDomeGenerator;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The same diaphragm scene at two resolutions: a small double dome and the same mesh refined

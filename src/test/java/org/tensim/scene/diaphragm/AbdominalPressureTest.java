@@ -8,6 +8,8 @@ import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.integrators.Integrators;
 

@@ -11,6 +11,7 @@ import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.io.mesh.VertexClustering;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.solver.Simulation;
 import org.tensim.testsupport.SharedData;
 

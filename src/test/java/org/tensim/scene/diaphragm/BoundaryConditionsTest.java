@@ -12,6 +12,8 @@ import org.tensim.model.Node;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The boundary conditions whose totals do not depend on the mesh: the attachment band (a

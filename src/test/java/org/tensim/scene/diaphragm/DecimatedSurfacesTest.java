@@ -11,6 +11,8 @@ import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.testsupport.SharedData;
 
 /**

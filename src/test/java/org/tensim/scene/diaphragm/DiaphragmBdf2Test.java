@@ -3,6 +3,7 @@ package org.tensim.scene.diaphragm;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 

@@ -9,6 +9,8 @@ import org.tensim.model.Node;
 import org.tensim.model.RigidLink;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TissueModel;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;

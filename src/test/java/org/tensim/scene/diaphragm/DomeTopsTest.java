@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The default action lines' points ({@link DomeTops}): on the surface, not at a vertex, so that

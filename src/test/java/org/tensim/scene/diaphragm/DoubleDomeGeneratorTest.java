@@ -7,6 +7,7 @@ import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.MeshCleaner;
 import org.tensim.io.mesh.MeshReport;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** The project's parametric diaphragm: size, shape, thickness and mesh quality. */
 class DoubleDomeGeneratorTest {

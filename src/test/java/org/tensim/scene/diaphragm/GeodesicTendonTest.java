@@ -13,6 +13,8 @@ import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.MeshLoader;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** The tendon grown by geodesic distance from the dome tops ({@link GeodesicTendon}). */
 class GeodesicTendonTest {

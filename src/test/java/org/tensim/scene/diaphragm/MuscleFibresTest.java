@@ -10,6 +10,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.ActiveFibre;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
 import org.tensim.solver.Simulation;
 
 /**

@@ -14,6 +14,7 @@ import org.tensim.io.mesh.FlatMeshes;
 import org.tensim.io.mesh.MeshEdges;
 import org.tensim.io.mesh.MeshUnits;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.shell.TwoSurfaces;
 import org.tensim.testsupport.SharedData;
 
 /**

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import org.tensim.io.BoxesJson;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * Shared by the diaphragm tests: the project's parametric rib cage (always there) and, for the tests of the

@@ -11,6 +11,9 @@ import org.tensim.model.LinearMapping;
 import org.tensim.model.Spring;
 import org.tensim.model.Topology;
 import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.shell.StandaloneShell;
+import org.tensim.scene.shell.TissueModel;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * A fine shell carried by a coarse one: the wedge coordinates reproduce the fine nodes and any affine motion of the

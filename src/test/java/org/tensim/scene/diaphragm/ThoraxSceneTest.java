@@ -14,6 +14,8 @@ import org.tensim.io.mesh.MidpointSubdivision;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.Vec3;
+import org.tensim.scene.shell.SurfaceGeometry;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The BodyParts3D diaphragm in the shared thorax of bone surfaces: attached at its origins only, the

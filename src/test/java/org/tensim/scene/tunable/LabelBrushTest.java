@@ -12,7 +12,7 @@ import org.tensim.io.mesh.VertexLabel;
 import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
-import org.tensim.scene.diaphragm.TwoSurfaces;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /** The label brush picks the surface the eye sees first and paints a disc; the scenes built after it have its labels. */
 class LabelBrushTest {

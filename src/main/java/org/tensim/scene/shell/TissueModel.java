@@ -1,4 +1,4 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 /**
  * How the two-surface shell's springs are derived from the tissue (docs/diaphragm.md, "The model").

@@ -1,11 +1,13 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
-import org.tensim.scene.shell.ShellMaterial;
 
-/** A shell network on its own ({@link ShellNetwork}), for the accuracy scenes and the shell's tests. */
+/**
+ * A shell network on its own ({@link ShellNetwork}): the accuracy scenes, the shell's tests and the scene files'
+ * {@code type: shell} bodies.
+ */
 public final class StandaloneShell {
     private StandaloneShell() {
     }
@@ -17,6 +19,19 @@ public final class StandaloneShell {
      * For the accuracy scenes.
      */
     public static Topology of(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor) {
+        return of(s, m, model, bendingFactor, 0);
+    }
+
+    /**
+     * As {@link #of(TwoSurfaces, ShellMaterial, TissueModel, double)} with stiffness-proportional damping: each
+     * spring of stiffness k gets {@code c = beta k} (N s/m), each membrane triangle and shear element the
+     * Kelvin-Voigt damping time beta.
+     *
+     * @param betaS the damping time beta, s (&gt;= 0; 0 undamped)
+     */
+    public static Topology of(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor,
+            double betaS) {
+        org.tensim.model.Check.nonNegative("shell damping time", "s", betaS);
         TriangleMesh mesh = s.mesh();
         double[] area = SurfaceGeometry.vertexAreas(mesh);
         Topology t = new Topology();
@@ -31,7 +46,7 @@ public final class StandaloneShell {
                 if (i == j || !pairs.add(ShellNetwork.key(i, j))) {
                     return false;
                 }
-                t.addSpring(i, j, stiffness, TwoSurfaces.distance(mesh, i, j), 0);
+                t.addSpring(i, j, stiffness, TwoSurfaces.distance(mesh, i, j), betaS * stiffness);
                 return true;
             }
 
@@ -42,12 +57,12 @@ public final class StandaloneShell {
 
             @Override
             public void triangle(int[] p, int[] q, double thicknessM, double youngPa, double poisson) {
-                t.addTriangle(p, q, thicknessM, youngPa, poisson, 0);
+                t.addTriangle(p, q, thicknessM, youngPa, poisson, betaS);
             }
 
             @Override
             public void shear(int[] upper, int[] lower, double kappaGPa, double thicknessM) {
-                t.addShear(upper, lower, kappaGPa, thicknessM);
+                t.addShear(upper, lower, kappaGPa, thicknessM, betaS);
             }
         };
         ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);

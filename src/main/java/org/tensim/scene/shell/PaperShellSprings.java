@@ -1,4 +1,4 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import java.util.List;
 import java.util.Map;

@@ -1,14 +1,14 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import org.tensim.io.mesh.TriangleMesh;
 
 /** Per-vertex geometry of triangle meshes: normals and area shares (package-private helpers). */
-final class SurfaceGeometry {
+public final class SurfaceGeometry {
     private SurfaceGeometry() {
     }
 
     /** Area-weighted unit vertex normals (3 per vertex), following the triangles' winding. */
-    static double[] vertexNormals(TriangleMesh m) {
+    public static double[] vertexNormals(TriangleMesh m) {
         double[] acc = new double[3 * m.vertexCount()];
         double[] n = new double[3];
         for (int t = 0; t < m.triangleCount(); t++) {
@@ -33,7 +33,7 @@ final class SurfaceGeometry {
     }
 
     /** Each vertex's share of the area: a third of the area of every triangle it belongs to, m^2. */
-    static double[] vertexAreas(TriangleMesh m) {
+    public static double[] vertexAreas(TriangleMesh m) {
         double[] a = new double[m.vertexCount()];
         for (int t = 0; t < m.triangleCount(); t++) {
             double third = m.area(t) / 3;

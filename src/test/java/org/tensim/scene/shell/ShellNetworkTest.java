@@ -1,4 +1,4 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -10,7 +10,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.tensim.analysis.FlatMeshes;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
-import org.tensim.scene.shell.ShellMaterial;
+import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.SystemState;
 

@@ -1,10 +1,11 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.diaphragm.DoubleDomeGenerator;
 
 /** Splitting a thin shell into its faces, and offsetting a single surface. */
 class TwoSurfacesTest {

@@ -1,4 +1,4 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -7,9 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tensim.io.mesh.TriangleMesh;
-import org.tensim.scene.shell.SandwichShell;
-import org.tensim.scene.shell.ShellMaterial;
-import org.tensim.scene.shell.TriangleMembrane;
 
 /**
  * The springs, membrane triangles and transverse shear elements of a two-surface shell

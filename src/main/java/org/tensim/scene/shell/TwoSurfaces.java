@@ -1,4 +1,4 @@
-package org.tensim.scene.diaphragm;
+package org.tensim.scene.shell;
 
 import java.util.Arrays;
 import org.tensim.io.mesh.SurfaceDistance;
@@ -309,14 +309,14 @@ public final class TwoSurfaces {
         return n == 0 ? null : new SurfaceDistance(xyz, Arrays.copyOf(t, n));
     }
 
-    static double distance(TriangleMesh m, int a, int b) {
+    public static double distance(TriangleMesh m, int a, int b) {
         double dx = m.coord(a, 0) - m.coord(b, 0);
         double dy = m.coord(a, 1) - m.coord(b, 1);
         double dz = m.coord(a, 2) - m.coord(b, 2);
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
-    static double signedVolume(TriangleMesh m) {
+    public static double signedVolume(TriangleMesh m) {
         double vol = 0;
         for (int t = 0; t < m.triangleCount(); t++) {
             int i = m.corner(t, 0);

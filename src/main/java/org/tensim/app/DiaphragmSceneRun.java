@@ -1,0 +1,62 @@
+package org.tensim.app;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.tensim.experiment.diaphragm.DiaphragmReport;
+import org.tensim.io.FileDigest;
+import org.tensim.io.RunFolder;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.file.RunSettings;
+import org.tensim.scene.file.Scene;
+import org.tensim.scene.file.SceneBody;
+import org.tensim.solver.Integrator;
+import org.tensim.solver.integrators.Integrators;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+
+/**
+ * {@code tensim run} of a scene file whose body is a {@code type: diaphragm}: the diaphragm's experiment as
+ * {@code tensim diaphragm} runs it ({@link DiaphragmCommand#report}, the same outputs and summary figures), its
+ * integrator, step and duration from the file's run block ({@code dt: auto} for the step the time-step policy
+ * recommends, the command's default), with the scene file, its digest and the overrides added to the summary.
+ * The diaphragm brings its own attachments, loads and outputs: the loader refuses other bodies, zones, conditions,
+ * probes and expectations beside it ({@link org.tensim.scene.file.BodyType#standalone()}).
+ */
+final class DiaphragmSceneRun {
+    private DiaphragmSceneRun() {
+    }
+
+    /** The scene's diaphragm body, or null when it has none. */
+    static SceneBody diaphragm(Scene scene) {
+        for (SceneBody b : scene.bodies().values()) {
+            if (b.built() instanceof DiaphragmSetup.Built) {
+                return b;
+            }
+        }
+        return null;
+    }
+
+    /** Runs the scene's diaphragm into {@code folder}. */
+    static int run(CommandSpec spec, Scene scene, SceneBody body, RunSettings run, Path folder, boolean overwrite)
+            throws Exception {
+        DiaphragmSetup.Built built = (DiaphragmSetup.Built) body.built();
+        DiaphragmSpec d = built.scene().spec();
+        double period = d.breathing().periodS();
+        if (run.dtS() > period) {
+            throw new ParameterException(spec.commandLine(), "the step " + run.dtS() + " s is longer than one"
+                    + " breathing period (" + period + " s)");
+        }
+        Integrator integrator = DiaphragmSolverOptions.contactDefaults(Integrators.create(run.integrator()),
+                run.integrator(), d);
+        DiaphragmReport.Options o = new DiaphragmReport.Options(run.durationS(), run.dtS(), 8, 100, 0.01, null);
+        return RunFolder.run(folder, "run", DiaphragmReport.OUTPUTS, overwrite, f -> {
+            Map<String, Object> fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null);
+            fields.put("scene", scene.file().toString());
+            fields.put("scene_digest", FileDigest.of(List.of(scene.file())));
+            fields.put("overrides", scene.overrides());
+            DiaphragmCommand.finish(spec, f, fields);
+        });
+    }
+}

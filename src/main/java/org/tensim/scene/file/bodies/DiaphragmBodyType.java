@@ -1,0 +1,182 @@
+package org.tensim.scene.file.bodies;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+import javax.measure.MetricPrefix;
+import javax.measure.Unit;
+import org.tensim.io.mesh.MeshFormatException;
+import org.tensim.model.Topology;
+import org.tensim.scene.diaphragm.ActionLines;
+import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmChoices;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.diaphragm.TendonRule;
+import org.tensim.scene.file.BodyContext;
+import org.tensim.scene.file.BodyType;
+import org.tensim.scene.file.MapReader;
+import org.tensim.scene.file.QuantityKind;
+import org.tensim.scene.file.SceneException;
+import org.tensim.scene.file.SceneNode;
+import org.tensim.scene.shell.TissueModel;
+import tech.units.indriya.unit.Units;
+
+/**
+ * {@code type: diaphragm}: the paper's diaphragm scene (section 3.2; docs/diaphragm.md) as {@code tensim diaphragm}
+ * builds it ({@link DiaphragmSetup#build}), its keys the command's options with {@code _} for {@code -}
+ * ({@code rings}, {@code mesh}, {@code thorax}, {@code muscle_load}, {@code contact_stiffness}, ...; the options'
+ * help says what each is and its default). Values may carry units ({@code thickness: 2.5 mm},
+ * {@code contact_stiffness: 5e7 Pa/m}, {@code period: 4 s}); a bare number takes the file's units, as everywhere.
+ * Files and folders are relative to the scene file. Without {@code mesh} and {@code rings} the body is the
+ * project's 43-ring mesh (meshes/diaphragm-default.obj), as the command's default; {@code rings} alone generates
+ * the double dome at that resolution.
+ *
+ * <p>The body carries its scene ({@link org.tensim.scene.file.SceneBody#built()}): {@code tensim run} runs it as
+ * the command does and writes the diaphragm's report. Its nodes are the scene's (the mesh's vertices first).
+ */
+public final class DiaphragmBodyType implements BodyType {
+    /** The keys, each an option of {@code tensim diaphragm} without its dashes, {@code _} for {@code -}. */
+    public static final List<String> KEYS = List.of("mesh", "units", "thickness", "rings", "labels", "weld_tolerance",
+            "min_piece_fraction", "boxes", "thorax", "cage", "contact", "contact_stiffness", "liver_support",
+            "abdominal_support", "abdominal_pressure", "apposition_pressure", "model", "tissue_model", "tendon_rule",
+            "tendon_normal", "tendon_point", "tendon_fraction", "attach_threshold", "attachment", "band_stiffness",
+            "band_all_segments", "muscle_load", "muscle_action", "action_line", "rib_amplitude", "period", "ie_ratio");
+    private static final Unit<?> MM = MetricPrefix.MILLI(Units.METRE);
+    private static final Unit<?> PA = Units.PASCAL;
+
+    @Override
+    public String name() {
+        return "diaphragm";
+    }
+
+    @Override
+    public List<String> keys() {
+        return KEYS;
+    }
+
+    /**
+     * The diaphragm brings its ribs, supports, muscle load and outputs; {@code run: {dt: auto}} is the command's
+     * default step, the one its time-step policy recommends.
+     */
+    @Override
+    public boolean standalone() {
+        return true;
+    }
+
+    @Override
+    public int[] build(BodyContext ctx, Topology topology) {
+        MapReader r = ctx.keys();
+        DiaphragmSpec spec = spec(ctx);
+        DiaphragmSetup.Built built;
+        try {
+            built = DiaphragmSetup.build(spec);
+        } catch (MeshFormatException | IllegalArgumentException e) {
+            throw SceneException.at(r.node(), e.getMessage());
+        } catch (IOException e) {
+            throw SceneException.at(r.node(), "cannot read the diaphragm's files (" + e.getMessage() + ")");
+        }
+        ctx.own(built.scene().topology(), built);
+        if (built.meshReport() != null) {
+            ctx.report(built.meshReport().describe());
+        }
+        ctx.report(built.source());
+        return null;
+    }
+
+    /** The spec the body's keys give, by the command's own rules ({@link DiaphragmChoices#spec}). */
+    public static DiaphragmSpec spec(BodyContext ctx) {
+        MapReader r = ctx.keys();
+        DiaphragmChoices c = choices(ctx);
+        try {
+            return c.spec(c.rings == null && Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH)
+                    ? DiaphragmSetup.DEFAULT_MESH : null, DiaphragmSpec.PAPER_RINGS);
+        } catch (IllegalArgumentException e) {
+            throw SceneException.at(r.node(), e.getMessage() + " (the options' names are this body's keys, with _"
+                    + " for -)");
+        }
+    }
+
+    private static DiaphragmChoices choices(BodyContext ctx) {
+        MapReader r = ctx.keys();
+        DiaphragmChoices c = new DiaphragmChoices();
+        c.mesh = r.has("mesh") ? ctx.file(r.scalar("mesh")).normalize() : null;
+        c.units = r.has("units") ? r.choice("units", List.of("mm", "m"), "mm") : null;
+        c.thicknessMm = in(ctx, "thickness", QuantityKind.LENGTH, MM);
+        c.rings = r.has("rings") ? (int) r.integer("rings", 4, 0) : null;
+        c.labels = r.has("labels") ? ctx.file(r.scalar("labels")).normalize() : null;
+        c.weldMm = in(ctx, "weld_tolerance", QuantityKind.LENGTH, MM);
+        c.minPieceFraction = in(ctx, "min_piece_fraction", QuantityKind.NUMBER, null);
+        c.boxes = r.has("boxes") ? ctx.file(r.scalar("boxes")).normalize() : null;
+        c.thorax = r.has("thorax") ? ctx.folder(r.scalar("thorax")).normalize() : null;
+        c.cage = r.has("cage") ? r.choice("cage", List.of("segments", "surfaces"), null) : null;
+        c.contact = r.has("contact") ? r.bool("contact", true) : null;
+        c.contactPaPerM = in(ctx, "contact_stiffness", QuantityKind.AREAL_STIFFNESS, null);
+        c.liverPaPerM = in(ctx, "liver_support", QuantityKind.AREAL_STIFFNESS, null);
+        c.abdominalPaPerM = in(ctx, "abdominal_support", QuantityKind.AREAL_STIFFNESS, null);
+        c.abdominalPressurePa = in(ctx, "abdominal_pressure", QuantityKind.PRESSURE, PA);
+        c.appositionPa = in(ctx, "apposition_pressure", QuantityKind.PRESSURE, PA);
+        c.model = r.has("model") ? r.choice("model", List.of("default", "paper"), null) : null;
+        c.tissueModel = r.has("tissue_model") ? named(r, "tissue_model", () -> TissueModel.parse(
+                r.string("tissue_model"))) : null;
+        c.tendonRule = r.has("tendon_rule") ? named(r, "tendon_rule", () -> BoundaryConditions.parse(TendonRule.class,
+                r.string("tendon_rule"))) : null;
+        c.tendonNormal = r.has("tendon_normal") ? MapReader.vector(r.required("tendon_normal"), QuantityKind.NUMBER,
+                ctx.units()) : null;
+        c.tendonPointMm = r.has("tendon_point") ? vectorIn(ctx, r.required("tendon_point")) : null;
+        c.tendonFraction = in(ctx, "tendon_fraction", QuantityKind.NUMBER, null);
+        c.attachMm = in(ctx, "attach_threshold", QuantityKind.LENGTH, MM);
+        c.attachment = r.has("attachment") ? named(r, "attachment", () -> BoundaryConditions.parse(
+                BoundaryConditions.Attachment.class, r.string("attachment"))) : null;
+        c.bandPaPerM = in(ctx, "band_stiffness", QuantityKind.AREAL_STIFFNESS, null);
+        c.allSegments = r.bool("band_all_segments", false);
+        c.muscleLoad = r.has("muscle_load") ? named(r, "muscle_load", () -> BoundaryConditions.parse(
+                BoundaryConditions.MuscleLoad.class, r.string("muscle_load"))) : null;
+        c.musclePa = in(ctx, "muscle_action", QuantityKind.PRESSURE, PA);
+        c.actionLines = r.has("action_line") ? actionLines(ctx, r.list("action_line")) : null;
+        c.ribAmplitude = in(ctx, "rib_amplitude", QuantityKind.NUMBER, null);
+        c.periodS = in(ctx, "period", QuantityKind.TIME, Units.SECOND);
+        c.ieRatio = in(ctx, "ie_ratio", QuantityKind.NUMBER, null);
+        return c;
+    }
+
+    /** A value in the option's own unit (null: SI), null when the key is absent. */
+    private static Double in(BodyContext ctx, String key, QuantityKind kind, Unit<?> unit) {
+        MapReader r = ctx.keys();
+        return r.has(key) ? ctx.units().in(r.scalar(key), kind, unit == null ? kind.unit() : unit) : null;
+    }
+
+    private static double[] vectorIn(BodyContext ctx, SceneNode v) {
+        if (!v.isList() || v.items().size() != 3) {
+            throw SceneException.at(v, "expected a point of three lengths [x, y, z], got " + v.describe());
+        }
+        double[] p = new double[3];
+        for (int i = 0; i < 3; i++) {
+            p[i] = ctx.units().in(v.items().get(i), QuantityKind.LENGTH, MM);
+        }
+        return p;
+    }
+
+    /** {@code action_line: [[x, y, radius], ...]}, lengths (the command's X,Y,R). */
+    private static List<ActionLines.Line> actionLines(BodyContext ctx, SceneNode list) {
+        List<ActionLines.Line> lines = new ArrayList<>();
+        for (SceneNode l : list.items()) {
+            double[] xyr = vectorIn(ctx, l);
+            try {
+                lines.add(new ActionLines.Line(1e-3 * xyr[0], 1e-3 * xyr[1], 1e-3 * xyr[2]));
+            } catch (IllegalArgumentException e) {
+                throw SceneException.at(l, e.getMessage());
+            }
+        }
+        return lines;
+    }
+
+    private static <T> T named(MapReader r, String key, java.util.function.Supplier<T> parse) {
+        try {
+            return parse.get();
+        } catch (IllegalArgumentException e) {
+            throw SceneException.at(r.node().get(key), e.getMessage());
+        }
+    }
+}
