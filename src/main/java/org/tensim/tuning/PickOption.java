@@ -10,11 +10,13 @@ import picocli.CommandLine.Option;
  * them (a picocli mixin of {@code diaphragm} and {@code gui}). Without it, the default scene takes the pick shipped
  * with the project ({@link ResolutionPick#shipped}, a measured study with its date, command and load); a pick is used
  * only on the scene it was measured on ({@link ResolutionPick#requireMatches}). The run's summary, the window's
- * status bar and {@code --run-for}'s line name the pick, its error and its source.
+ * status bar and {@code --run-for}'s line name the pick, its error and its source. The rings are the coarsest within
+ * {@link ResolutionPick#DEFAULT_TOLERANCE} in the study's table ({@link ResolutionPick#within}).
  */
 public final class PickOption {
     @Option(names = "--pick", paramLabel = "FILE",
-            description = "Run the mechanics at the rings a resolution study picked, read from its"
+            description = "Run the mechanics at the rings a resolution study picked (the coarsest within 5 % of 43"
+                    + " rings in its table), read from its"
                     + " resolution-pick.json (e.g. out/diaphragm-resolution/resolution-pick.json), the 43-ring mesh"
                     + " carried by them; not with --rings or --mesh; refused when the study's scene is not this one"
                     + " (default: the pick shipped with the project, measured on the default scene).")
@@ -45,14 +47,14 @@ public final class PickOption {
                     + " of --mesh " + options.mesh + ": leave out one of them");
         }
         if (file != null) {
-            ResolutionPick p = ResolutionPick.read(file);
+            ResolutionPick p = ResolutionPick.read(file).within(ResolutionPick.DEFAULT_TOLERANCE);
             p.requireMatches(spec);
             return p;
         }
         if (options.rings != null || options.mesh != null || options.paperModel()) {
             return null; // a resolution or a model was asked for: it runs as asked, unmapped
         }
-        ResolutionPick p = ResolutionPick.shipped();
+        ResolutionPick p = ResolutionPick.shipped().within(ResolutionPick.DEFAULT_TOLERANCE);
         try {
             p.requireMatches(spec);
         } catch (IllegalStateException e) {

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HexFormat;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.tensim.io.Json;
@@ -34,15 +35,23 @@ import org.tensim.scene.diaphragm.DiaphragmSpec;
  * @param digest    SHA-256 of the file's bytes (64 hex digits)
  * @param measured  when and how it was measured: the file's {@code measured_utc}, {@code command},
  *                  {@code load_average} (those it has)
+ * @param models    the study's table, one row per double dome coarse to fine ({@code model} "N rings",
+ *                  {@code nodes}, {@code relative_rms_error}, {@code wall_s_per_simulated_s}...); empty when not
+ *                  recorded
  */
 public record ResolutionPick(int rings, double error, double tolerance, String reason, Map<String, Object> scene,
-        String source, String digest, Map<String, Object> measured) {
+        String source, String digest, Map<String, Object> measured, List<Map<String, Object>> models) {
     /** The pick's name in the study's output folder. */
     public static final String NAME = "resolution-pick.json";
     /** How the shipped pick is named in summaries and the window (a classpath resource of this package). */
     public static final String SHIPPED_NAME = "shipped resolution-pick.json";
     /** Rings of the reference a pick is measured against: the paper's resolution. */
     public static final int REFERENCE_RINGS = DiaphragmSpec.PAPER_RINGS;
+    /**
+     * Default tolerance of the interactive uses' pick, relative RMS error against {@link #REFERENCE_RINGS} rings: 5 %,
+     * the figure a user of the window reads beside the large step's own error (docs/gui.md).
+     */
+    public static final double DEFAULT_TOLERANCE = 0.05;
 
     public ResolutionPick {
         if (rings < 2) {
@@ -50,11 +59,38 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         }
         scene = scene == null ? null : Map.copyOf(scene);
         measured = measured == null ? Map.of() : Map.copyOf(measured);
+        models = models == null ? List.of() : List.copyOf(models);
     }
 
     /** A pick as the study makes it, before it is written (no source yet). */
     public ResolutionPick(int rings, double error, double tolerance, String reason) {
-        this(rings, error, tolerance, reason, null, null, null, null);
+        this(rings, error, tolerance, reason, null, null, null, null, null);
+    }
+
+    /**
+     * The pick the study's table gives under another tolerance: the coarsest double dome whose error, and every
+     * finer one's, is within it (this pick when the file has no table or the tolerance is its own).
+     *
+     * @throws IllegalArgumentException when the tolerance is not in (0, 1)
+     */
+    public ResolutionPick within(double tol) {
+        if (!(tol > 0 && tol < 1)) {
+            throw new IllegalArgumentException("resolution tolerance must be in (0, 1) (relative RMS error), got " + tol);
+        }
+        if (models.isEmpty() || tol == tolerance) {
+            return this;
+        }
+        int i = models.size() - 1;
+        for (int j = models.size() - 2; j >= 0 && ((Number) models.get(j).get("relative_rms_error")).doubleValue()
+                <= tol; j--) {
+            i = j;
+        }
+        Map<String, Object> row = models.get(i);
+        int r = Integer.parseInt(String.valueOf(row.get("model")).replaceAll("[^0-9]", ""));
+        double e = ((Number) row.get("relative_rms_error")).doubleValue();
+        return new ResolutionPick(r, e, tol, String.format(Locale.ROOT, "the coarsest double dome of the study's table"
+                + " within %.0f %% of %d rings, with every finer one: %.2f %%", 100 * tol, REFERENCE_RINGS, 100 * e),
+                scene, source, digest, measured, models);
     }
 
     /**
@@ -109,6 +145,19 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         Object scene = m.get("scene");
         @SuppressWarnings("unchecked")
         Map<String, Object> sceneMap = scene instanceof Map<?, ?> ? (Map<String, Object>) scene : null;
+        List<Map<String, Object>> models = new java.util.ArrayList<>();
+        if (m.get("models") instanceof List<?> rows) {
+            for (Object row : rows) {
+                if (!(row instanceof Map<?, ?> r) || !(r.get("relative_rms_error") instanceof Number)
+                        || !String.valueOf(r.get("model")).matches("\\d+ rings")) {
+                    throw new IOException("'models' has " + row + ": expected rows with model \"N rings\" and"
+                            + " relative_rms_error");
+                }
+                @SuppressWarnings("unchecked")
+                Map<String, Object> typed = (Map<String, Object>) r;
+                models.add(typed);
+            }
+        }
         Map<String, Object> measured = new LinkedHashMap<>();
         for (String k : new String[] {"measured_utc", "command", "load_average"}) {
             if (m.get(k) != null) {
@@ -118,7 +167,7 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         try {
             return new ResolutionPick(((Number) rings).intValue(), number(m, "relative_rms_error"),
                     number(m, "tolerance"), String.valueOf(m.get("reason")), sceneMap, source, sha256(bytes),
-                    measured);
+                    measured, models);
         } catch (IllegalArgumentException e) {
             throw new IOException(e.getMessage(), e);
         }
@@ -196,7 +245,7 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
      * Picks the coarsest double dome within the tolerance among rows (one per ring count, the last the
      * {@value ResolutionPick#REFERENCE_RINGS}-ring reference) and writes it with its provenance.
      */
-    static void pick(java.util.List<Map<String, Object>> rows, int[] ringCounts, ResolutionStudy.Setup s,
+    static void pick(List<Map<String, Object>> rows, int[] ringCounts, ResolutionStudy.Setup s,
             Path pickFile,
             Map<String, Object> scene, Map<String, Object> summary, String command) throws IOException {
         int i = ResolutionAnalysis.pick(rows, s.tolerance());
@@ -213,7 +262,7 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
                         (double) rows.get(i).get("wall_s_per_simulated_s"),
                         (double) rows.get(rows.size() - 1).get("wall_s_per_simulated_s"));
         ResolutionPick pick = new ResolutionPick(rings, (double) rows.get(i).get("relative_rms_error"),
-                s.tolerance(), reason, scene, null, null, null);
+                s.tolerance(), reason, scene, null, null, null, null);
         Map<String, Object> details = new LinkedHashMap<>();
         details.put("nodes", rows.get(i).get("nodes"));
         details.put("wall_s_per_simulated_s", rows.get(i).get("wall_s_per_simulated_s"));
@@ -221,7 +270,13 @@ public record ResolutionPick(int rings, double error, double tolerance, String r
         details.put("command", command);
         details.put("load_average", DiaphragmReport.round(java.lang.management.ManagementFactory
                 .getOperatingSystemMXBean().getSystemLoadAverage(), 2));
-        details.put("models", rows);
+        List<Map<String, Object>> table = new java.util.ArrayList<>();
+        for (Map<String, Object> r : rows) {
+            Map<String, Object> t = new LinkedHashMap<>(r);
+            t.remove("error_hotspots"); // in resolution.json; the pick keeps the table
+            table.add(t);
+        }
+        details.put("models", table);
         pick.write(pickFile, details);
         summary.put("picked_rings", rings);
         summary.put("resolution_pick_file", pickFile.toString());

@@ -60,7 +60,7 @@ class ResolutionPickTest {
     void aWrittenPickRecordsItsSceneAndOneWithoutIsRefused() throws Exception {
         Path f = dir.resolve("pick.json");
         new ResolutionPick(20, 0.048, 0.05, "because", ResolutionPick.sceneOf(DiaphragmSpec.defaults()), null, null,
-                null).write(f, Map.of("measured_utc", "2026-12-02T00:00:00Z"));
+                null, null).write(f, Map.of("measured_utc", "2026-12-02T00:00:00Z"));
         ResolutionPick p = ResolutionPick.read(f);
         assertEquals(20, p.rings());
         assertEquals(f.toString(), p.source());

@@ -57,7 +57,12 @@ class MappedDiaphragmTest {
                         carried.state().x[3 * (fine.diaphragmNodes() + k) + r], 0, "cage node " + k);
             }
         }
-        assertTrue(m.maxResidualM() < 2e-3, "the fine mesh lies in the coarse shell to " + m.maxResidualM() + " m");
+        // where the shell turns over at the rim, a fine node is carried on the face: its offset is left out, within
+        // half a coarse element
+        var mesh = coarse.surfaces().mesh();
+        double element = Math.sqrt(2 * mesh.totalArea() / mesh.triangleCount());
+        assertTrue(m.maxResidualM() < 0.5 * element, "the fine mesh lies in the coarse shell to " + m.maxResidualM()
+                + " m, elements of " + element + " m");
     }
 
     @Test
