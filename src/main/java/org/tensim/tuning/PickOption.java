@@ -15,7 +15,7 @@ import picocli.CommandLine.Option;
  */
 public final class PickOption {
     @Option(names = "--pick", paramLabel = "FILE",
-            description = "Run the mechanics at the rings a resolution study picked (the coarsest within 5 % of 43"
+            description = "Run the mechanics at the rings a resolution study picked (the coarsest within 5 %% of 43"
                     + " rings in its table), read from its"
                     + " resolution-pick.json (e.g. out/diaphragm-resolution/resolution-pick.json), the 43-ring mesh"
                     + " carried by them; not with --rings or --mesh; refused when the study's scene is not this one"

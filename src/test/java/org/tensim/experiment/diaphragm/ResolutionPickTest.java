@@ -41,6 +41,30 @@ class ResolutionPickTest {
     }
 
     @Test
+    void anotherToleranceTakesTheCoarsestWithinItFromTheStudysTable() {
+        ResolutionPick p = ResolutionPick.shipped();
+        for (double tol : new double[] {0.03, 0.05, 0.1, 0.2}) {
+            ResolutionPick q = p.within(tol);
+            assertTrue(q.error() <= tol, tol + ": " + q);
+            // every finer model of the table is within it too, and the next coarser one is not
+            boolean seen = false;
+            Double coarser = null;
+            for (Map<String, Object> row : p.models()) {
+                double e = ((Number) row.get("relative_rms_error")).doubleValue();
+                if (row.get("model").equals(q.rings() + " rings")) {
+                    seen = true;
+                } else if (seen) {
+                    assertTrue(e <= tol, row.toString());
+                } else {
+                    coarser = e;
+                }
+            }
+            assertTrue(seen && (coarser == null || coarser > tol), tol + ": " + q.rings() + " rings");
+            assertEquals(p.digest(), q.digest(), "the same measured file");
+        }
+    }
+
+    @Test
     void aPickIsRefusedOnASceneNoMeasuredStudyMatches() {
         ResolutionPick p = ResolutionPick.shipped();
         DiaphragmSpec pressure = DiaphragmSpec.defaults().withBoundary(BoundaryConditions.defaults()
@@ -79,7 +103,8 @@ class ResolutionPickTest {
         PickOption none = new PickOption();
         DiaphragmOptions defaults = DiaphragmOptions.parse(List.of());
         ResolutionPick p = none.choose(defaults, defaults.spec(null, DiaphragmSpec.PAPER_RINGS), null);
-        assertEquals(ResolutionPick.shipped().rings(), p.rings());
+        assertEquals(ResolutionPick.shipped().within(ResolutionPick.DEFAULT_TOLERANCE).rings(), p.rings());
+        assertTrue(p.error() <= ResolutionPick.DEFAULT_TOLERANCE, p.toString());
 
         DiaphragmOptions pressure = DiaphragmOptions.parse(List.of("--muscle-load", "pressure"));
         List<String> notes = new ArrayList<>();
