@@ -112,6 +112,8 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         ParameterControl dt = new ParameterControl(tuning.parameter(Tuning.TIME_STEP), tuning, errors);
         controls.add(dt);
         solver.add(dt);
+        fullModel.setName("fullModel");
+        fullModel.setToolTipText("Every node of the drawn mesh runs the mechanics, unmapped.");
         solver.add(left(fullModel));
         fullModel.setVisible(false);
         add(section("Solver", solver));
@@ -284,7 +286,6 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
      * @param what one sentence for the tooltip: which resolutions and the error
      */
     void showFullModelSwitch(String what, Consumer<Boolean> onChange) {
-        fullModel.setName("fullModel");
         fullModel.setToolTipText("<html>Ticked: every node of the drawn mesh runs the mechanics, as the paper's model"
                 + " (slower).<br>Unticked: " + what + ".<br>A change rebuilds the scene: the run restarts.</html>");
         fullModel.addActionListener(e -> onChange.accept(fullModel.isSelected()));
