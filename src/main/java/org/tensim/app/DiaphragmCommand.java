@@ -50,7 +50,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
     @Option(names = "--realtime",
             description = "Run the real-time setting (bdf2 at 25 ms with the fibres' load: the real-time study's"
                     + " choice on the default mesh, its error against RK2 in docs/performance.md; in a thorax "
-                    + "bdf2-contact-realtime, docs/thorax.md), on all cores; the summary names it (realtime_setting).")
+                    + "bdf2-contact-realtime, docs/thorax.md), on all cores; on the default scene the mechanics run at"
+                    + " the rings of the shipped resolution pick (or --pick's), the 43-ring mesh carried by them and"
+                    + " measured; the summary names both (realtime_setting, resolution_pick).")
     boolean realtime;
 
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
@@ -85,18 +87,22 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         // Options are checked before the mesh is read, which takes seconds.
-        org.tensim.experiment.diaphragm.ResolutionPick picked;
-        try {
-            picked = pick.apply(scene);
-        } catch (IllegalArgumentException e) {
-            throw usage(e.getMessage());
-        }
         final DiaphragmSpec sceneSpec = CommandChecks.scene(spec, scene,
                 // --rings (or the pick's) asks for the generated dome at those rings, not the committed 43-ring mesh.
                 !scene.ringsGiven() && Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH
                         : null,
                 DiaphragmSpec.PAPER_RINGS);
         solver.check(spec, sceneSpec, seconds);
+        // --pick, or --realtime on the default scene: the mechanics at the pick's rings, the 43-ring mesh carried
+        org.tensim.experiment.diaphragm.ResolutionPick picked = null;
+        if (pick.file() != null || realtime) {
+            try {
+                picked = pick.choose(scene, sceneSpec, note -> System.out.println("realtime: " + note));
+            } catch (IllegalArgumentException e) {
+                throw usage(e.getMessage());
+            }
+        }
+        final org.tensim.experiment.diaphragm.ResolutionPick mappedAt = picked;
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
         int threadCount = threads.threads(spec);
@@ -121,7 +127,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
         final org.tensim.solver.Integrator integratorUsed = chosen;
         final RealTimeSetting named = setting;
         return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(),
-                run -> simulate(run, sceneSpec, o, integratorUsed, named, threadCount));
+                run -> simulate(run, sceneSpec, o, integratorUsed, named, threadCount, mappedAt));
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {
@@ -142,9 +148,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
     }
 
     private void simulate(RunFolder run, DiaphragmSpec sceneSpec, DiaphragmReport.Options o,
-            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads) throws Exception {
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads,
+            org.tensim.experiment.diaphragm.ResolutionPick picked) throws Exception {
         DiaphragmSetup.Built built = DiaphragmSetup.build(sceneSpec);
-        Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh);
+        Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked);
         if (pick.file() != null) {
             fields.put("resolution_pick_file", pick.file().toString());
         }
@@ -157,17 +164,29 @@ public final class DiaphragmCommand implements Callable<Integer> {
      * summary's fields, not yet written.
      *
      * @param meshGiven the mesh file the user gave, null for the default (for the real-time setting's line)
+     * @param picked    the resolution the mechanics run at, carrying the built mesh ({@link
+     *                  org.tensim.scene.diaphragm.MappedDiaphragm}); null to run the built mesh itself
      */
     static Map<String, Object> report(RunFolder run, DiaphragmSetup.Built built, DiaphragmReport.Options o,
-            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads, Path meshGiven)
-            throws Exception {
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads, Path meshGiven,
+            org.tensim.experiment.diaphragm.ResolutionPick picked) throws Exception {
+        DiaphragmSpec sceneSpec = built.scene().spec();
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
+        org.tensim.scene.diaphragm.MappedDiaphragm mapped = null;
+        if (picked != null) {
+            DiaphragmSpec coarse = sceneSpec.withMesh(sceneSpec.mesh().withFile(null, sceneSpec.mesh().units())
+                    .withRings(picked.rings()));
+            mapped = org.tensim.scene.diaphragm.MappedDiaphragm.of(DiaphragmSetup.build(coarse).scene(),
+                    built.scene());
+            System.out.println("mechanics at " + picked.describe() + ", carrying the " + mapped.drawnNodes()
+                    + " nodes of " + built.source());
+        }
         int n = threads > 0 ? threads
                 : setting != null ? org.tensim.solver.parallel.Parallelism.availableCores()
-                        : org.tensim.solver.parallel.Parallelism.automaticThreads(
-                                built.scene().topology().springs().size());
+                        : org.tensim.solver.parallel.Parallelism.automaticThreads((mapped != null ? mapped.coarse()
+                                : built.scene()).topology().springs().size());
         if (setting != null) {
             System.out.println("realtime: " + setting.describe()
                     + (meshGiven == null ? ""
@@ -176,11 +195,16 @@ public final class DiaphragmCommand implements Callable<Integer> {
                                             + " --thorax measures this mesh)"
                                     : "; this mesh (" + meshGiven + ") was not measured"));
         }
-        Map<String, Object> fields = DiaphragmReport.run(built, o, chosen, n, run, System.out);
+        Map<String, Object> fields = mapped != null
+                ? org.tensim.experiment.diaphragm.MappedRun.run(built, mapped, o, chosen, n, run, System.out)
+                : DiaphragmReport.run(built, o, chosen, n, run, System.out);
         // muscle_force_pa is an active fibre stress or a pressure: the load says which.
         fields.put("muscle_load", BoundaryConditions.name(built.scene().spec().boundary().muscleLoad()));
         if (setting != null) {
             fields.put("realtime_setting", setting.toMap());
+        }
+        if (picked != null) {
+            fields.put("resolution_pick", picked.toMap());
         }
         return fields;
     }

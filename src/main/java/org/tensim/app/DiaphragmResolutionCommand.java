@@ -48,8 +48,8 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
     double seconds = 4;
 
     @Option(names = "--study-rings", split = ",", paramLabel = "N[,N...]", hideParamSyntax = true,
-            description = "Ring counts of the generated double domes, ascending, the finest as reference, no pick"
-                    + " (default: 10,14,20,28,43 with the pick).")
+            description = "Ring counts of the generated double domes, ascending, the finest as reference; a pick"
+                    + " when the finest is 43 (default: 10,14,20,28,43).")
     int[] studyRings;
 
     @Option(names = "--tolerance", paramLabel = "E",
@@ -89,9 +89,12 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
         DiaphragmCommand.checkRings(spec, studyRings);
-        if (pickOut != null && (studyRings != null || scene.mesh != null)) {
-            throw usage("--pick-out: only the default study (the double domes at 10 to 43 rings) makes a pick; leave"
-                    + " out " + (studyRings != null ? "--study-rings" : "--mesh") + " or --pick-out");
+        boolean againstPaper = studyRings == null
+                || studyRings[studyRings.length - 1] == ResolutionPick.REFERENCE_RINGS;
+        if (pickOut != null && (!againstPaper || scene.mesh != null)) {
+            throw usage("--pick-out: only a study of the double domes against " + ResolutionPick.REFERENCE_RINGS
+                    + " rings makes a pick; leave out " + (scene.mesh != null ? "--mesh" : "--study-rings "
+                    + java.util.Arrays.toString(studyRings)) + " or --pick-out");
         }
         if (pickOut != null && (pickOut.toString().isBlank() || java.nio.file.Files.isDirectory(pickOut))) {
             throw usage("--pick-out must name a file to write, got '" + pickOut + "'");
@@ -134,10 +137,19 @@ public final class DiaphragmResolutionCommand implements Callable<Integer> {
             Map<String, Object> r = ownMesh
                     ? ResolutionStudy.runMesh(m.file(), m.units(), m.cleaning(), m.offsetThicknessM(), cellsMm,
                             decimation, refine, rs, folder)
-                    : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder)
-                    : ResolutionStudy.run(rs, folder, pickFile(folder));
+                    : studyRings != null ? ResolutionStudy.runRings(rs, studyRings, folder,
+                            againstPaper ? pickFile(folder) : null, pickScene(s))
+                    : ResolutionStudy.run(rs, folder, pickFile(folder), pickScene(s));
             System.out.println(Json.line(run.finish(RunStatus.OK, r)));
         });
+    }
+
+    /**
+     * The scene a pick records: the spec's, with the tendon rule the study's models are built with (the default:
+     * the study does not take --tendon-rule).
+     */
+    static Map<String, Object> pickScene(DiaphragmSpec s) {
+        return ResolutionPick.sceneOf(s.withTendonRule(DiaphragmSpec.DEFAULT_TENDON_RULE));
     }
 
     /** Where the default study writes its pick: {@code --pick-out}, else resolution-pick.json in the run folder. */

@@ -52,7 +52,7 @@ final class DiaphragmSceneRun {
                 run.integrator(), d);
         DiaphragmReport.Options o = new DiaphragmReport.Options(run.durationS(), run.dtS(), 8, 100, 0.01, null);
         return RunFolder.run(folder, "run", DiaphragmReport.OUTPUTS, overwrite, f -> {
-            Map<String, Object> fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null);
+            Map<String, Object> fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null, null);
             fields.put("scene", scene.file().toString());
             fields.put("scene_digest", FileDigest.of(List.of(scene.file())));
             fields.put("overrides", scene.overrides());

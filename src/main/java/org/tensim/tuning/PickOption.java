@@ -2,18 +2,24 @@ package org.tensim.tuning;
 
 import java.nio.file.Path;
 import org.tensim.experiment.diaphragm.ResolutionPick;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
 import picocli.CommandLine.Option;
 
 /**
- * {@code --pick FILE}: the generated double dome at the resolution a resolution study picked, read from the
- * {@code resolution-pick.json} the study wrote (a picocli mixin of {@code diaphragm} and {@code gui}). Nothing reads a
- * pick unless this option names it; the run's summary and the GUI's title then name the file.
+ * {@code --pick FILE}: the mechanics at the resolution a resolution study picked, the paper's 43-ring mesh carried by
+ * them (a picocli mixin of {@code diaphragm} and {@code gui}). Without it, the default scene takes the pick shipped
+ * with the project ({@link ResolutionPick#shipped}, a measured study with its date, command and load); a pick is used
+ * only on the scene it was measured on ({@link ResolutionPick#requireMatches}). The run's summary, the window's
+ * status bar and {@code --run-for}'s line name the pick, its error and its source. The rings are the coarsest within
+ * {@link ResolutionPick#DEFAULT_TOLERANCE} in the study's table ({@link ResolutionPick#within}).
  */
 public final class PickOption {
     @Option(names = "--pick", paramLabel = "FILE",
-            description = "Open the generated double dome at the rings a resolution study picked, read from its"
-                    + " resolution-pick.json (e.g. out/diaphragm-resolution/resolution-pick.json); not with --rings"
-                    + " or --mesh; the summary and the window's title name the file (default: no pick).")
+            description = "Run the mechanics at the rings a resolution study picked (the coarsest within 5 %% of 43"
+                    + " rings in its table), read from its"
+                    + " resolution-pick.json (e.g. out/diaphragm-resolution/resolution-pick.json), the 43-ring mesh"
+                    + " carried by them; not with --rings or --mesh; refused when the study's scene is not this one"
+                    + " (default: the pick shipped with the project, measured on the default scene).")
     Path file;
 
     /** The file given, or null. */
@@ -22,26 +28,41 @@ public final class PickOption {
     }
 
     /**
-     * Reads the pick and gives its rings to the options, as {@code --rings} would.
+     * The pick the scene's mechanics run at: {@code --pick}'s, or the shipped one when the scene is the default
+     * double dome; null for the full model ({@code --rings}, {@code --mesh}, a label file, the paper's model).
      *
-     * @return the pick, or null when {@code --pick} is left out (the options are then unchanged)
+     * @param note receives, when not null, why the full model runs although no resolution was asked for (the shipped
+     *             pick does not match the scene)
      * @throws IllegalArgumentException with {@code --rings} or {@code --mesh} given too (a usage error)
-     * @throws IllegalStateException    when the file is missing or not a pick ({@link ResolutionPick#read})
+     * @throws IllegalStateException    when the file is missing, not a pick, or measured on another scene
      */
-    public ResolutionPick apply(DiaphragmOptions options) {
-        if (file == null) {
-            return null;
+    public ResolutionPick choose(DiaphragmOptions options, DiaphragmSpec spec,
+            java.util.function.Consumer<String> note) {
+        if (file != null && options.rings != null) {
+            throw new IllegalArgumentException("--pick " + file + " gives the rings of the mechanics: leave out"
+                    + " --rings " + options.rings + " or --pick");
         }
-        if (options.rings != null) {
-            throw new IllegalArgumentException("--pick " + file + " gives the rings of the generated double dome:"
-                    + " leave out --rings " + options.rings + " or --pick");
-        }
-        if (options.mesh != null) {
+        if (file != null && options.mesh != null) {
             throw new IllegalArgumentException("--pick " + file + " is a resolution of the generated double dome, not"
                     + " of --mesh " + options.mesh + ": leave out one of them");
         }
-        ResolutionPick p = ResolutionPick.read(file);
-        options.rings = p.rings();
-        return p;
+        if (file != null) {
+            ResolutionPick p = ResolutionPick.read(file).within(ResolutionPick.DEFAULT_TOLERANCE);
+            p.requireMatches(spec);
+            return p;
+        }
+        if (options.rings != null || options.mesh != null || options.paperModel()) {
+            return null; // a resolution or a model was asked for: it runs as asked, unmapped
+        }
+        ResolutionPick p = ResolutionPick.shipped().within(ResolutionPick.DEFAULT_TOLERANCE);
+        try {
+            p.requireMatches(spec);
+        } catch (IllegalStateException e) {
+            if (note != null) {
+                note.accept("full model, unmapped: " + e.getMessage().replaceFirst(";.*", ""));
+            }
+            return null;
+        }
+        return p.rings() >= ResolutionPick.REFERENCE_RINGS ? null : p;
     }
 }

@@ -69,4 +69,24 @@ public final class TunableScenes {
     public static int defaultRings() {
         return DiaphragmSpec.PAPER_RINGS;
     }
+
+    /**
+     * Sets the diaphragm factory's mechanics to the pick {@link PickOption#choose} gives for its spec (the scene's
+     * mechanics then run at the pick's rings, the spec's 43-ring mesh carried and drawn); nothing for another factory.
+     *
+     * @param note receives why the full model runs when the shipped pick does not match the scene
+     * @return the pick used, or null for the full model
+     */
+    public static org.tensim.experiment.diaphragm.ResolutionPick mapMechanics(SceneFactory factory, PickOption pick,
+            DiaphragmOptions options, java.util.function.Consumer<String> note) {
+        if (!(factory instanceof org.tensim.scene.tunable.DiaphragmViewFactory f)) {
+            return null;
+        }
+        org.tensim.experiment.diaphragm.ResolutionPick p = pick.choose(options, f.spec(), note);
+        if (p != null) {
+            f.mapMechanics(new org.tensim.scene.tunable.DiaphragmViewFactory.Mechanics(p.rings(), p.error(),
+                    p.source()));
+        }
+        return p;
+    }
 }

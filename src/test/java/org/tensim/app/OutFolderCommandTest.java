@@ -129,19 +129,24 @@ class OutFolderCommandTest {
     void aRunAtAPickNamesItsFileInTheSummary() throws Exception {
         Path pick = dir.resolve("picked.json");
         Json.write(pick, Map.of("format", "tensim-resolution-pick", "rings", 6, "relative_rms_error", 0.04,
-                "tolerance", 0.1, "reason", "the coarsest within 10 %"));
+                "tolerance", 0.1, "reason", "the coarsest within 10 %", "scene",
+                org.tensim.experiment.diaphragm.ResolutionPick.sceneOf(
+                        org.tensim.scene.diaphragm.DiaphragmSpec.defaults())));
         Path out = dir.resolve("at-pick");
         String[] r = run("diaphragm", "--pick", pick.toString(), "--seconds", "0.01", "--vtk-per-cycle", "0",
                 "--out", out.toString());
         assertEquals("0", r[0], r[2]);
         Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
-        assertEquals(pick.toString(), s.get("resolution_pick_file"));
-        assertTrue(String.valueOf(s.get("source")).contains("6 rings"), "the pick's rings: " + s.get("source"));
+        assertEquals(pick.toString(), ((Map<?, ?>) s.get("resolution_pick")).get("source"));
+        assertTrue(String.valueOf(((Map<?, ?>) s.get("mechanics")).get("source")).contains("6 rings"),
+                "the pick's rings run the mechanics: " + s.get("mechanics"));
+        assertEquals(11_354, ((Number) s.get("drawn_nodes")).intValue(), "the 43-ring mesh is measured");
+        assertEquals(s.get("drawn_nodes"), s.get("diaphragm_nodes"));
 
         Path plain = dir.resolve("plain");
         assertEquals("0", run("diaphragm", "--rings", "6", "--seconds", "0.01", "--vtk-per-cycle", "0", "--out",
                 plain.toString())[0]);
-        assertFalse(Json.readMap(plain.resolve("summary.json")).containsKey("resolution_pick_file"),
+        assertFalse(Json.readMap(plain.resolve("summary.json")).containsKey("resolution_pick"),
                 "no pick read unless named");
 
         String[] both = run("diaphragm", "--pick", pick.toString(), "--rings", "8", "--out", dir.resolve("x")

@@ -60,6 +60,7 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
     private final JCheckBox realTime;
     private final JRadioButton massSpring = new JRadioButton("Mass-spring");
     private final JRadioButton tensegrity = new JRadioButton("Tensegrity");
+    private final JCheckBox fullModel = new JCheckBox("Full model (unmapped)");
     private boolean updating;
 
     ControlPanel(Tuning tuning, Actions actions, int probeAxis, Consumer<String> errors) {
@@ -111,6 +112,10 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         ParameterControl dt = new ParameterControl(tuning.parameter(Tuning.TIME_STEP), tuning, errors);
         controls.add(dt);
         solver.add(dt);
+        fullModel.setName("fullModel");
+        fullModel.setToolTipText("Every node of the drawn mesh runs the mechanics, unmapped.");
+        solver.add(left(fullModel));
+        fullModel.setVisible(false);
         add(section("Solver", solver));
 
         JPanel tendon = column();
@@ -272,6 +277,19 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
     private static JComponent left(JComponent c) {
         c.setAlignmentX(Component.LEFT_ALIGNMENT);
         return c;
+    }
+
+    /**
+     * Shows the switch between the mapped mechanics and the full model (a diaphragm whose mechanics run coarser than
+     * it is drawn): {@code onChange} gets whether the full model is chosen, and rebuilds the scene.
+     *
+     * @param what one sentence for the tooltip: which resolutions and the error
+     */
+    void showFullModelSwitch(String what, Consumer<Boolean> onChange) {
+        fullModel.setToolTipText("<html>Ticked: every node of the drawn mesh runs the mechanics, as the paper's model"
+                + " (slower).<br>Unticked: " + what + ".<br>A change rebuilds the scene: the run restarts.</html>");
+        fullModel.addActionListener(e -> onChange.accept(fullModel.isSelected()));
+        fullModel.setVisible(true);
     }
 
     private static JComponent section(String title, JComponent body) {

@@ -123,17 +123,12 @@ public final class GuiCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--pick " + pick.file() + " is a resolution of the diaphragm: leave it"
                     + " out with --scene " + scene);
         }
-        org.tensim.experiment.diaphragm.ResolutionPick picked = pick.apply(options);
-        // As if --rings had been given: a preset saved from this window reopens at the same rings, without the file.
-        java.util.List<String> sceneArgs = sceneFromPreset(picked == null ? java.util.List.of()
-                : java.util.List.of("--rings", String.valueOf(picked.rings())));
-        if (picked != null && options.mesh != null) {
-            throw new IllegalArgumentException("--pick " + pick.file() + " is a resolution of the generated double"
-                    + " dome, and the preset " + preset + " opens the mesh " + options.mesh
-                    + ": leave out one of them");
-        }
+        java.util.List<String> sceneArgs = sceneFromPreset(java.util.List.of());
         sceneFile.refuseSetsWithoutFile();
         SceneFactory factory = sceneFile.given() ? sceneFile.factory(spec) : TunableScenes.factory(scene, options);
+        StringBuilder unmapped = new StringBuilder();
+        org.tensim.experiment.diaphragm.ResolutionPick picked = sceneFile.given() ? null
+                : TunableScenes.mapMechanics(factory, pick, options, unmapped::append);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
         setScripted(script);
@@ -148,15 +143,17 @@ public final class GuiCommand implements Callable<Integer> {
                 options.thorax != null);
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
-            String note = "pick " + pick.file() + ", " + picked.rings() + " rings";
+            String note = "mechanics at " + picked.describe();
             SwingUtilities.invokeAndWait(() -> w.setTitleNote(note));
+        } else if (unmapped.length() > 0) {
+            SwingUtilities.invokeAndWait(() -> w.status().message(unmapped.toString(), false));
         }
         SwingUtilities.invokeAndWait(() -> w.setFrameCap(fpsCap));
         if (runFor != null) {
             java.util.Map<String, Object> summary = new java.util.LinkedHashMap<>(TimedRun.run(w, runFor, !unpaced,
                     screenshot, started));
-            if (pick.file() != null) {
-                summary.put("resolution_pick_file", pick.file().toString());
+            if (picked != null) {
+                summary.put("resolution_pick", picked.toMap());
             }
             summary.put("window_title", w.windowTitle());
             w.awaitClosed();

@@ -98,6 +98,14 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
         labels = new LabelTools(frame, status, runner, factory, configDir, () -> scene);
         presets = new PresetActions(frame, status, tuning);
         tuning.bind(runner);
+        if (factory instanceof DiaphragmViewFactory f && f.mechanics() != null) {
+            DiaphragmViewFactory.Mechanics m = f.mechanics();
+            controls.showFullModelSwitch(String.format(java.util.Locale.ROOT, "the mechanics at %d rings carry the"
+                    + " drawn mesh, %.1f %% from it (%s)", m.rings(), 100 * m.error(), m.source()), full -> {
+                        f.setFullModel(full);
+                        runner.reset();
+                    });
+        }
 
         JPanel centre = new JPanel(new BorderLayout());
         centre.add(view.canvas(), BorderLayout.CENTER);
@@ -192,6 +200,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             live.show(frames.live(), frames.readouts());
             saveLabels.setEnabled(s instanceof DiaphragmViewScene);
             brush.setVisible(s instanceof DiaphragmViewScene && factory instanceof DiaphragmViewFactory);
+            status.showResolution(s.resolution());
             sceneTitle = s.title();
             frame.setTitle(windowTitle());
         });

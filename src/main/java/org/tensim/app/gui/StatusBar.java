@@ -20,6 +20,7 @@ final class StatusBar extends JPanel {
     private static final long serialVersionUID = 1L;
     private final JLabel numbers = new JLabel(" ");
     private final JLabel warning = new JLabel(" ");
+    private final JLabel resolution = new JLabel(" ");
     private long lastNanos;
     private long lastSteps;
     private double lastSim;
@@ -35,6 +36,34 @@ final class StatusBar extends JPanel {
         warning.setForeground(new Color(190, 60, 0));
         add(numbers, BorderLayout.WEST);
         add(warning, BorderLayout.CENTER);
+        resolution.setName("status.resolution");
+        add(resolution, BorderLayout.EAST);
+    }
+
+    /**
+     * Shows which resolution runs the mechanics against the one drawn, and its measured error (nothing for a scene
+     * without the question).
+     */
+    void showResolution(org.tensim.scene.tunable.ViewScene.Resolution r) {
+        resolution.setText(resolutionText(r));
+        resolution.setToolTipText(r == null ? null : r.describe());
+    }
+
+    /** The status bar's resolution text: mapped with its error, or the full model; empty for none. */
+    static String resolutionText(org.tensim.scene.tunable.ViewScene.Resolution r) {
+        if (r == null) {
+            return " ";
+        }
+        if (r.mechanicalNodes() == r.drawnNodes()) {
+            return String.format(Locale.ROOT, "full model: %,d nodes", r.drawnNodes());
+        }
+        return String.format(Locale.ROOT, "mechanics %,d nodes, drawn %,d: %.1f %% error", r.mechanicalNodes(),
+                r.drawnNodes(), 100 * r.error());
+    }
+
+    /** The resolution text shown (for tests). */
+    String resolutionText() {
+        return resolution.getText();
     }
 
     /** Shows a message in the warning area for a while (refused value, preset loaded...). */

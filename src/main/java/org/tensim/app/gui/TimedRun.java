@@ -115,6 +115,12 @@ final class TimedRun {
             links += st.linkCount();
         }
         m.put("nodes", nodes);
+        org.tensim.scene.tunable.ViewScene.Resolution res = w.scene().resolution();
+        if (res != null) {
+            m.put("drawn_nodes", res.drawnNodes());
+            m.put("mechanical_nodes", res.mechanicalNodes());
+            m.put("resolution_error", finiteOrNull(res.error()));
+        }
         m.put("springs", springs);
         m.put("rigid_links", links);
         m.put("integrator", w.tuning().integrator().name());

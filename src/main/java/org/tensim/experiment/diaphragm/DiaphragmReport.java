@@ -117,7 +117,7 @@ public final class DiaphragmReport {
      * The run in named steps: plan the instants whose positions are kept, step and sample, sum up,
      * write the files.
      */
-    private static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
+    static Map<String, Object> run(DiaphragmSetup.Built built, Options o, Simulation sim, int threads,
             long[] workers, RunFolder out, PrintStream log) throws IOException {
         DiaphragmScene scene = built.scene();
         TimeStep step = scene.timeStep(sim.integrator(), o.dtS());

@@ -140,6 +140,16 @@ public final class ResolutionStudy {
      * ({@code "resolution_pick_file"}).
      */
     public static Map<String, Object> run(Setup s, Path out, Path pickFile) throws IOException, MeshFormatException {
+        return run(s, out, pickFile, null);
+    }
+
+    /**
+     * As {@link #run(Setup, Path, Path)}, the pick recording the scene it was measured on ({@link
+     * ResolutionPick#sceneOf} of the spec the setup was made from; null: not recorded, and the pick is then refused
+     * by {@link ResolutionPick#requireMatches}).
+     */
+    public static Map<String, Object> run(Setup s, Path out, Path pickFile, Map<String, Object> scene)
+            throws IOException, MeshFormatException {
         Files.createDirectories(out);
         List<Run> parametric = new ArrayList<>();
         for (int rings : RINGS) {
@@ -156,49 +166,38 @@ public final class ResolutionStudy {
         }
         ResolutionAnalysis.Transfers transfers = new ResolutionAnalysis.Transfers();
         Map<String, Object> summary = report(families, transfers, s, out);
-        List<Map<String, Object>> rows = ResolutionAnalysis.rows(parametric, transfers);
-        int i = ResolutionAnalysis.pick(rows, s.tolerance());
-        int rings = RINGS[i];
-        String reason = i == rows.size() - 1
-                ? String.format(Locale.ROOT, "no coarser double dome is within %.0f %% of the %d-ring model (%d rings:"
-                        + " %.1f %%): the reference resolution", 100 * s.tolerance(), RINGS[RINGS.length - 1],
-                        RINGS[i - 1], 100 * (double) rows.get(i - 1).get("relative_rms_error"))
-                : String.format(Locale.ROOT, "the coarsest double dome within %.0f %% of the %d-ring model, with every"
-                        + " finer one: %.1f %% at %.2f wall s per simulated s against %.2f for the reference",
-                        100 * s.tolerance(), RINGS[RINGS.length - 1],
-                        100 * (double) rows.get(i).get("relative_rms_error"),
-                        (double) rows.get(i).get("wall_s_per_simulated_s"),
-                        (double) rows.get(rows.size() - 1).get("wall_s_per_simulated_s"));
-        ResolutionPick pick = new ResolutionPick(rings, (double) rows.get(i).get("relative_rms_error"),
-                s.tolerance(), reason);
-        Map<String, Object> details = new LinkedHashMap<>();
-        details.put("nodes", rows.get(i).get("nodes"));
-        details.put("wall_s_per_simulated_s", rows.get(i).get("wall_s_per_simulated_s"));
-        details.put("measured_utc", Instant.now().toString());
-        details.put("command", "./tensim diaphragm resolution-study");
-        pick.write(pickFile, details);
-        summary.put("picked_rings", rings);
-        summary.put("resolution_pick_file", pickFile.toString());
-        summary.put("pick_reason", reason);
-        if (s.log() != null) {
-            s.log().println("picked " + rings + " rings: " + reason);
-        }
+        ResolutionPick.pick(ResolutionAnalysis.rows(parametric, transfers), RINGS, s, pickFile, scene, summary,
+                "./tensim diaphragm resolution-study");
         return summary;
     }
 
     /**
      * The double dome family at the given ring counts only (ascending; the finest is the reference), for
-     * a quicker study than {@link #run}: no BodyParts3D family and no pick written (a pick needs the
-     * default 43-ring reference). Writes resolution.csv/json/png to {@code out}.
+     * a quicker study than {@link #run}: no BodyParts3D family. Writes resolution.csv/json/png to {@code out}; a pick
+     * only when the reference is the paper's {@value ResolutionPick#REFERENCE_RINGS} rings and {@code pickFile} is
+     * given.
      */
     public static Map<String, Object> runRings(Setup s, int[] rings, Path out) throws IOException {
+        return runRings(s, rings, out, null, null);
+    }
+
+    /** As {@link #runRings(Setup, int[], Path)}, writing the pick to {@code pickFile} (null: none) with its scene. */
+    public static Map<String, Object> runRings(Setup s, int[] rings, Path out, Path pickFile,
+            Map<String, Object> scene) throws IOException {
         Files.createDirectories(out);
         List<Run> family = new ArrayList<>();
         for (int r : rings) {
             TriangleMesh m = DoubleDomeGenerator.shell(DoubleDomeGenerator.Shape.adult().withRings(r));
             family.add(simulate("double dome", r + " rings", TwoSurfaces.split(m), s));
         }
-        return report(List.of(family), new ResolutionAnalysis.Transfers(), s, out);
+        ResolutionAnalysis.Transfers transfers = new ResolutionAnalysis.Transfers();
+        Map<String, Object> summary = report(List.of(family), transfers, s, out);
+        if (pickFile != null && rings[rings.length - 1] == ResolutionPick.REFERENCE_RINGS) {
+            ResolutionPick.pick(ResolutionAnalysis.rows(family, transfers), rings, s, pickFile, scene, summary,
+                    "./tensim diaphragm resolution-study --study-rings " + java.util.Arrays.stream(rings)
+                            .mapToObj(String::valueOf).collect(java.util.stream.Collectors.joining(",")));
+        }
+        return summary;
     }
 
     /**

@@ -26,6 +26,7 @@ public final class DiaphragmLiveState implements LiveState {
     public static final byte IN_CONTACT = 1;
 
     private final int nodes;
+    private final int body;
     /** How each dome's top (right, left) is read. */
     private final org.tensim.scene.diaphragm.DomeHeights domeHeights;
     private final double[] restTop = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
@@ -55,6 +56,15 @@ public final class DiaphragmLiveState implements LiveState {
      * @param rest  the diaphragm's and cage's positions at rest, m (3 per node; the simulation's {@code x0})
      */
     public DiaphragmLiveState(DiaphragmScene scene, double[] rest) {
+        this(scene, rest, 0);
+    }
+
+    /**
+     * As {@link #DiaphragmLiveState(DiaphragmScene, double[])} for the scene's nodes in body {@code body} of the view
+     * (a mapped scene's carried nodes: the scene's node ids, their positions the mapping's).
+     */
+    public DiaphragmLiveState(DiaphragmScene scene, double[] rest, int body) {
+        this.body = body;
         this.nodes = scene.diaphragmNodes();
         this.domeHeights = MeasuringSites.domeHeights(scene, MeasuringSites.DOME_TOP_RADIUS_M);
         for (int d = 0; d < 2; d++) {
@@ -106,7 +116,7 @@ public final class DiaphragmLiveState implements LiveState {
 
     @Override
     public int body() {
-        return 0;
+        return body;
     }
 
     @Override

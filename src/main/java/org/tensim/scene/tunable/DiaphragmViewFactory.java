@@ -7,14 +7,26 @@ import java.util.List;
 import java.util.Map;
 import org.tensim.io.mesh.MeshFormatException;
 import org.tensim.io.mesh.VertexLabel;
+import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmControls;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.diaphragm.MappedDiaphragm;
+import org.tensim.scene.diaphragm.TendonPlane;
+import org.tensim.scene.diaphragm.TendonRule;
+import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * The diaphragm's scene factory. Besides its spec's scenes it takes labels painted by the user
  * ({@link #paintLabels}): the scenes it makes from then on are built with them, as from a label file.
+ *
+ * <p>With {@link #mapMechanics} its scenes run the mechanics on the generated double dome at fewer rings, the spec's
+ * mesh carried by it and drawn ({@link MappedDiaphragm}, {@link DiaphragmMappedViewScene}); {@link #setFullModel}
+ * switches between that and the spec's mesh running unmapped. A mesh with labels (a file or painted) runs unmapped:
+ * its labels name the fine mesh's vertices, not the coarse model's.
  */
 public final class DiaphragmViewFactory implements SceneFactory {
     private final DiaphragmSpec base;
@@ -26,7 +38,52 @@ public final class DiaphragmViewFactory implements SceneFactory {
     /** Painted labels and the file they were saved to, or null. */
     private volatile Painted painted;
 
+    /** The mechanics' resolution when mapped, or null; whether the full model runs instead. */
+    private volatile Mechanics mechanics;
+    private volatile boolean fullModel;
+    private DiaphragmSetup.Inputs coarseInputs;
+    private int coarseRings;
+
     private record Painted(VertexLabel[] labels, Path file) {
+    }
+
+    /**
+     * The mechanics' resolution of a mapped scene.
+     *
+     * @param rings  rings per face of the generated double dome that runs the mechanics
+     * @param error  its measured error against the drawn resolution (relative RMS, a fraction)
+     * @param source where that was measured (a pick file), for the window
+     */
+    public record Mechanics(int rings, double error, String source) {
+    }
+
+    /**
+     * From now on, the mechanics run at {@code m.rings()} and the spec's mesh is carried by them (unless
+     * {@link #setFullModel} says otherwise).
+     *
+     * @throws IllegalArgumentException with a label file (its labels are the fine mesh's)
+     */
+    public void mapMechanics(Mechanics m) {
+        if (m != null && base.mesh().labels() != null) {
+            throw new IllegalArgumentException("--labels " + base.mesh().labels() + " labels the drawn mesh's vertices:"
+                    + " a mapped model cannot take them; open the full model (--rings " + base.mesh().rings() + ")");
+        }
+        mechanics = m;
+    }
+
+    /** The mapped mechanics set, or null. */
+    public Mechanics mechanics() {
+        return mechanics;
+    }
+
+    /** Whether the next scenes run the full model unmapped (true) or the mapped mechanics when set (false). */
+    public void setFullModel(boolean full) {
+        fullModel = full;
+    }
+
+    /** Whether the full model is chosen over the mapped mechanics. */
+    public boolean fullModel() {
+        return fullModel;
     }
 
     DiaphragmViewFactory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
@@ -66,6 +123,15 @@ public final class DiaphragmViewFactory implements SceneFactory {
         return inputs;
     }
 
+    private synchronized DiaphragmSetup.Inputs coarseInputs(DiaphragmSpec coarse) throws IOException,
+            MeshFormatException {
+        if (coarseInputs == null || coarseRings != coarse.mesh().rings()) {
+            coarseInputs = DiaphragmSetup.read(coarse);
+            coarseRings = coarse.mesh().rings();
+        }
+        return coarseInputs;
+    }
+
     @Override
     public BoundaryConditions.MuscleLoad muscleLoad() {
         return bc.muscleLoad();
@@ -101,13 +167,66 @@ public final class DiaphragmViewFactory implements SceneFactory {
                 in = new DiaphragmSetup.Inputs(in.surfaces(), in.report(), in.boxes(), in.bones(),
                         painting.labels(), in.source());
             }
-            spec = DiaphragmViewScene.withTendonBoundary(spec, in.surfaces().surfaces(), values);
-            DiaphragmScene s = DiaphragmSetup.build(in, spec, spec.newControls()).scene();
-            return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
+            DiaphragmSpec fineSpec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
+            DiaphragmControls controls = fineSpec.newControls();
+            DiaphragmScene s = DiaphragmSetup.build(in, fineSpec, controls).scene();
+            Mechanics m = mechanics;
+            if (m == null || fullModel || painting != null) {
+                return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
+            }
+            DiaphragmSpec coarse = spec.withMesh(spec.mesh().withFile(null, spec.mesh().units()).withRings(m.rings()));
+            DiaphragmSetup.Inputs cin = coarseInputs(coarse);
+            coarse = withTendonBoundary(coarse, cin.surfaces().surfaces(), values);
+            DiaphragmScene c = DiaphragmSetup.build(cin, coarse, controls).scene();
+            return new DiaphragmMappedViewScene(new DiaphragmViewScene(c, tensegrityTendon, b.muscleLoad()),
+                    MappedDiaphragm.of(c, s), m);
         } catch (IOException e) {
             throw new UncheckedIOException(e.getMessage(), e);
         } catch (MeshFormatException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }
+    }
+
+    /**
+     * The spec with the tendon's boundary the values set: the area share of the geodesic rule
+     * ({@link DiaphragmViewScene#TENDON_SHARE}), or the plane of the plane rule moved along its normal by {@link DiaphragmViewScene#TENDON_PLANE} mm from
+     * where the spec's share (or point) places it; unchanged with a label file or without either value.
+     *
+     * @throws IllegalArgumentException when the moved plane leaves no tendon or no muscle on the upper surface
+     */
+    static DiaphragmSpec withTendonBoundary(DiaphragmSpec spec, TwoSurfaces surfaces, Map<String, Double> values) {
+        if (spec.mesh().labels() != null) {
+            return spec;
+        }
+        DiaphragmParameters p = spec.tissue();
+        if (spec.tendonRule() == TendonRule.GEODESIC) {
+            Double share = values.get(DiaphragmViewScene.TENDON_SHARE);
+            return share == null ? spec : spec.withTissue(p.withTendonAreaFraction(share));
+        }
+        Double shiftMm = values.get(DiaphragmViewScene.TENDON_PLANE);
+        if (shiftMm == null || shiftMm == 0) {
+            return spec;
+        }
+        Vec3 n = p.tendonNormal();
+        double from = p.tendonPoint() != null ? n.dot(p.tendonPoint())
+                : TendonPlane.offsetForShare(surfaces, n, p.tendonAreaFraction());
+        double to = from + 1e-3 * shiftMm;
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
+            if (surfaces.isUpper(v)) {
+                double h = n.x() * surfaces.mesh().coord(v, 0) + n.y() * surfaces.mesh().coord(v, 1)
+                        + n.z() * surfaces.mesh().coord(v, 2);
+                lo = Math.min(lo, h);
+                hi = Math.max(hi, h);
+            }
+        }
+        if (!(to <= hi && to > lo)) {
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "tendon plane height %+.1f mm"
+                    + " puts the plane %s the upper surface (it spans %.1f to %+.1f mm from the default plane): no %s"
+                    + " would be left", shiftMm, to > hi ? "above" : "below", 1e3 * (lo - from), 1e3 * (hi - from),
+                    to > hi ? "tendon" : "muscle"));
+        }
+        return spec.withTissue(p.withTendonPlane(n, n.times(to)));
     }
 }

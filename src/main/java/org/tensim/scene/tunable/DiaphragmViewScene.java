@@ -15,9 +15,10 @@ import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.diaphragm.RibCage;
-import org.tensim.scene.diaphragm.TendonPlane;
 import org.tensim.scene.diaphragm.TendonRule;
 import org.tensim.scene.shell.TwoSurfaces;
+import org.tensim.io.mesh.VertexLabel;
+import org.tensim.io.mesh.VertexLabelsFile;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
@@ -157,14 +158,27 @@ public final class DiaphragmViewScene implements ViewScene {
             sim = Simulation.of(RigidLinksAsSprings.of(scene.topology()));
         }
         SystemState s = sim.state();
+        bodies = List.of(new Body("diaphragm apex", sim, scene.allTriangles(), colours(scene, s.nodeCount), Vec3.ZERO,
+                scene.apexNode(), scene.simulatedNodes(), structure(scene)));
+    }
+
+    /** The cage's segments (ribs, sternum, cartilage) as node pairs, drawn as bone lines. */
+    static int[] structure(DiaphragmScene scene) {
         List<RibCage.Segment> segments = scene.cage().segments();
         int[] structure = new int[2 * segments.size()];
         for (int i = 0; i < segments.size(); i++) {
             structure[2 * i] = segments.get(i).a();
             structure[2 * i + 1] = segments.get(i).b();
         }
-        bodies = List.of(new Body("diaphragm apex", sim, scene.allTriangles(), colours(scene, s.nodeCount), Vec3.ZERO,
-                scene.apexNode(), scene.simulatedNodes(), structure));
+        return structure;
+    }
+
+    /** The full model: every drawn node runs the mechanics; no error against itself at the paper's resolution. */
+    @Override
+    public Resolution resolution() {
+        int nd = scene.diaphragmNodes();
+        boolean paper = scene.spec().mesh().generated() && scene.spec().mesh().rings() == DiaphragmSpec.PAPER_RINGS;
+        return new Resolution(nd, nd, paper ? 0 : Double.NaN, "full model, " + nd + " nodes, unmapped");
     }
 
     /** Colour of the muscle. */
@@ -214,49 +228,6 @@ public final class DiaphragmViewScene implements ViewScene {
      */
     public static DiaphragmViewFactory factory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
         return new DiaphragmViewFactory(base, read);
-    }
-
-    /**
-     * The spec with the tendon's boundary the values set: the area share of the geodesic rule
-     * ({@link #TENDON_SHARE}), or the plane of the plane rule moved along its normal by {@link #TENDON_PLANE} mm from
-     * where the spec's share (or point) places it; unchanged with a label file or without either value.
-     *
-     * @throws IllegalArgumentException when the moved plane leaves no tendon or no muscle on the upper surface
-     */
-    static DiaphragmSpec withTendonBoundary(DiaphragmSpec spec, TwoSurfaces surfaces, Map<String, Double> values) {
-        if (spec.mesh().labels() != null) {
-            return spec;
-        }
-        DiaphragmParameters p = spec.tissue();
-        if (spec.tendonRule() == TendonRule.GEODESIC) {
-            Double share = values.get(TENDON_SHARE);
-            return share == null ? spec : spec.withTissue(p.withTendonAreaFraction(share));
-        }
-        Double shiftMm = values.get(TENDON_PLANE);
-        if (shiftMm == null || shiftMm == 0) {
-            return spec;
-        }
-        Vec3 n = p.tendonNormal();
-        double from = p.tendonPoint() != null ? n.dot(p.tendonPoint())
-                : TendonPlane.offsetForShare(surfaces, n, p.tendonAreaFraction());
-        double to = from + 1e-3 * shiftMm;
-        double lo = Double.POSITIVE_INFINITY;
-        double hi = Double.NEGATIVE_INFINITY;
-        for (int v = 0; v < surfaces.mesh().vertexCount(); v++) {
-            if (surfaces.isUpper(v)) {
-                double h = n.x() * surfaces.mesh().coord(v, 0) + n.y() * surfaces.mesh().coord(v, 1)
-                        + n.z() * surfaces.mesh().coord(v, 2);
-                lo = Math.min(lo, h);
-                hi = Math.max(hi, h);
-            }
-        }
-        if (!(to <= hi && to > lo)) {
-            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "tendon plane height %+.1f mm"
-                    + " puts the plane %s the upper surface (it spans %.1f to %+.1f mm from the default plane): no %s"
-                    + " would be left", shiftMm, to > hi ? "above" : "below", 1e3 * (lo - from), 1e3 * (hi - from),
-                    to > hi ? "tendon" : "muscle"));
-        }
-        return spec.withTissue(p.withTendonPlane(n, n.times(to)));
     }
 
     /**

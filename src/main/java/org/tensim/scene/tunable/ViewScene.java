@@ -93,4 +93,17 @@ public interface ViewScene {
     default Vec3 viewFrom() {
         return new Vec3(0.2, 0.3, 0.933);
     }
+
+    /**
+     * What runs the mechanics against what is drawn: the nodes drawn and measured, the nodes that run the mechanics
+     * (fewer in a mapped scene, whose drawn mesh is carried by a coarse model), the measured error of that choice
+     * against the drawn resolution (relative RMS, a fraction; NaN when not measured) and one line saying so.
+     */
+    record Resolution(int drawnNodes, int mechanicalNodes, double error, String describe) {
+    }
+
+    /** The scene's {@link Resolution}, or null when the question does not arise (the cube, a scene file). */
+    default Resolution resolution() {
+        return null;
+    }
 }

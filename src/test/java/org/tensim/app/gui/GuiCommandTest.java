@@ -127,22 +127,38 @@ class GuiCommandTest {
         assertTrue(m.containsKey("error_estimate") && m.containsKey("edt_longest_delay_ms"), m.toString());
     }
 
-    /** A pick given with {@code --pick}: its rings, and its file in the title and the summary. */
+    /**
+     * A pick given with {@code --pick}: the mechanics at its rings carry the 43-ring mesh, drawn; the title and the
+     * summary name the pick, its error and its file; a pick of another scene is refused.
+     */
     @Test
     @Tag("gui")
-    void aPickNamedOpensAtItsRingsAndTheWindowAndSummaryNameIt() throws Exception {
+    void aPickNamedRunsTheMechanicsAtItsRingsCarryingThePapersMesh() throws Exception {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
         Path pick = dir.resolve("picked.json");
         org.tensim.io.Json.write(pick, java.util.Map.of("format", "tensim-resolution-pick", "rings", 6,
-                "relative_rms_error", 0.04, "tolerance", 0.1, "reason", "the coarsest within 10 %"));
+                "relative_rms_error", 0.04, "tolerance", 0.1, "reason", "the coarsest within 10 %", "scene",
+                org.tensim.experiment.diaphragm.ResolutionPick.sceneOf(
+                        org.tensim.scene.diaphragm.DiaphragmSpec.defaults())));
         java.util.Map<String, Object> m = scriptedSummary("gui", "--pick", pick.toString(), "--config-dir",
                 dir.toString(), "--fresh", "--run-for", "1");
-        assertEquals(pick.toString(), m.get("resolution_pick_file"));
-        assertTrue(String.valueOf(m.get("window_title")).contains(pick.toString()), m.toString());
+        assertEquals(pick.toString(), ((java.util.Map<?, ?>) m.get("resolution_pick")).get("source"));
+        assertEquals(0.04, ((Number) m.get("resolution_error")).doubleValue(), 1e-12);
+        assertEquals(11_354, ((Number) m.get("drawn_nodes")).intValue(), "the paper's mesh is drawn");
         java.util.Map<String, Object> six = scriptedSummary("gui", "--rings", "6", "--config-dir", dir.toString(),
                 "--fresh", "--run-for", "1");
-        assertEquals(six.get("nodes"), m.get("nodes"), "the pick's 6 rings, as --rings 6");
-        assertEquals(null, six.get("resolution_pick_file"));
+        assertEquals(six.get("drawn_nodes"), m.get("mechanical_nodes"), "the pick's 6 rings run, as --rings 6");
+        assertEquals(six.get("drawn_nodes"), six.get("mechanical_nodes"), "--rings 6 runs unmapped");
+        assertTrue(String.valueOf(m.get("window_title")).contains(pick.toString()), m.toString());
+        assertEquals(null, six.get("resolution_pick"));
+
+        Path other = dir.resolve("other.json");
+        org.tensim.io.Json.write(other, java.util.Map.of("format", "tensim-resolution-pick", "rings", 6,
+                "relative_rms_error", 0.04, "tolerance", 0.1, "reason", "r", "scene", java.util.Map.of("mesh",
+                        "generated double dome", "muscle_load", "pressure")));
+        StringWriter err = new StringWriter();
+        assertEquals(1, run(err, "gui", "--pick", other.toString(), "--config-dir", dir.toString(), "--fresh"));
+        assertTrue(err.toString().contains("no measured resolution study matches"), err.toString());
     }
 
     @Test
