@@ -6,6 +6,8 @@ import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import org.tensim.scene.diaphragm.BoundaryConditions;
 import org.tensim.scene.tunable.SceneFactory;
+import org.tensim.tuning.LastUsedParameters;
+import org.tensim.tuning.SceneFileGui;
 import org.tensim.scene.tunable.ViewScene;
 import org.tensim.cli.ThreadsOption;
 import org.tensim.solver.integrators.Integrators;

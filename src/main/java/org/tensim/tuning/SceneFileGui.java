@@ -1,4 +1,4 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -14,9 +14,9 @@ import picocli.CommandLine.Parameters;
  * (docs/scenes.md) with its own integrator and step, its named parameters as the controls
  * ({@link FileViewScene}). Nothing last-used is restored over the file's values, nor saved.
  */
-final class SceneFileGui {
+public final class SceneFileGui {
     /** The built-in scenes' options, which a scene file leaves out. */
-    static final List<String> BUILT_IN = List.of("--scene", "--mesh", "--pick", "--preset", "--thorax",
+    public static final List<String> BUILT_IN = List.of("--scene", "--mesh", "--pick", "--preset", "--thorax",
             "--muscle-load");
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
@@ -30,7 +30,7 @@ final class SceneFileGui {
     List<String> sets = new ArrayList<>();
 
     /** Whether a scene file was given. */
-    boolean given() {
+    public boolean given() {
         return file != null;
     }
 
@@ -38,7 +38,7 @@ final class SceneFileGui {
      * The factory of the scene file, loaded (and so checked) before any window; refuses the built-in scenes'
      * options beside it, and --set without it.
      */
-    SceneFactory factory(CommandSpec spec) {
+    public SceneFactory factory(CommandSpec spec) {
         for (String o : BUILT_IN) {
             if (spec.commandLine().getParseResult().hasMatchedOption(o)) {
                 throw new IllegalArgumentException(o + " chooses a built-in scene: leave it out with a scene file ("
@@ -49,7 +49,7 @@ final class SceneFileGui {
     }
 
     /** Refuses --set without a scene file. */
-    void refuseSetsWithoutFile() {
+    public void refuseSetsWithoutFile() {
         if (file == null && !sets.isEmpty()) {
             throw new IllegalArgumentException("--set " + sets.get(0) + " sets a value of a scene file: give the"
                     + " file first (tensim gui FILE --set ...)");

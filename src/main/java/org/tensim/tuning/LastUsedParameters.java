@@ -1,18 +1,18 @@
-package org.tensim.app.gui;
+package org.tensim.tuning;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import org.tensim.scene.diaphragm.BoundaryConditions;
-import org.tensim.tuning.PresetFile;
-import org.tensim.tuning.Settings;
-import org.tensim.tuning.Tuning;
+
+
+
 
 /**
  * The last-used parameters of a built-in scene, restored when the window opens ({@code tensim gui}; a scene file
  * runs with its own values and restores nothing): a file that cannot be used is moved aside with a note.
  */
-final class LastUsedParameters {
+public final class LastUsedParameters {
     private LastUsedParameters() {
     }
 
@@ -21,7 +21,7 @@ final class LastUsedParameters {
      * {@code keepLoad} (a muscle load named on the command line) parameters
      * tuned with another muscle load are left alone, with a note: they would replace the load asked for.
      */
-    static String restore(Tuning tuning, Path file, boolean keepLoad) {
+    public static String restore(Tuning tuning, Path file, boolean keepLoad) {
         if (!Files.exists(file)) {
             return null;
         }
@@ -52,7 +52,7 @@ final class LastUsedParameters {
      * the labels, reopen with them): a tendon control this window does not have is left out rather than making the
      * whole file unusable. Anything else wrong is refused as {@link PresetFile#read} refuses it.
      */
-    static Settings readLastUsed(Path file, Tuning tuning) throws PresetFile.PresetException {
+    public static Settings readLastUsed(Path file, Tuning tuning) throws PresetFile.PresetException {
         try {
             return PresetFile.read(file, tuning);
         } catch (PresetFile.PresetException first) {
