@@ -77,6 +77,8 @@ public final class SystemState {
     public final ContactForces contacts;
     /** Transverse shear elements of the two-surface shell ({@link ShearElements}; count 0 when none). */
     public final ShearElements shears;
+    /** Volume elements of a volume material ({@link VolumeElements}; count 0 when none). */
+    public final VolumeElements volumes;
 
     /** Nodes that carry external forces, and the laws (parallel arrays). */
     public final int[] forceNode;
@@ -185,6 +187,7 @@ public final class SystemState {
         fibres = new FibreTension(t.fibres());
         contacts = new ContactForces(t.contactBodies(), t.contacts());
         shears = new ShearElements(t.shears(), x0);
+        volumes = new VolumeElements(t.volumeElements());
 
         List<RigidLink> l = t.rigidLinks();
         linkA = new int[l.size()];
@@ -270,7 +273,7 @@ public final class SystemState {
 
     /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
     public boolean velocityDependentForces() {
-        return axialDamping || triangleDamping || shears.damped() || viscousDamping != 0;
+        return axialDamping || triangleDamping || shears.damped() || volumes.damped() || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -360,7 +363,9 @@ public final class SystemState {
     /** The stiffness of the membrane triangles and shear elements linearised at the rest positions (new objects). */
     public ExtraStiffness elementStiffness() {
         ExtraStiffness tri = triangleCount() == 0 ? ExtraStiffness.NONE : new TriangleTangent(this);
-        return ExtraStiffness.sum(tri, shears.count() == 0 ? ExtraStiffness.NONE : new ShearStiffness(shears, x0));
+        ExtraStiffness vol = volumes.count() == 0 ? ExtraStiffness.NONE : volumes.restStiffness();
+        return ExtraStiffness.sum(ExtraStiffness.sum(tri, vol),
+                shears.count() == 0 ? ExtraStiffness.NONE : new ShearStiffness(shears, x0));
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */
