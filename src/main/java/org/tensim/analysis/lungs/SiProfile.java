@@ -17,7 +17,7 @@ package org.tensim.analysis.lungs;
  * </ul>
  * The basal bin is the lowest fifth of the height, not the lowest fifth of the points by count: with these bins the
  * five DIR-Lab cases give basal 7.56-14.74 mm and the ratios quoted in docs/lungs.md; the lowest 60 of 300 landmarks
- * give 7.25-14.12 mm ({@link #lowestFifthByCountM}, reported beside it).
+ * give 7.25-14.17 mm ({@link #lowestFifthByCountM}, reported beside it).
  *
  * @param points     number of points
  * @param binCount   points in each bin, apex to base

@@ -45,14 +45,18 @@ public final class LungVolumes {
 
     /**
      * Builds the right lung, then the left, into {@code t}, from the thorax's lung parts (loaded with the
-     * {@link Group#LUNG} group).
+     * {@link Group#LUNG} group): those of the side, or whose file is named {@code lung-right-*} or
+     * {@code lung-left-*}.
      *
      * @throws IllegalArgumentException when the thorax has no lung part on a side
      */
     public static List<Lung> build(Topology t, Thorax thorax, VolumeParameters p) {
         List<Lung> out = new ArrayList<>();
         for (Side side : new Side[] {Side.RIGHT, Side.LEFT}) {
-            List<ThoraxPart> lobes = thorax.group(Group.LUNG, side);
+            // The shared parts.json gives the organs no side: the file's name does (lung-right-*, lung-left-*).
+            String key = "lung-" + side.name().toLowerCase(java.util.Locale.ROOT) + "-";
+            List<ThoraxPart> lobes = thorax.group(Group.LUNG).stream().filter(q -> q.side() == side
+                    || q.file().getFileName().toString().toLowerCase(java.util.Locale.ROOT).startsWith(key)).toList();
             if (lobes.isEmpty()) {
                 throw new IllegalArgumentException(thorax.partsJson() + " lists no " + side.name().toLowerCase(
                         java.util.Locale.ROOT) + " lung part (group organ, file lung-" + side.name().toLowerCase(

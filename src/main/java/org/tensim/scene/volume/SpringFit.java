@@ -6,7 +6,8 @@ import java.util.Locale;
  * Which elastic constants a lattice of central springs reproduces. Central springs between the nodes of a cubic
  * lattice obey Cauchy's relation {@code C12 = C44}: an isotropic spring lattice has Poisson's ratio 1/4 whatever its
  * stiffnesses (Golec et al. 2020, The Visual Computer 36: 809-825), so a requested nu other than 1/4 can only be
- * met in part by springs alone; the volumetric fit adds a volume term a cell. See {@link LatticeMaterial} for the formulas and docs/volume.md for what each gives.
+ * met in part by springs alone; the volumetric fit adds a volume term a cell. See {@link LatticeMaterial} for the
+ * formulas and docs/volume.md for what each gives.
  */
 public enum SpringFit {
     /**

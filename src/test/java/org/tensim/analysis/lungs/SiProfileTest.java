@@ -92,7 +92,8 @@ class SiProfileTest {
         SiProfile q = SiProfile.of(x, d, UP, new int[] {0, 1, 2, 3, 4, 5, 6, 7});
         assertEquals(8, q.points());
         assertEquals(0.001, q.basalSiM(), 1e-15);
-        // Heights 0, 0.13, 0.43, 0.67, 0.73, 0.83, 0.93, 1 of the subset's own: its second bin is empty, its mean and ratio NaN.
+        // Heights 0, 0.13, 0.43, 0.67, 0.73, 0.83, 0.93, 1 of the subset's own: its second bin is empty, its mean
+        // and ratio NaN.
         assertArrayEquals(new int[] {2, 0, 1, 2, 3}, q.binCount());
         assertArrayEquals(new double[] {1, Double.NaN, 1, 1, 1}, q.ratio(), 1e-12);
     }

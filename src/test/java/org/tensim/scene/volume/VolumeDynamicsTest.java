@@ -106,7 +106,8 @@ class VolumeDynamicsTest {
         double tip = lowest(staticSurface);
         double reached = lowest(surface);
         System.out.printf("%s%s: lowest surface sag at rest %.6g m, statics %.6g m (%d steps of %.3g ms)%n",
-                integrator, tets ? " (tets)" : fit == SpringFit.VOLUMETRIC ? " (volumetric)" : "", reached, tip, sim.steps(), dt * 1e3);
+                integrator, tets ? " (tets)" : fit == SpringFit.VOLUMETRIC ? " (volumetric)" : "", reached, tip,
+                sim.steps(), dt * 1e3);
         assertTrue(tip < -1e-4, "the beam sags: " + tip);
         assertEquals(tip, reached, 0.002 * Math.abs(tip), integrator + ": the surface's lowest sag at rest, m");
     }
