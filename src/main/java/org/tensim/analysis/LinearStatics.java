@@ -19,7 +19,8 @@ import org.tensim.solver.TriangleTangent;
  * {@code K_ij = -k n n^T} for a spring of stiffness k along the unit vector n between its nodes
  * (no prestress: every spring at its rest length), and the membrane triangles' linear
  * constant-strain stiffness ({@link TriangleTangent} at rest) and the transverse shear elements'
- * {@code k grad g grad g^T} ({@link ShearStiffness} at rest). Fixed degrees of freedom have u = 0.
+ * {@code k grad g grad g^T} ({@link ShearStiffness} at rest) and the volume elements' {@code K V g g^T}
+ * ({@code VolumeElements#restStiffness}). Fixed degrees of freedom have u = 0.
  * Rigid links (disjoint) are kept to first order, {@code n . (u_b - u_a) = 0}, by tying the
  * component of u_b along the link's direction n to u_a's: CG runs on {@code T^T K T} with
  * {@code u = T z}.
@@ -76,6 +77,8 @@ public final class LinearStatics {
         }
         ShearStiffness shears = new ShearStiffness(compiled.shears, compiled.x0);
         shears.addDiagonal(diag, 1);
+        compiled.volumes.addRestDiagonal(diag);
+        org.tensim.solver.stability.ExtraStiffness volumes = compiled.volumes.restStiffness();
         for (int i = 0; i < n; i++) {
             if (fixed[i] || diag[i] == 0) {
                 diag[i] = 1;
@@ -119,6 +122,7 @@ public final class LinearStatics {
                     triangles.multiplyAdd(x, y, null);
                 }
                 shears.multiplyAdd(x, y, null, 1);
+                volumes.multiplyAdd(x, y);
                 ties.reduce(y, z);
                 for (int i = 0; i < n; i++) {
                     if (fixed[i]) {

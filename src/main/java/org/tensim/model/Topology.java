@@ -25,6 +25,7 @@ public final class Topology {
     private final List<ActiveFibre> fibres = new ArrayList<>();
     private final List<TransverseShear> shears = new ArrayList<>();
     private final List<NodalForce> forces = new ArrayList<>();
+    private final List<VolumeElement> volumes = new ArrayList<>();
     private final List<ContactBody> contactBodies = new ArrayList<>();
     private final List<ContactPair> contacts = new ArrayList<>();
     private Vec3 gravity = Vec3.ZERO;
@@ -170,6 +171,29 @@ public final class Topology {
         return e;
     }
 
+    /**
+     * Adds a penalty on the volume change of a tet (4 nodes) or a hexahedral cell (8, in the corner order of
+     * {@link VolumeElement}), at rest in the nodes' current positions; see {@link VolumeElement}.
+     *
+     * @param modulusPa K, Pa (&gt; 0)
+     * @param dampingS  Kelvin-Voigt damping time beta, s (&gt;= 0; 0 undamped)
+     */
+    public VolumeElement addVolumeElement(int[] nodeIds, double modulusPa, double dampingS) {
+        Vec3[] rest = new Vec3[nodeIds.length];
+        for (int a = 0; a < nodeIds.length; a++) {
+            Check.index("volume element node", nodeIds[a], nodes.size());
+            rest[a] = nodes.get(nodeIds[a]).position();
+        }
+        VolumeElement e = new VolumeElement(nodeIds, rest, modulusPa, dampingS);
+        volumes.add(e);
+        return e;
+    }
+
+    /** The volume elements, in the order added. */
+    public List<VolumeElement> volumeElements() {
+        return Collections.unmodifiableList(volumes);
+    }
+
     /** Adds a rigid link whose length is the nodes' current distance (must be > 0). */
     public RigidLink addRigidLink(Node a, Node b) {
         own(a);
@@ -310,7 +334,8 @@ public final class Topology {
     @Override
     public String toString() {
         return "Topology[" + nodes.size() + " nodes, " + springs.size() + " springs, " + triangles.size()
-                + " triangles, " + shears.size() + " shear elements, " + links.size()
+                + " triangles, " + shears.size() + " shear elements, " + volumes.size() + " volume elements, "
+                + links.size()
                 + " rigid links, " + forces.size() + " forces]";
     }
 }

@@ -4,8 +4,9 @@ package org.tensim.solver;
  * The right-hand side of m a = f for a {@link SystemState}: gravity, global
  * viscous damping, external nodal forces, linear springs with axial damping, and the
  * membrane triangles ({@link TriangleKernels}, undamped: the shell's damping is the global one) and the
- * active fibre tensions ({@link FibreTension}), the transverse shear elements ({@link ShearElements}) and the
- * frictionless contacts with moving rigid bodies ({@link ContactForces}).
+ * active fibre tensions ({@link FibreTension}), the transverse shear elements ({@link ShearElements}), the
+ * frictionless contacts with moving rigid bodies ({@link ContactForces}) and the volume elements
+ * ({@link VolumeElements}).
  * Forces are written for every node; integrators multiply by the inverse mass,
  * which is zero for fixed and driven nodes.
  *
@@ -123,6 +124,8 @@ public final class ForceModel {
         if (trianglePass == null || !trianglePass.addsShearForces()) {
             s.shears.forces(px, s.shears.damped() ? pv : null, f);
         }
+        // The volume material's volumetric term (none unless the scene has volume elements), serial.
+        s.volumes.forces(px, s.volumes.damped() ? pv : null, f);
     }
 
     /**
@@ -149,9 +152,9 @@ public final class ForceModel {
         return TriangleKernels.energy(s.triP3, s.triQ3, s.triRest, s.triMu, s.triLambda, s.triangleCount(), px);
     }
 
-    /** Elastic energy of springs, membrane triangles and transverse shear elements at positions px, J. */
+    /** Elastic energy of springs, membrane triangles, transverse shear and volume elements at positions px, J. */
     public double elasticEnergy(double[] px) {
-        return springEnergy(px) + triangleEnergy(px) + s.shears.energy(px);
+        return springEnergy(px) + triangleEnergy(px) + s.shears.energy(px) + s.volumes.energy(px);
     }
 
     /**

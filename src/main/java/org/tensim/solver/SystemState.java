@@ -77,6 +77,7 @@ public final class SystemState {
     public final ContactForces contacts;
     /** Transverse shear elements of the two-surface shell ({@link ShearElements}; count 0 when none). */
     public final ShearElements shears;
+    /** Volume elements ({@link VolumeElements}; count 0 when none). */ public final VolumeElements volumes;
 
     /** Nodes that carry external forces, and the laws (parallel arrays). */
     public final int[] forceNode;
@@ -185,6 +186,7 @@ public final class SystemState {
         fibres = new FibreTension(t.fibres());
         contacts = new ContactForces(t.contactBodies(), t.contacts());
         shears = new ShearElements(t.shears(), x0);
+        volumes = new VolumeElements(t.volumeElements());
 
         List<RigidLink> l = t.rigidLinks();
         linkA = new int[l.size()];
@@ -270,7 +272,7 @@ public final class SystemState {
 
     /** Whether any force depends on the velocities (spring axial damping or global viscous damping). */
     public boolean velocityDependentForces() {
-        return axialDamping || triangleDamping || shears.damped() || viscousDamping != 0;
+        return axialDamping || triangleDamping || shears.damped() || volumes.damped() || viscousDamping != 0;
     }
 
     /** Global viscous damping, N s/m per node. */
@@ -327,19 +329,16 @@ public final class SystemState {
     }
 
     /**
-     * Counts parameter changes made through the setters of this state (stiffness,
-     * damping, gravity): an integrator that reuses a force from the previous step
-     * knows by it that the forces may have changed.
+     * Counts parameter changes made through the setters of this state (stiffness, damping, gravity): an integrator
+     * that reuses a force from the previous step knows by it that the forces may have changed.
      */
     public long parameterVersion() {
         return parameterVersion;
     }
 
     /**
-     * The critical time step estimate of this state, linearised at the rest
-     * positions (Gershgorin bound and power iteration on M^-1 K; see
-     * {@link CriticalTimeStep}). Computed on first use and kept until a spring
-     * stiffness changes.
+     * The critical time step estimate of this state, linearised at the rest positions (Gershgorin bound and power
+     * iteration on M^-1 K; see {@link CriticalTimeStep}). Computed on first use and kept until a stiffness changes.
      */
     public CriticalTimeStep criticalTimeStep() {
         if (criticalTimeStep == null) {
@@ -357,10 +356,12 @@ public final class SystemState {
         return CriticalTimeStep.estimate(nodeCount, springA, springB, springK, mass, invMass, x0, all);
     }
 
-    /** The stiffness of the membrane triangles and shear elements linearised at the rest positions (new objects). */
+    /** The stiffness of the triangles, shear and volume elements linearised at the rest positions (new objects). */
     public ExtraStiffness elementStiffness() {
         ExtraStiffness tri = triangleCount() == 0 ? ExtraStiffness.NONE : new TriangleTangent(this);
-        return ExtraStiffness.sum(tri, shears.count() == 0 ? ExtraStiffness.NONE : new ShearStiffness(shears, x0));
+        ExtraStiffness vol = volumes.count() == 0 ? ExtraStiffness.NONE : volumes.restStiffness();
+        return ExtraStiffness.sum(ExtraStiffness.sum(tri, vol),
+                shears.count() == 0 ? ExtraStiffness.NONE : new ShearStiffness(shears, x0));
     }
 
     /** Total momentum of the free nodes, kg m/s, into out[0..2]. */

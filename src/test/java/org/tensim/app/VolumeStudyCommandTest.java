@@ -62,7 +62,7 @@ class VolumeStudyCommandTest {
         assertEquals("2", r[0], r[1] + r[2]);
         assertTrue(r[2].contains("each twice the last") && !r[2].contains("\tat "), r[2]);
         String[] f = run("volume-study", "--fits", "cubic", "--out", dir.toString());
-        assertTrue(f[2].contains("spring fit must be 'isotropic' or 'axial', got 'cubic'"), f[2]);
+        assertTrue(f[2].contains("spring fit must be 'isotropic', 'axial' or 'volumetric', got 'cubic'"), f[2]);
         String[] m = run("volume-study", "--mesh", dir.resolve("none.obj").toString(), "--out", dir.toString());
         assertTrue(!"0".equals(m[0]) && m[2].contains("none.obj") && !m[2].contains("\tat "), m[2]);
     }

@@ -10,6 +10,8 @@ public final class SharedData {
     /** The BodyParts3D diaphragm registered to {@link #THORAX}, mm. */
     public static final Path BODYPARTS3D_DIAPHRAGM = ProjectFolder.resolve("..", "shared", "meshes", "bodyparts3d",
             "diaphragm-FJ3131-dec28k-mm.obj");
+    /** DIR-Lab's 4D-CT lung landmarks, cases 1-5 (its ATTRIBUTION.md gives units, axes and sources). */
+    public static final Path LUNG_LANDMARKS = ProjectFolder.resolve("..", "shared", "data", "4dct-lung-landmarks");
 
     private SharedData() {
     }

@@ -31,8 +31,15 @@ import org.tensim.model.Check;
  * mass-spring system for simulation", WSCG) set a cell's springs from a tensile test along its axes; the
  * {@link SpringFit#AXIAL} fit matches that test. Homogeneous strain is reproduced exactly, whatever h.
  *
+ * <p>The {@link SpringFit#VOLUMETRIC} fit adds to each cell a penalty on its volume change
+ * ({@link org.tensim.model.VolumeElement}, modulus {@link #volumetricModulusPa}), which adds to Lamé's lambda what
+ * central springs cannot: the springs are the isotropic lattice of shear modulus mu ({@code C11 = 3 mu},
+ * {@code C12 = C44 = mu}) and the cell's term {@code K = lambda - mu}, so that the cell holds the isotropic material
+ * of the requested E and nu exactly ({@code C11 = lambda + 2 mu}, {@code C12 = lambda}, {@code C44 = mu}).
+ *
  * @param youngPa E, Pa (&gt; 0)
- * @param poisson nu requested (in (-1, 1/2) for the isotropic fit, which gives 1/4 anyway; in (0, 1/2) for the axial)
+ * @param poisson nu requested (in (-1, 1/2) for the isotropic fit, which gives 1/4 anyway; in (0, 1/2) for the
+ *                axial; in [1/4, 1/2) for the volumetric)
  * @param fit     which constants are reproduced
  */
 public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
@@ -40,13 +47,21 @@ public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
         Check.positive("volume Young's modulus", "Pa", youngPa);
         Check.finite("volume Poisson ratio", "", poisson);
         if (fit == null) {
-            throw new IllegalArgumentException("volume spring fit must be given: isotropic or axial");
+            throw new IllegalArgumentException("volume spring fit must be given: isotropic, axial or volumetric");
         }
-        double lo = fit == SpringFit.AXIAL ? 0 : -1;
-        if (!(poisson > lo && poisson < 0.5)) {
-            throw new IllegalArgumentException("volume Poisson ratio must be in (" + (int) lo + ", 0.5) for the "
-                    + fit.key() + " spring fit, got " + poisson + (fit == SpringFit.AXIAL
-                    ? " (the axial fit's shear modulus is Lamé's lambda, zero at nu = 0)" : ""));
+        if (fit == SpringFit.VOLUMETRIC) {
+            if (!(poisson >= 0.25 && poisson < 0.5)) {
+                throw new IllegalArgumentException("volume Poisson ratio must be in [0.25, 0.5) for the volumetric"
+                        + " spring fit, got " + poisson + " (it adds a volume term to springs whose own ratio is"
+                        + " 1/4, and cannot take one away)");
+            }
+        } else {
+            double lo = fit == SpringFit.AXIAL ? 0 : -1;
+            if (!(poisson > lo && poisson < 0.5)) {
+                throw new IllegalArgumentException("volume Poisson ratio must be in (" + (int) lo + ", 0.5) for the "
+                        + fit.key() + " spring fit, got " + poisson + (fit == SpringFit.AXIAL
+                        ? " (the axial fit's shear modulus is Lamé's lambda, zero at nu = 0)" : ""));
+            }
         }
     }
 
@@ -60,19 +75,42 @@ public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
         return youngPa / (2 * (1 + poisson));
     }
 
-    /** The lattice's C11, Pa. */
+    /** The cell's C11 (springs and volume term), Pa. */
     public double c11Pa() {
         return fit == SpringFit.ISOTROPIC ? 1.2 * youngPa : lameLambdaPa() + 2 * lameMuPa();
     }
 
-    /** The lattice's C12, Pa (equal to its C44, Cauchy's relation). */
+    /** The cell's C12 (springs and volume term), Pa. */
     public double c12Pa() {
         return fit == SpringFit.ISOTROPIC ? 0.4 * youngPa : lameLambdaPa();
     }
 
-    /** The lattice's shear modulus C44 (= C12), Pa. */
+    /** The cell's C44, Pa: equal to C12 for springs alone (Cauchy's relation), mu with the volume term. */
+    public double c44Pa() {
+        return fit == SpringFit.VOLUMETRIC ? lameMuPa() : c12Pa();
+    }
+
+    /** The springs' share of C11, Pa: all of it but for the volumetric fit's {@code 3 mu}. */
+    public double springC11Pa() {
+        return fit == SpringFit.VOLUMETRIC ? 3 * lameMuPa() : c11Pa();
+    }
+
+    /** The springs' share of C12 (= their C44), Pa: all of it but for the volumetric fit's {@code mu}. */
+    public double springC12Pa() {
+        return fit == SpringFit.VOLUMETRIC ? lameMuPa() : c12Pa();
+    }
+
+    /**
+     * The modulus K of the volume term a full cell carries ({@link org.tensim.model.VolumeElement}), Pa:
+     * {@code lambda - mu} for the volumetric fit (0 at nu = 1/4), 0 for the others (no term).
+     */
+    public double volumetricModulusPa() {
+        return fit == SpringFit.VOLUMETRIC ? lameLambdaPa() - lameMuPa() : 0;
+    }
+
+    /** The lattice's shear modulus C44, Pa. */
     public double shearModulusPa() {
-        return c12Pa();
+        return c44Pa();
     }
 
     /** The lattice's bulk modulus (C11 + 2 C12) / 3, Pa. */
@@ -80,7 +118,10 @@ public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
         return (c11Pa() + 2 * c12Pa()) / 3;
     }
 
-    /** Poisson's ratio of the lattice under uniaxial stress along an axis, C12 / (C11 + C12): 1/4 when isotropic. */
+    /**
+     * Poisson's ratio of the lattice under uniaxial stress along an axis, C12 / (C11 + C12): 1/4 for the isotropic
+     * fit, the requested nu for the axial and volumetric ones.
+     */
     public double modelPoisson() {
         return c12Pa() / (c11Pa() + c12Pa());
     }
@@ -88,7 +129,7 @@ public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
     /**
      * Young's modulus of the lattice along the unit direction (nx, ny, nz), Pa: {@code 1 / E(n) = S11 - 2 (S11 - S12
      * - S44 / 2) (nx^2 ny^2 + ny^2 nz^2 + nz^2 nx^2)} for a cubic material, with its compliances S; E along the axes,
-     * and along every direction for the isotropic fit.
+     * and along every direction for the isotropic and volumetric fits.
      */
     public double youngAlongPa(double nx, double ny, double nz) {
         double n = Math.sqrt(nx * nx + ny * ny + nz * nz);
@@ -100,27 +141,27 @@ public record LatticeMaterial(double youngPa, double poisson, SpringFit fit) {
         double det = (c11 - c12) * (c11 + 2 * c12);
         double s11 = (c11 + c12) / det;
         double s12 = -c12 / det;
-        double s44 = 1 / c12;
+        double s44 = 1 / c44Pa();
         return 1 / (s11 - 2 * (s11 - s12 - s44 / 2) * (a * a * b * b + b * b * c * c + c * c * a * a));
     }
 
-    /** Share s of C12 carried by the face diagonals, {@code min(1, (C11 - C12) / (2 C12))} (dimensionless). */
+    /** Share s of the springs' C12 carried by the face diagonals, {@code min(1, (C11 - C12) / (2 C12))} of theirs. */
     public double faceShare() {
-        return Math.min(1, (c11Pa() - c12Pa()) / (2 * c12Pa()));
+        return Math.min(1, (springC11Pa() - springC12Pa()) / (2 * springC12Pa()));
     }
 
     /** One cell's share of each of its 12 edges, N/m, for cell side {@code cellM} (m). */
     public double edgeStiffness(double cellM) {
-        return (c11Pa() - c12Pa() - faceShare() * c12Pa()) * cellM / 4;
+        return (springC11Pa() - springC12Pa() - faceShare() * springC12Pa()) * cellM / 4;
     }
 
     /** One cell's share of each of its 12 face diagonals, N/m. */
     public double faceDiagonalStiffness(double cellM) {
-        return faceShare() * c12Pa() * cellM / 2;
+        return faceShare() * springC12Pa() * cellM / 2;
     }
 
     /** The stiffness of each of a cell's 4 body diagonals, N/m (0 for the isotropic fit: none are added). */
     public double bodyDiagonalStiffness(double cellM) {
-        return 3 * (1 - faceShare()) * c12Pa() * cellM / 4;
+        return 3 * (1 - faceShare()) * springC12Pa() * cellM / 4;
     }
 }

@@ -19,7 +19,8 @@ final class TetVolume {
 
     static VolumeBody build(Topology t, TetMesh mesh, VolumeParameters p, String name) {
         if (p.fit() != SpringFit.ISOTROPIC) {
-            throw new IllegalArgumentException(name + ": the " + p.fit().key() + " spring fit needs a lattice's axes;"
+            throw new IllegalArgumentException(name + ": the " + p.fit().key() + " spring fit needs "
+                    + (p.fit() == SpringFit.AXIAL ? "a lattice's axes" : "a lattice's cells") + ";"
                     + " expected the isotropic fit for a tetrahedral mesh (its springs give nu = 1/4, docs/volume.md)");
         }
         int n = mesh.nodeCount();

@@ -26,7 +26,8 @@ import org.tensim.model.Topology;
  * A surface whose winding number is ambiguous (an open surface) or that encloses nothing is refused with a message
  * naming which; a few boundary edges (small holes) are tolerated and reported.
  *
- * <p>Only springs are added, so a volume runs in every integrator (their Jacobians are the springs').
+ * <p>Springs are added, and with the volumetric fit a volume term a cell ({@link org.tensim.model.VolumeElement},
+ * with its Gauss-Newton stiffness for the implicit integrators), so a volume runs in every integrator.
  */
 public final class VolumeBody {
     private final int firstNode;
@@ -120,6 +121,7 @@ public final class VolumeBody {
             }
         }
         int springs = addSprings(t, p, phi, clip, nodeOf, px, py);
+        addVolumeTerms(t, p, phi, clip, nodeOf, px, py);
         LinearMapping mapping = embed(t, surface, clip, nodeOf, px, py);
         double volume = 0;
         for (double f : phi) {
@@ -270,6 +272,32 @@ public final class VolumeBody {
             }
         }
         return springs;
+    }
+
+    /**
+     * The volumetric fit's volume term ({@link LatticeMaterial#volumetricModulusPa}), one a kept cell, its modulus
+     * scaled by phi_eff as the cell's springs are; none for the other fits.
+     */
+    private static void addVolumeTerms(Topology t, VolumeParameters p, double[] phi, LatticeClip.Result clip,
+            int[] nodeOf, int px, int py) {
+        double k = p.material().volumetricModulusPa();
+        if (!(k > 0)) {
+            return;
+        }
+        int[] corners = new int[8];
+        for (int kz = 0; kz < clip.nz(); kz++) {
+            for (int j = 0; j < clip.ny(); j++) {
+                for (int i = 0; i < clip.nx(); i++) {
+                    double f = phi[clip.cell(i, j, kz)];
+                    if (f > 0) {
+                        for (int c = 0; c < 8; c++) {
+                            corners[c] = nodeOf[point(i, j, kz, c, px, py)];
+                        }
+                        t.addVolumeElement(corners, f * k, p.dampingTimeS());
+                    }
+                }
+            }
+        }
     }
 
     /** Each surface vertex on the 8 nodes of its cell, with the trilinear weights of its place in the cell. */

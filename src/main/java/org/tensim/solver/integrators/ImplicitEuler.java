@@ -30,7 +30,8 @@ import org.tensim.solver.stability.LinearStability;
  * zero, which keeps the matrix symmetric positive definite so that CG applies.
  * Membrane triangles add their tangent stiffness with the compressive stress dropped
  * ({@link TriangleTangent}), positive semi-definite likewise, and transverse shear elements
- * {@code k grad g grad g^T} ({@link org.tensim.solver.ShearElements}), and each node in contact with a rigid
+ * {@code k grad g grad g^T} ({@link org.tensim.solver.ShearElements}), volume elements their Gauss-Newton
+ * {@code K V b b^T} ({@link org.tensim.solver.VolumeElements}), and each node in contact with a rigid
  * body {@code k n n^T} at t + h ({@link org.tensim.solver.ContactForces}: the pairs in contact at the start of
  * the step; one that comes into contact within the step is caught at the next).
  * Axial damping c adds {@code c u u^T} to C, viscous damping c_v adds c_v I. An
@@ -281,6 +282,8 @@ public final class ImplicitEuler implements Integrator {
         }
         s.shears.linearise(px, false);
         s.shears.addDiagonal(dg, h2, h);
+        s.volumes.linearise(px);
+        s.volumes.addDiagonal(dg, h2, h);
         s.contacts.linearise(t, px);
         s.contacts.addDiagonal(dg, h2);
         for (int k = 0; k < dg.length; k++) {
@@ -296,6 +299,7 @@ public final class ImplicitEuler implements Integrator {
             triangles.multiplyAdd(pv, out, null);
         }
         s.shears.multiplyAdd(pv, out, null, 1);
+        s.volumes.multiplyAdd(pv, out, 1, 0);
         s.contacts.multiplyAdd(pv, out, null, 1);
     }
 
@@ -313,6 +317,7 @@ public final class ImplicitEuler implements Integrator {
             triangles.multiplyAdd(pv, out, null, h * h, h);
         }
         s.shears.multiplyAdd(pv, out, null, h * h, h);
+        s.volumes.multiplyAdd(pv, out, h * h, h);
         s.contacts.multiplyAdd(pv, out, null, h * h);
         for (int k = 0; k < n3; k++) {
             out[k] *= fr[k];

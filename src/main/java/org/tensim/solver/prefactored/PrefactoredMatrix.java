@@ -201,6 +201,7 @@ final class PrefactoredMatrix {
         int nf = freeNodes.length;
         int ns = s.springCount();
         Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count()
+                + s.volumes.restPairCount()
                 + (linkCoupling > 0 ? 4 * s.linkA.length : 0));
         for (int j = 0; j < nf; j++) {
             t.add(j, j, s.mass[freeNodes[j]] + beta * cv);
@@ -231,6 +232,14 @@ final class PrefactoredMatrix {
             }
         }
         addShears(t, beta);
+        // Volume elements: a scalar a node pair, the trace of their rest blocks (the matrix preconditions only).
+        s.volumes.restPairs((m, n, stiffness, damping) -> {
+            int a = freeIndex[m];
+            int b = freeIndex[n];
+            if (a >= 0 && b >= 0) {
+                t.add(a, b, beta * beta * stiffness + beta * damping);
+            }
+        });
         for (int e = 0; e < s.contacts.count(); e++) {
             int a = freeIndex[s.contacts.node(e)];
             if (a >= 0) {

@@ -92,6 +92,7 @@ final class SpringJacobian {
         s.fibres.linearise(t, px);
         s.contacts.linearise(t, px);
         s.shears.linearise(px, false);
+        s.volumes.linearise(px);
         positions = px;
         weight = beta;
         try {
@@ -216,6 +217,8 @@ final class SpringJacobian {
             s.contacts.multiplyAdd(p, out, triangleOffset, triangleWeight);
             s.shears.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
         }
+        // The volume elements, serial (their pass is one loop over the cells).
+        s.volumes.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
     }
 
     /**

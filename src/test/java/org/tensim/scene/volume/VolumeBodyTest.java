@@ -169,11 +169,18 @@ class VolumeBodyTest {
                     stretch /= d.norm();
                     lattice += 0.5 * sp.stiffness() * stretch * stretch;
                 }
+                // The volumetric fit's volume elements store K V (tr eps)^2 / 2 to first order in eps.
+                double trace = e[0][0] + e[1][1] + e[2][2];
+                for (org.tensim.model.VolumeElement v : t.volumeElements()) {
+                    lattice += 0.5 * v.modulusPa() * v.restVolumeM3() * trace * trace;
+                }
+                assertEquals(fit == SpringFit.VOLUMETRIC ? 24 : 0, t.volumeElements().size(), fit + " elements");
                 double c11 = m.c11Pa();
                 double c12 = m.c12Pa();
+                double c44 = m.c44Pa();
                 double density = 0.5 * c11 * (e[0][0] * e[0][0] + e[1][1] * e[1][1] + e[2][2] * e[2][2])
                         + c12 * (e[0][0] * e[1][1] + e[1][1] * e[2][2] + e[2][2] * e[0][0])
-                        + 2 * c12 * (e[0][1] * e[0][1] + e[1][2] * e[1][2] + e[0][2] * e[0][2]);
+                        + 2 * c44 * (e[0][1] * e[0][1] + e[1][2] * e[1][2] + e[0][2] * e[0][2]);
                 double continuum = density * 24 * h * h * h;
                 assertEquals(continuum, lattice, 1e-9 * continuum, fit + " trial " + trial);
             }
@@ -185,6 +192,11 @@ class VolumeBodyTest {
         assertEquals(0.4, axial.modelPoisson(), 1e-12);
         assertEquals(1e3, axial.youngAlongPa(0, 0, 1), 1e-9);
         assertEquals(1e3 / (3 * (1 - 0.8)), axial.bulkModulusPa(), 1e-9, "axial: the bulk modulus of (E, nu)");
+        LatticeMaterial vol = TISSUE.withFit(SpringFit.VOLUMETRIC).material();
+        assertEquals(0.4, vol.modelPoisson(), 1e-12);
+        assertEquals(1e3, vol.youngAlongPa(1, 1, 1), 1e-9, "volumetric: E in every direction");
+        assertEquals(1e3 / 2.8, vol.shearModulusPa(), 1e-9, "volumetric: mu = E / (2 (1 + nu))");
+        assertEquals(1e3 / (3 * (1 - 0.8)), vol.bulkModulusPa(), 1e-9, "volumetric: the bulk modulus of (E, nu)");
     }
 
     @Test

@@ -27,7 +27,7 @@ import org.tensim.scene.volume.VolumeParameters;
  * <li>{@code cell}: the lattice's cell side (length, required);</li>
  * <li>{@code material: {E, nu, density, damping_time}}: Young's modulus (pressure, required), Poisson's ratio
  * (0.25), density (1000 kg/m^3), stiffness-proportional damping time (time, 0: each spring k gets c = beta k);</li>
- * <li>{@code fit}: {@code isotropic} (default) or {@code axial} ({@link SpringFit}).</li>
+ * <li>{@code fit}: {@code isotropic} (default), {@code axial} or {@code volumetric} ({@link SpringFit}).</li>
  * </ul>
  * Regions' boxes, spheres and planes select lattice nodes (the bounding box is the lattice's, a little larger than
  * the surface); {@code indices} and {@code labels} name surface vertices, each selecting the node that carries it
@@ -108,7 +108,7 @@ public final class VolumeBodyType implements BodyType {
         double nu = m.quantity("nu", QuantityKind.NUMBER, ctx.units(), DEFAULT_NU);
         double rho = m.positive("density", QuantityKind.DENSITY, ctx.units(), DEFAULT_DENSITY);
         double beta = m.nonNegative("damping_time", QuantityKind.TIME, ctx.units(), 0);
-        SpringFit fit = SpringFit.parse(r.choice("fit", List.of("isotropic", "axial"), "isotropic"));
+        SpringFit fit = SpringFit.parse(r.choice("fit", List.of("isotropic", "axial", "volumetric"), "isotropic"));
         try {
             return VolumeParameters.of(cell, e, nu, rho).withDampingTime(beta).withFit(fit);
         } catch (IllegalArgumentException ex) {
