@@ -32,9 +32,20 @@ public final class CubeSceneFile {
      */
     public static Scene load(CubeParameters p) {
         if (Files.isRegularFile(FILE)) {
-            return SceneLoader.load(FILE, overrides(p));
+            return withoutParameters(FILE, SceneTree.read(FILE), FILE.toAbsolutePath().getParent(), p);
         }
-        return SceneLoader.load("cube.yaml (built in)", builtIn(), Path.of("."), overrides(p));
+        String name = "cube.yaml (built in)";
+        return withoutParameters(Path.of(name), SceneTree.read(name, builtIn()), Path.of("."), p);
+    }
+
+    /**
+     * The scene without the file's {@code parameters:} block: the command's values are {@link CubeParameters}',
+     * validated there, and the file's named parameters (the GUI's and sweeps' controls, whose ranges are those of
+     * a slider) do not bound them; {@code tensim run cube.yaml} keeps them.
+     */
+    private static Scene withoutParameters(Path name, SceneNode root, Path folder, CubeParameters p) {
+        root.remove("parameters");
+        return SceneLoader.load(name, root, folder, overrides(p));
     }
 
     /** The build's copy of the file. */

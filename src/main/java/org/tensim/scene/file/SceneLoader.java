@@ -48,7 +48,7 @@ public final class SceneLoader {
         return load(Path.of(name), SceneTree.read(name, bytes), folder, overrides);
     }
 
-    private static Scene load(Path file, SceneNode root, Path folder, List<String> overrides) {
+    static Scene load(Path file, SceneNode root, Path folder, List<String> overrides) {
         Map<String, SceneParameters.Declared> declared = SceneParameters.declare(root);
         SceneParameters.override(root, declared, overrides);
         MapReader top = new MapReader(root, KEYS);

@@ -106,6 +106,14 @@ public final class SceneNode {
         return kind == Kind.SCALAR;
     }
 
+    /** Removes a map's key and its value (nothing when absent). */
+    void remove(String key) {
+        if (map != null) {
+            map.remove(key);
+            keyWhere.remove(key);
+        }
+    }
+
     /** A map's entries in file order (read-only); empty for other kinds. */
     public Map<String, SceneNode> entries() {
         return map == null ? Map.of() : Collections.unmodifiableMap(map);
