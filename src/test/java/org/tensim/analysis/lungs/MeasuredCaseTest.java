@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.tensim.testsupport.SharedData;
 
 /**
- * The five DIR-Lab cases' figures, against the ranges docs/lungs.md quotes from them (issue 39): basal SI
+ * The five DIR-Lab cases' figures, against the ranges docs/lungs.md quotes from them: basal SI
  * 7.6-14.7 mm, mean 3D 3.9-9.8 mm, ratios of the four bins above the base 0.0-0.17, 0.16-0.51, 0.32-0.75,
  * 0.67-0.98 (the extremes over the cases, to two decimals). Prints each case's figures.
  */

@@ -13,7 +13,7 @@ import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /**
- * The pleural sliding (issue 39's test): a block between the floor and the ceiling of a rigid box (a cavity) that
+ * The pleural sliding: a block between the floor and the ceiling of a rigid box (a cavity) that
  * moves up by 2 mm and sideways by 6 mm and 3 mm over one inspiration of a breathing law. Its top and bottom faces
  * slide on the box: they follow it up exactly (neither separating nor penetrating), and, the sliding being
  * frictionless, the box's sideways motion drags nothing along.
