@@ -16,12 +16,7 @@ import org.tensim.model.Vec3;
  * {@link DiaphragmControls}. Allocation-free: it is evaluated inside the step.
  */
 public final class HelicalAxisMotion implements RigidMotion {
-    private final double nx;
-    private final double ny;
-    private final double nz;
-    private final double px;
-    private final double py;
-    private final double pz;
+    private final org.tensim.model.AxisRotation axis;
     private final double maxAngleRad;
     private final double maxTranslationM;
     private final BreathingCycle cycle;
@@ -42,13 +37,7 @@ public final class HelicalAxisMotion implements RigidMotion {
      */
     public HelicalAxisMotion(Vec3 direction, Vec3 point, double maxAngleRad, double maxTranslationM,
             BreathingCycle cycle, DiaphragmControls controls) {
-        Vec3 n = direction.normalized();
-        nx = n.x();
-        ny = n.y();
-        nz = n.z();
-        px = point.x();
-        py = point.y();
-        pz = point.z();
+        axis = new org.tensim.model.AxisRotation(direction, point);
         this.maxAngleRad = org.tensim.model.Check.finite("rib rotation", "rad", maxAngleRad);
         this.maxTranslationM = org.tensim.model.Check.finite("rib translation", "m", maxTranslationM);
         this.cycle = cycle;
@@ -99,19 +88,7 @@ public final class HelicalAxisMotion implements RigidMotion {
         double c = Math.cos(theta);
         double s = Math.sin(theta);
         double d = level * maxTranslationM;
-        double k = 1 - c;
-        r[ro] = c + k * nx * nx;
-        r[ro + 1] = -s * nz + k * nx * ny;
-        r[ro + 2] = s * ny + k * nx * nz;
-        r[ro + 3] = s * nz + k * ny * nx;
-        r[ro + 4] = c + k * ny * ny;
-        r[ro + 5] = -s * nx + k * ny * nz;
-        r[ro + 6] = -s * ny + k * nz * nx;
-        r[ro + 7] = s * nx + k * nz * ny;
-        r[ro + 8] = c + k * nz * nz;
-        translation[to] = px - (r[ro] * px + r[ro + 1] * py + r[ro + 2] * pz) + d * nx;
-        translation[to + 1] = py - (r[ro + 3] * px + r[ro + 4] * py + r[ro + 5] * pz) + d * ny;
-        translation[to + 2] = pz - (r[ro + 6] * px + r[ro + 7] * py + r[ro + 8] * pz) + d * nz;
+        axis.pose(c, s, d * axis.direction(0), d * axis.direction(1), d * axis.direction(2), r, ro, translation, to);
     }
 
     /** Applies a rotation by theta and a translation d along the axis to (x, y, z); writes out[o..o+2]. */
@@ -120,15 +97,6 @@ public final class HelicalAxisMotion implements RigidMotion {
     }
 
     private void rotate(double c, double s, double d, double x, double y, double z, double[] out, int o) {
-        double rx = x - px;
-        double ry = y - py;
-        double rz = z - pz;
-        double dot = nx * rx + ny * ry + nz * rz;
-        double cx = ny * rz - nz * ry;
-        double cy = nz * rx - nx * rz;
-        double cz = nx * ry - ny * rx;
-        out[o] = px + rx * c + cx * s + nx * dot * (1 - c) + d * nx;
-        out[o + 1] = py + ry * c + cy * s + ny * dot * (1 - c) + d * ny;
-        out[o + 2] = pz + rz * c + cz * s + nz * dot * (1 - c) + d * nz;
+        axis.apply(c, s, d * axis.direction(0), d * axis.direction(1), d * axis.direction(2), x, y, z, out, o);
     }
 }

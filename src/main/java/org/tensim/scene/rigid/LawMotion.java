@@ -1,5 +1,6 @@
 package org.tensim.scene.rigid;
 
+import org.tensim.model.AxisRotation;
 import org.tensim.model.RigidMotion;
 import org.tensim.model.Vec3;
 import org.tensim.scene.conditions.TimeLaw;
@@ -14,12 +15,7 @@ import org.tensim.scene.conditions.TimeLaw;
  * {@link org.tensim.scene.diaphragm.HelicalAxisMotion}. Allocation-free: evaluated inside the step.
  */
 public final class LawMotion implements RigidMotion {
-    private final double nx;
-    private final double ny;
-    private final double nz;
-    private final double px;
-    private final double py;
-    private final double pz;
+    private final AxisRotation axis;
     private final double angleRad;
     private final double ux;
     private final double uy;
@@ -34,13 +30,7 @@ public final class LawMotion implements RigidMotion {
      * @param law          s(t), dimensionless
      */
     public LawMotion(Vec3 axis, Vec3 centre, double angleRad, Vec3 displacement, TimeLaw law) {
-        Vec3 n = axis.normalized();
-        nx = n.x();
-        ny = n.y();
-        nz = n.z();
-        px = centre.x();
-        py = centre.y();
-        pz = centre.z();
+        this.axis = new AxisRotation(axis, centre);
         this.angleRad = angleRad;
         ux = displacement.x();
         uy = displacement.y();
@@ -57,38 +47,13 @@ public final class LawMotion implements RigidMotion {
     public void position(double t, Vec3 rest, double[] out, int o) {
         double s = law.value(t);
         double theta = angleRad * s;
-        double c = Math.cos(theta);
-        double sn = Math.sin(theta);
-        double rx = rest.x() - px;
-        double ry = rest.y() - py;
-        double rz = rest.z() - pz;
-        double dot = nx * rx + ny * ry + nz * rz;
-        double cx = ny * rz - nz * ry;
-        double cy = nz * rx - nx * rz;
-        double cz = nx * ry - ny * rx;
-        out[o] = px + rx * c + cx * sn + nx * dot * (1 - c) + ux * s;
-        out[o + 1] = py + ry * c + cy * sn + ny * dot * (1 - c) + uy * s;
-        out[o + 2] = pz + rz * c + cz * sn + nz * dot * (1 - c) + uz * s;
+        axis.apply(Math.cos(theta), Math.sin(theta), ux * s, uy * s, uz * s, rest.x(), rest.y(), rest.z(), out, o);
     }
 
     @Override
     public void pose(double t, double[] r, int ro, double[] translation, int to) {
         double s = law.value(t);
         double theta = angleRad * s;
-        double c = Math.cos(theta);
-        double sn = Math.sin(theta);
-        double k = 1 - c;
-        r[ro] = c + k * nx * nx;
-        r[ro + 1] = -sn * nz + k * nx * ny;
-        r[ro + 2] = sn * ny + k * nx * nz;
-        r[ro + 3] = sn * nz + k * ny * nx;
-        r[ro + 4] = c + k * ny * ny;
-        r[ro + 5] = -sn * nx + k * ny * nz;
-        r[ro + 6] = -sn * ny + k * nz * nx;
-        r[ro + 7] = sn * nx + k * nz * ny;
-        r[ro + 8] = c + k * nz * nz;
-        translation[to] = px - (r[ro] * px + r[ro + 1] * py + r[ro + 2] * pz) + ux * s;
-        translation[to + 1] = py - (r[ro + 3] * px + r[ro + 4] * py + r[ro + 5] * pz) + uy * s;
-        translation[to + 2] = pz - (r[ro + 6] * px + r[ro + 7] * py + r[ro + 8] * pz) + uz * s;
+        axis.pose(Math.cos(theta), Math.sin(theta), ux * s, uy * s, uz * s, r, ro, translation, to);
     }
 }
