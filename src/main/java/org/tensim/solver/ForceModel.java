@@ -22,6 +22,7 @@ public final class ForceModel {
     private SpringForcePass springPass;
     private TriangleForcePass trianglePass;
     private NodeLoops nodeLoops = NodeLoops.SERIAL;
+    private ForceTerm[] terms = new ForceTerm[0];
 
     public ForceModel(SystemState state) {
         this.s = state;
@@ -36,6 +37,29 @@ public final class ForceModel {
 
     public SystemState state() {
         return s;
+    }
+
+    /**
+     * Adds a term to every force pass from the next one on, after the built-in forces ({@link ForceTerm}); its
+     * energy joins {@link #elasticEnergy(double, double[])}. Not for the hot path: call it while building.
+     */
+    public void addTerm(ForceTerm term) {
+        if (term == null) {
+            throw new IllegalArgumentException("a force term cannot be null");
+        }
+        ForceTerm[] t = java.util.Arrays.copyOf(terms, terms.length + 1);
+        t[terms.length] = term;
+        terms = t;
+    }
+
+    /** Removes a term added by {@link #addTerm} (no effect if absent). */
+    public void removeTerm(ForceTerm term) {
+        terms = java.util.Arrays.stream(terms).filter(x -> x != term).toArray(ForceTerm[]::new);
+    }
+
+    /** The added terms, in order (a copy). */
+    public java.util.List<ForceTerm> terms() {
+        return java.util.List.of(terms);
     }
 
     /** Number of force passes made so far (the cost measure of integrators). */
@@ -126,6 +150,10 @@ public final class ForceModel {
         }
         // The volume material's volumetric term (none unless the scene has volume elements), serial.
         s.volumes.forces(px, s.volumes.damped() ? pv : null, f);
+        // The scene's own terms (couplings, mapped contacts), last.
+        for (ForceTerm term : terms) {
+            term.addForces(t, px, pv, f);
+        }
     }
 
     /**
@@ -162,7 +190,11 @@ public final class ForceModel {
      * penalty energy {@code sum k max(0, g - d)^2 / 2} (which needs t: the bodies move).
      */
     public double elasticEnergy(double t, double[] px) {
-        return elasticEnergy(px) + s.contacts.energy(t, px);
+        double e = elasticEnergy(px) + s.contacts.energy(t, px);
+        for (ForceTerm term : terms) {
+            e += term.energy(t, px);
+        }
+        return e;
     }
 
     /** Spring forces only, added to f: the hot loop, without axial damping. */
