@@ -1,11 +1,10 @@
 package org.tensim.app;
 
+import org.tensim.testsupport.Commands;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -15,7 +14,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.io.Json;
 import org.tensim.solver.parallel.Parallelism;
-import picocli.CommandLine;
 
 /** The diaphragm command end to end on a coarse mesh, and its error messages. */
 class DiaphragmCommandTest {
@@ -26,13 +24,7 @@ class DiaphragmCommandTest {
     // tests need none and are never skipped. With a display given, AWT failing to start is a failure.
 
     private static String[] run(String... args) {
-        CommandLine cl = Main.commandLine();
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new String[] {String.valueOf(code), out.toString(), err.toString()};
+        return Commands.run(args);
     }
 
     /** A generated mesh of the given rings in the test folder. */

@@ -1,12 +1,11 @@
 package org.tensim.app;
 
+import org.tensim.testsupport.Commands;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -27,7 +26,6 @@ import org.tensim.scene.file.SceneTree;
 import org.tensim.scene.file.SceneUnits;
 import org.tensim.scene.file.bodies.DiaphragmBodyType;
 import org.tensim.tuning.DiaphragmOptions;
-import picocli.CommandLine;
 
 /**
  * The diaphragm's default and its thorax as scene files (docs/examples/diaphragm.yaml, diaphragm-thorax.yaml): each
@@ -50,13 +48,7 @@ class DiaphragmSceneFileTest {
     Path dir;
 
     private static String[] run(String... args) {
-        CommandLine cl = Main.commandLine();
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new String[] {String.valueOf(code), out.toString(), err.toString()};
+        return Commands.run(args);
     }
 
     /** The spec a scene file's diaphragm body gives, read without building it. */

@@ -1,11 +1,10 @@
 package org.tensim.app;
 
+import org.tensim.testsupport.Commands;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -14,7 +13,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tensim.io.Json;
 import org.tensim.testsupport.SharedData;
-import picocli.CommandLine;
 
 /** {@code lung-landmarks}: the measured cases' figures as its JSON line gives them, and one-line refusals. */
 class LungLandmarksCommandTest {
@@ -22,13 +20,7 @@ class LungLandmarksCommandTest {
     Path tmp;
 
     private static String[] run(String... args) {
-        CommandLine cl = Main.commandLine();
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new String[] {Integer.toString(code), out.toString(), err.toString()};
+        return Commands.run(args);
     }
 
     @Test
