@@ -83,16 +83,17 @@ final class Validate4dctOutputs {
         for (int b = 0; b < eta.length; b++) {
             eta[b] = (b + 0.5) / SiProfile.BINS;
         }
+        targetBand(chart, java.util.Arrays.copyOf(eta, SiProfile.BINS - 1), c.verdicts().subList(0, 4));
         int k = 0;
         for (MeasuredCase mc : c.cases()) {
             measured(chart, "case " + mc.caseNumber(), eta, mc.both().ratio(), k++);
         }
-        model(chart, "model, both lungs", eta, c.model().both().ratio(), SeriesLines.SOLID, 3f);
+        model(chart, "model, both lungs", eta, c.model().both().ratio(), SeriesLines.SOLID, 3f, java.awt.Color.BLACK);
         if (c.model().right() != null) {
-            model(chart, "model, right lung", eta, c.model().right().ratio(), SeriesLines.DASH_DASH, 1.5f);
+            model(chart, "model, right lung", eta, c.model().right().ratio(), SeriesLines.DASH_DASH, 1.5f, GREY);
         }
         if (c.model().left() != null) {
-            model(chart, "model, left lung", eta, c.model().left().ratio(), SeriesLines.DOT_DOT, 1.5f);
+            model(chart, "model, left lung", eta, c.model().left().ratio(), SeriesLines.DOT_DOT, 1.5f, GREY);
         }
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
         return chart;
@@ -105,13 +106,14 @@ final class Validate4dctOutputs {
         for (int p = 0; p < pct.length; p++) {
             pct[p] = ModelFigures.phasePercent(p);
         }
+        targetBand(chart, java.util.Arrays.copyOfRange(pct, 1, 5), c.verdicts().subList(6, 10));
         int k = 0;
         for (MeasuredCase mc : c.cases()) {
             measured(chart, "case " + mc.caseNumber(), pct, mc.shares(), k++);
         }
-        model(chart, "model, its points", pct, c.model().shares(), SeriesLines.SOLID, 3f);
+        model(chart, "model, its points", pct, c.model().shares(), SeriesLines.SOLID, 3f, java.awt.Color.BLACK);
         if (c.model().lawShares() != null) {
-            model(chart, "model, its breathing law", pct, c.model().lawShares(), SeriesLines.DASH_DASH, 2f);
+            model(chart, "model, its breathing law", pct, c.model().lawShares(), SeriesLines.DASH_DASH, 2f, GREY);
         }
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
         return chart;
@@ -127,13 +129,31 @@ final class Validate4dctOutputs {
         chart.getStyler().setMarkerSize(6);
     }
 
+    /** The colour of the model's secondary lines and of the targets' bounds. */
+    private static final java.awt.Color GREY = new java.awt.Color(110, 110, 110);
+
+    /** The targets' ranges at {@code x} as two thin grey lines, "target: cases' range +/- 0.1". */
+    private static void targetBand(XYChart chart, double[] x, List<FourDctComparison.Verdict> v) {
+        double[] lo = v.stream().mapToDouble(FourDctComparison.Verdict::lo).toArray();
+        double[] hi = v.stream().mapToDouble(FourDctComparison.Verdict::hi).toArray();
+        String name = "target: cases' range +/- " + FourDctComparison.WIDEN;
+        for (double[] y : List.of(lo, hi)) {
+            double[][] xy = finite(x, y);
+            XYSeries s = chart.addSeries(y == lo ? name : name + " ", xy[0], xy[1]);
+            s.setMarker(SeriesMarkers.NONE);
+            s.setLineColor(new java.awt.Color(190, 190, 190));
+            s.setLineStyle(new java.awt.BasicStroke(1f));
+            s.setShowInLegend(y == lo);
+        }
+    }
+
     private static void model(XYChart chart, String name, double[] x, double[] y, java.awt.BasicStroke line,
-            float width) {
+            float width, java.awt.Color colour) {
         double[][] xy = finite(x, y);
         XYSeries s = chart.addSeries(name, xy[0], xy[1]);
         s.setMarker(SeriesMarkers.SQUARE);
-        s.setLineColor(java.awt.Color.BLACK);
-        s.setMarkerColor(java.awt.Color.BLACK);
+        s.setLineColor(colour);
+        s.setMarkerColor(colour);
         s.setLineStyle(new java.awt.BasicStroke(width, line.getEndCap(), line.getLineJoin(), line.getMiterLimit(),
                 line.getDashArray(), 0));
     }
