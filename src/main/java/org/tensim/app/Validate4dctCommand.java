@@ -35,7 +35,7 @@ import picocli.CommandLine.Option;
                 + " period, superior direction). Per lung and for both: the superior-inferior displacement from"
                 + " end-exhale to end-inhale in five bins of normalised height (0 apex, 1 base) as ratios to the"
                 + " basal bin, the basal SI and mean 3D displacements, and each phase's share of the end-inhale"
-                + " displacement (phase tNN taken NN % of the period after end-inhale), for the model and each case,"
+                + " displacement (phase tNN taken NN%% of the period after end-inhale), for the model and each case,"
                 + " with the targets' verdicts. Writes validate-4dct.png, caseN.csv and summary.json to --out."})
 public final class Validate4dctCommand implements Callable<Integer> {
     @picocli.CommandLine.Spec
@@ -109,7 +109,7 @@ public final class Validate4dctCommand implements Callable<Integer> {
      * The comparison of {@code motion} with {@code measured} (read from {@code landmarks}) written into
      * {@code run} (chart, a CSV per case) and finished with the summary: {@code fields} first, then the
      * comparison's figures and verdicts. The seam for a run of the lungs made in this process: it calls this with
-     * its own {@link ModelMotion} and folder. Prints the figures and verdicts to {@code out} (may be null).
+     * its own {@link ModelMotion} and folder. Prints the figures and verdicts to {@code out} (may be null), then the summary as one line of JSON.
      */
     public static FourDctComparison validate(RunFolder run, ModelMotion motion, List<MeasuredCase> measured,
             Path landmarks, Map<String, Object> fields, PrintWriter out) throws IOException {
@@ -120,10 +120,11 @@ public final class Validate4dctCommand implements Callable<Integer> {
         summary.put("phase_rule", "phase tNN at end_inhale_s + NN/100 * period_s; shares: least-squares factor of"
                 + " the end-exhale-to-end-inhale field of the model's own points");
         summary.putAll(c.toMap());
-        run.finish(RunStatus.OK, summary);
+        Map<String, Object> written = run.finish(RunStatus.OK, summary);
         if (out != null) {
             Validate4dctOutputs.print(out, c);
             out.println("wrote " + run.dir());
+            out.println(org.tensim.io.Json.line(written));
             out.flush();
         }
         return c;

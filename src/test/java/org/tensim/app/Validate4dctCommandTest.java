@@ -55,6 +55,9 @@ class Validate4dctCommandTest {
         String[] r = run("validate-4dct", "--run", runDir.toString(), "--out", out.toString());
         assertEquals("0", r[0], r[2]);
         assertTrue(r[1].contains("targets met"), r[1]);
+        String[] lines = r[1].trim().split("\\R");
+        assertEquals(Json.mapper().readTree(out.resolve("summary.json").toFile()),
+                Json.mapper().readTree(lines[lines.length - 1]), "the last line is the summary");
         assertTrue(Files.size(out.resolve("validate-4dct.png")) > 10_000);
         JsonNode s = Json.mapper().readTree(out.resolve("summary.json").toFile());
         assertEquals("ok", s.get("status").asText());
