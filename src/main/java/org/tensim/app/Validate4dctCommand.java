@@ -83,9 +83,13 @@ public final class Validate4dctCommand implements Callable<Integer> {
         List<MeasuredCase> measured;
         try {
             motion = LungPointsFolder.read(runFolder);
-            measured = read(dir, cases);
         } catch (LandmarkFormatException | IllegalArgumentException e) {
             throw OptionChecks.usage(spec, "--run " + runFolder + ": " + e.getMessage());
+        }
+        try {
+            measured = read(dir, cases);
+        } catch (LandmarkFormatException e) {
+            throw OptionChecks.usage(spec, "--landmarks " + dir + ": " + e.getMessage());
         }
         Path outDir = out.folder(spec);
         PrintWriter pw = spec.commandLine().getOut();
