@@ -23,7 +23,7 @@ import picocli.CommandLine.Command;
         subcommands = {CubeCommand.class, BenchCommand.class, AccuracyCommand.class, StabilityCommand.class,
             DiaphragmCommand.class, DiaphragmMeshCommand.class, GuiCommand.class, SweepCommand.class,
             CalibrateCommand.class, VolumeStudyCommand.class, CheckCommand.class, RunCommand.class,
-            TestScenesCommand.class, LungLandmarksCommand.class})
+            TestScenesCommand.class, LungLandmarksCommand.class, Validate4dctCommand.class})
 public final class Main implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

@@ -68,6 +68,21 @@ public final class Charts {
     }
 
     /**
+     * Saves charts side by side, left to right, as one PNG file at {@code path} (written whole then renamed); an
+     * error of the chart library becomes an IOException naming the first chart, as {@link #savePng(XYChart, Path)}.
+     */
+    public static void savePng(java.util.List<XYChart> charts, Path path) throws IOException {
+        java.io.ByteArrayOutputStream png = new java.io.ByteArrayOutputStream();
+        try {
+            BitmapEncoder.saveBitmap(charts, 1, charts.size(), png, BitmapEncoder.BitmapFormat.PNG);
+        } catch (IOException | RuntimeException e) {
+            throw new IOException("cannot draw the chart '" + charts.get(0).getTitle() + "' for " + path + ": "
+                    + (e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage()), e);
+        }
+        OutputFiles.writeAtomically(path, out -> out.write(png.toByteArray()));
+    }
+
+    /**
      * Marks a chart of a run that diverged: its title starts with "DIVERGED at t = ... s"
      * and the plot background turns pink, so that no reader takes its curves for a result.
      */

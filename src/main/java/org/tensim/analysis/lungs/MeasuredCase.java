@@ -76,7 +76,7 @@ public record MeasuredCase(int caseNumber, SiProfile both, SiProfile lowX, SiPro
         return m;
     }
 
-    private static Map<String, Object> profile(SiProfile p) {
+    static Map<String, Object> profile(SiProfile p) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("points", p.points());
         m.put("si_profile_ratio", rounded(p.ratio(), 1, 3));
@@ -89,7 +89,7 @@ public record MeasuredCase(int caseNumber, SiProfile both, SiProfile lowX, SiPro
         return m;
     }
 
-    private static Map<String, Object> phaseMap(double[] s) {
+    static Map<String, Object> phaseMap(double[] s) {
         Map<String, Object> m = new LinkedHashMap<>();
         for (int p = 0; p < s.length; p++) {
             m.put(DirLabLandmarks.SIX_PHASES.get(p), round(s[p], 3));
@@ -97,7 +97,7 @@ public record MeasuredCase(int caseNumber, SiProfile both, SiProfile lowX, SiPro
         return m;
     }
 
-    private static double[] rounded(double[] v, double scale, int digits) {
+    static double[] rounded(double[] v, double scale, int digits) {
         double[] r = new double[v.length];
         for (int i = 0; i < v.length; i++) {
             r[i] = round(v[i] * scale, digits);
@@ -105,7 +105,7 @@ public record MeasuredCase(int caseNumber, SiProfile both, SiProfile lowX, SiPro
         return r;
     }
 
-    private static double round(double v, int digits) {
+    static double round(double v, int digits) {
         double f = Math.pow(10, digits);
         return Double.isFinite(v) ? Math.round(v * f) / f : v;
     }

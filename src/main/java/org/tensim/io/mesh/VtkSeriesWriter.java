@@ -13,7 +13,8 @@ import java.util.Locale;
  * ({@code <base>_NNNN.vtk}: points at their current positions in metres, the
  * triangles, the displacement from the rest position as point VECTORS and an
  * integer label per point as SCALARS) and a {@code <base>.pvd} collection that
- * lists them with their times. The .pvd is rewritten after every frame, so a run
+ * lists them with their times. A series of {@link #points points} draws each point as a vertex instead of
+ * triangles (points followed in a body, not its surface). The .pvd is rewritten after every frame, so a run
  * that stops early leaves a series that opens.
  */
 public final class VtkSeriesWriter {
@@ -22,6 +23,8 @@ public final class VtkSeriesWriter {
     private final int[] triangles;
     private final int[] labels;
     private final String labelName;
+    /** Each point a VERTICES cell (a point series) rather than triangles. */
+    private boolean vertices;
     private final List<double[]> frames = new ArrayList<>();
     private final List<String> files = new ArrayList<>();
 
@@ -39,6 +42,18 @@ public final class VtkSeriesWriter {
         this.labels = labels.clone();
         this.labelName = labelName;
         org.tensim.io.OutputFiles.createFolder(dir);
+    }
+
+    /**
+     * A series of points alone, each drawn as a vertex (ParaView shows them without a Glyph filter).
+     *
+     * @param labels    one integer per point (e.g. 0 right lung, 1 left)
+     * @param labelName name of the label array in ParaView
+     */
+    public static VtkSeriesWriter points(Path dir, String base, int[] labels, String labelName) throws IOException {
+        VtkSeriesWriter w = new VtkSeriesWriter(dir, base, new int[0], labels, labelName);
+        w.vertices = true;
+        return w;
     }
 
     /**
@@ -68,8 +83,16 @@ public final class VtkSeriesWriter {
                 w.write(String.format(Locale.ROOT, "%.7g %.7g %.7g%n", positions[3 * i], positions[3 * i + 1],
                         positions[3 * i + 2]));
             }
+            if (vertices) {
+                w.write("VERTICES " + n + " " + 2 * n + "\n");
+                for (int i = 0; i < n; i++) {
+                    w.write("1 " + i + "\n");
+                }
+            }
             int nt = triangles.length / 3;
-            w.write("POLYGONS " + nt + " " + 4 * nt + "\n");
+            if (!vertices) {
+                w.write("POLYGONS " + nt + " " + 4 * nt + "\n");
+            }
             for (int t = 0; t < nt; t++) {
                 w.write("3 " + triangles[3 * t] + " " + triangles[3 * t + 1] + " " + triangles[3 * t + 2] + "\n");
             }
