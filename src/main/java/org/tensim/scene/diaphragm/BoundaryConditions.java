@@ -36,7 +36,8 @@ public record BoundaryConditions(Attachment attachment, double bandStiffnessPaPe
         /**
          * The paper's: every node closer than the threshold to a cage segment is driven rigidly with
          * its rib, fixed to the spine, or tied by two springs of fixed stiffness (N/m) to cartilage or
-         * sternum. The number of attached nodes, hence the total stiffness, grows with the resolution.
+         * sternum. The number of attached nodes, hence the total stiffness, grows with the resolution. The rule is
+         * the generic {@link org.tensim.scene.conditions.DistanceAttachment}, as a scene file's attachment condition.
          */
         PAPER_THRESHOLD,
         /**

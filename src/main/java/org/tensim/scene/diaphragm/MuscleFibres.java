@@ -4,6 +4,7 @@ import java.util.function.DoubleUnaryOperator;
 import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.conditions.FibreField;
 
 /**
  * The muscle's action as active fibre tension ({@link BoundaryConditions.MuscleLoad#FIBRES};
@@ -26,12 +27,12 @@ import org.tensim.model.Vec3;
  * {@code f = n x (e_z x r)} (n the triangle's unit normal): in the triangle's plane, perpendicular to
  * the circle around the tendon's centre, so horizontal and radial on flat parts and vertical on the
  * steep walls of the zone of apposition. Where the plane holds the circumferential direction (a
- * radial, vertical wall: |f| &lt; 0.05) the meridian is not defined and the triangle gets no fibre.
+ * radial, vertical wall: |f| &lt; 0.05) the meridian is not defined and the triangle gets no fibre. The
+ * directions and the fibres are the generic {@link FibreField}'s ({@link FibreField#towards} the tendon's centre
+ * about the vertical), as a scene file's {@code fibres} condition's; the diaphragm supplies the centre, the
+ * muscle's share of each triangle and the insertion.
  */
 final class MuscleFibres {
-    /** Smallest accepted |n x (e_z x r)| for a triangle to carry a fibre. */
-    static final double MIN_MERIDIAN = 0.05;
-
     private MuscleFibres() {
     }
 
@@ -68,6 +69,8 @@ final class MuscleFibres {
         cy /= w;
         int added = 0;
         double[] h = new double[3];
+        // The meridians about the vertical through the tendon's centre (its height does not enter).
+        FibreField.Direction meridian = FibreField.towards(new Vec3(cx, cy, 0), new Vec3(0, 0, 1));
         // One law shared by every fibre, so that the force pass evaluates it once.
         DoubleUnaryOperator stress = lines::pressurePa;
         for (int tr = 0; tr < m.triangleCount(); tr++) {
@@ -78,25 +81,13 @@ final class MuscleFibres {
                 h[k] = tendonHeight[c[k]];
             }
             double fraction = muscleFraction(h);
-            if (fraction == 0) {
-                continue;
-            }
-            Vec3 g = y[0].plus(y[1]).plus(y[2]).times(1.0 / 3);
-            Vec3 n = y[1].minus(y[0]).cross(y[2].minus(y[0])).normalized();
-            Vec3 r = new Vec3(g.x() - cx, g.y() - cy, 0);
-            if (!(r.norm() > 0)) {
-                continue;
-            }
-            Vec3 f = n.cross(new Vec3(0, 0, 1).cross(r.normalized()));
-            if (f.norm() < MIN_MERIDIAN) {
-                continue;
-            }
             double share = activation == null ? 1 : (activation[c[0]] + activation[c[1]] + activation[c[2]]) / 3;
-            if (share == 0) {
+            if (fraction == 0 || share == 0) {
                 continue;
             }
-            t.addFibre(c, c, f, 0.5 * thicknessM * fraction * share, stress);
-            added++;
+            if (FibreField.add(t, c, c, y, meridian, 0.5 * thicknessM * fraction * share, stress)) {
+                added++;
+            }
         }
         return added;
     }

@@ -1,7 +1,9 @@
 package org.tensim.scene.diaphragm;
 
+import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
-import org.tensim.model.Vec3;
+import org.tensim.scene.conditions.DistanceAttachment;
 
 /**
  * The paper's attachment ({@link BoundaryConditions.Attachment#PAPER_THRESHOLD}; package-private):
@@ -13,34 +15,33 @@ final class ThresholdAttachment {
     private ThresholdAttachment() {
     }
 
-    /** The paper's attachment: every node within the threshold of a cage segment (see Attachment). */
+    /**
+     * The paper's attachment: every node within the threshold of a cage segment (see Attachment), by the generic
+     * {@link DistanceAttachment}, each segment a target held as its kind says.
+     */
     static void attach(DiaphragmSceneBuilder b) {
         List<RibCage.Segment> segs = b.cage.segments();
+        List<DistanceAttachment.Target> targets = new ArrayList<>(segs.size());
+        for (RibCage.Segment s : segs) {
+            DistanceAttachment.Hold hold = switch (s.kind()) {
+                case RIB -> DistanceAttachment.drive(s.motion());
+                case SPINE -> DistanceAttachment.fix();
+                default -> DistanceAttachment.tie(b.springs::add, b.p.attachStiffness(), s.a(), s.b());
+            };
+            targets.add(new DistanceAttachment.Target(s.name(), q -> RibCage.distance(b.t, s, q), hold));
+        }
+        BitSet diaphragm = new BitSet(b.nv);
+        diaphragm.set(0, b.nv);
+        int[] to = DistanceAttachment.attach(b.t, diaphragm, targets, b.p.attachThresholdM()).target();
         for (int v = 0; v < b.nv; v++) {
-            Vec3 q = b.t.node(v).position();
-            RibCage.Segment best = null;
-            double bestD = Double.POSITIVE_INFINITY;
-            for (RibCage.Segment s : segs) {
-                double d = RibCage.distance(b.t, s, q);
-                if (d < bestD) {
-                    bestD = d;
-                    best = s;
-                }
-            }
-            if (best == null || bestD > b.p.attachThresholdM()) {
+            if (to[v] < 0) {
                 continue;
             }
             b.attached[v] = true;
-            if (best.kind() == RibCage.Kind.RIB) {
-                b.t.node(v).drive(best.motion());
-                b.attachedRibs++;
-            } else if (best.kind() == RibCage.Kind.SPINE) {
-                b.t.node(v).fix();
-                b.attachedSpine++;
-            } else {
-                b.springs.add(v, best.a(), b.p.attachStiffness());
-                b.springs.add(v, best.b(), b.p.attachStiffness());
-                b.attachedCartilage++;
+            switch (segs.get(to[v]).kind()) {
+                case RIB -> b.attachedRibs++;
+                case SPINE -> b.attachedSpine++;
+                default -> b.attachedCartilage++;
             }
         }
         if (b.attachedSpine == 0) {

@@ -7,6 +7,7 @@ import org.tensim.model.ContactBody;
 import org.tensim.model.Motion;
 import org.tensim.model.Node;
 import org.tensim.model.Topology;
+import org.tensim.scene.conditions.DistanceAttachment;
 
 /**
  * The conditions that tie a deformable body's region to a rigid body ({@link RigidBody}), named by {@code with:}:
@@ -19,7 +20,8 @@ import org.tensim.model.Topology;
  * projection), so that penetration is a round-off, not the load over k.</li>
  * <li>{@code attachment} ({@code threshold} length): the paper's attachment, every node of the region within the
  * threshold of the rigid surface at rest ({@code d <= threshold}, inside included) moves with the body:
- * {@code x(t) = R(t) R(0)^T (x0 - c(0)) + c(t)}.</li>
+ * {@code x(t) = R(t) R(0)^T (x0 - c(0)) + c(t)} (the generic {@link DistanceAttachment}, as the diaphragm's
+ * paper-threshold attachment).</li>
  * <li>{@code sliding} ({@code stiffness}, {@code hard}): the region kept on the rigid surface, frictionless, neither
  * penetrating nor separating: each free node keeps its rest distance d0 from both sides, by one contact pair on the
  * solid (gap d0) and one on its complement (gap -d0), a bilateral normal spring {@code k (d0 - d) n} that leaves the
@@ -120,17 +122,11 @@ final class RigidConditions {
             out[o + 1] = rt[3] * yx + rt[4] * yy + rt[5] * yz + ct[1];
             out[o + 2] = rt[6] * yx + rt[7] * yy + rt[8] * yz + ct[2];
         };
-        int attached = 0;
-        double nearest = Double.POSITIVE_INFINITY;
-        for (int i = nodes.nextSetBit(0); i >= 0; i = nodes.nextSetBit(i + 1)) {
-            Node n = b.topology().node(i);
-            double d = rigid.restDistance(n.position().x(), n.position().y(), n.position().z());
-            nearest = Math.min(nearest, d);
-            if (d <= threshold) {
-                n.drive(follow);
-                attached++;
-            }
-        }
+        DistanceAttachment.Result done = DistanceAttachment.attach(b.topology(), nodes, List.of(
+                new DistanceAttachment.Target(rigid.name(), q -> rigid.restDistance(q.x(), q.y(), q.z()),
+                        DistanceAttachment.drive(follow))), threshold);
+        int attached = done.attached();
+        double nearest = done.nearest();
         if (attached == 0) {
             throw SceneException.at(r.node().get("threshold"), String.format(java.util.Locale.ROOT, "no node of the"
                     + " region on body '%s' lies within %.6g m of rigid body '%s' (the nearest is %.6g m from it):"

@@ -20,18 +20,20 @@ import org.tensim.scene.conditions.TimeLaw;
  *   - {type: contact, region: base, with: plate, stiffness: 50 N/m, gap: 0 mm, hard: false}
  *   - {type: attachment, region: back, with: spine, threshold: 3 mm}
  *   - {type: sliding, region: pleura, with: cavity, stiffness: 50 N/m, hard: true}
+ *   - {type: fibres, region: muscle, stress: 20 kPa, law: breath, towards: [0, 0, 0.1], axis: [0, 0, 1]}
  * </pre>
  * A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
  * motion moves every node of the region to {@code rest + displacement * law(t)}. The law is a name from
  * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent). A
  * pressure acts on the faces of the body's surface the region covers ({@link SurfaceFaces}): {@code -p law(t) A n}
  * per face, a dead load, refused on a region that covers no face. Contact, attachment and sliding tie the region
- * to the rigid body named by {@code with} ({@link RigidConditions}).
+ * to the rigid body named by {@code with} ({@link RigidConditions}). Fibres put an active muscle tension on the
+ * region's membrane triangles ({@link FibreConditions}).
  */
 public final class SceneConditions {
     /** The condition types. */
     public static final List<String> TYPES = List.of("fixed", "force", "gravity", "motion", "pressure", "contact",
-            "attachment", "sliding");
+            "attachment", "sliding", "fibres");
     /** The keys of each type. */
     public static final Map<String, List<String>> KEYS;
 
@@ -43,6 +45,7 @@ public final class SceneConditions {
         k.put("motion", List.of("type", "region", "displacement", "law"));
         k.put("pressure", List.of("type", "region", "pressure", "law"));
         k.putAll(RigidConditions.KEYS);
+        k.put("fibres", FibreConditions.KEYS);
         KEYS = java.util.Collections.unmodifiableMap(k);
     }
 
@@ -94,6 +97,8 @@ public final class SceneConditions {
                 try {
                     if (rigid != null) {
                         RigidConditions.apply(type, r, rigid, b, e.getValue(), u);
+                    } else if (type.equals("fibres")) {
+                        FibreConditions.apply(r, b, e.getValue(), law, u, region.name());
                     } else if (type.equals("pressure")) {
                         pressure(r, b, e.getValue(), law, u, region.name());
                     } else {
