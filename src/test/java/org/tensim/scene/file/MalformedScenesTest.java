@@ -135,6 +135,8 @@ class MalformedScenesTest {
                 "a rigid body needs exactly one surface"},
             {"helical-without-breathing.yaml", "helical-without-breathing.yaml:7:86: bodies.rib.motion.law",
                 "the helical-axis rib law follows a breathing cycle"},
+            {"shell-zone-modulus-not-pressure.yaml", "shell-zone-modulus-not-pressure.yaml:7:59: zones.scar.material.E",
+                "\"80 N/m\" is not a pressure (expected a value in Pa"},
         });
     }
 
