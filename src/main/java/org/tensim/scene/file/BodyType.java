@@ -39,6 +39,15 @@ public interface BodyType {
         return false;
     }
 
+    /**
+     * The named parts of a body this type built, each the set of its nodes (a region's {@code part: NAME}, e.g. a
+     * diaphragm's tendon or a shell's upper surface), in the order {@code tensim check} lists them; none by default
+     * (a {@code part:} region on such a body is refused).
+     */
+    default java.util.Map<String, java.util.BitSet> parts(SceneBody body) {
+        return java.util.Map.of();
+    }
+
     /** The zone models this type supports ({@code zones:} with {@code model:}); none by default. */
     default List<String> zoneModels() {
         return List.of();

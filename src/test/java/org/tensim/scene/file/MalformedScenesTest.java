@@ -137,6 +137,10 @@ class MalformedScenesTest {
                 "the helical-axis rib law follows a breathing cycle"},
             {"shell-zone-modulus-not-pressure.yaml", "shell-zone-modulus-not-pressure.yaml:7:59: zones.scar.material.E",
                 "\"80 N/m\" is not a pressure (expected a value in Pa"},
+            {"region-unknown-part.yaml", "region-unknown-part.yaml:5:15: regions.top.part",
+                "\"uper\" is not a part of body 's' (type shell); did you mean 'upper'? (its parts: upper, lower)"},
+            {"region-part-of-cube.yaml", "region-part-of-cube.yaml:5:18: regions.tendon.part",
+                "body 'c' (type cube) declares no parts"},
         });
     }
 

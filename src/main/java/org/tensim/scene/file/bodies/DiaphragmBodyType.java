@@ -65,6 +65,12 @@ public final class DiaphragmBodyType implements BodyType {
         return true;
     }
 
+    /** The diaphragm's parts ({@link org.tensim.scene.diaphragm.DiaphragmRegions#of}: tendon, muscle, ...). */
+    @Override
+    public java.util.Map<String, java.util.BitSet> parts(org.tensim.scene.file.SceneBody body) {
+        return org.tensim.scene.diaphragm.DiaphragmRegions.of(((DiaphragmSetup.Built) body.built()).scene());
+    }
+
     @Override
     public int[] build(BodyContext ctx, Topology topology) {
         MapReader r = ctx.keys();

@@ -136,6 +136,23 @@ public final class ShellBodyType implements BodyType {
         }
     }
 
+    /** A shell's parts: {@code upper} and {@code lower}, its two boundary surfaces' nodes. */
+    @Override
+    public Map<String, BitSet> parts(org.tensim.scene.file.SceneBody body) {
+        TwoSurfaces s = (TwoSurfaces) body.built();
+        BitSet upper = new BitSet();
+        for (int v = 0; v < s.mesh().vertexCount(); v++) {
+            upper.set(v, s.isUpper(v));
+        }
+        BitSet lower = new BitSet();
+        lower.set(0, s.mesh().vertexCount());
+        lower.andNot(upper);
+        Map<String, BitSet> parts = new java.util.LinkedHashMap<>();
+        parts.put("upper", upper);
+        parts.put("lower", lower);
+        return parts;
+    }
+
     /** {@code tensegrity} (the diaphragm's central tendon) and {@code mass-spring} (a patch of its own E) zones. */
     @Override
     public List<String> zoneModels() {
