@@ -13,6 +13,7 @@ import org.tensim.scene.conditions.TimeLaw;
  * <pre>
  * conditions:
  *   - {type: fixed, region: bottom}
+ *   - {type: fixed, region: floor, axes: [z]}
  *   - {type: force, region: top, direction: [0, -1, 0], magnitude: 400 N, law: wave}
  *   - {type: gravity, acceleration: [0, -9.81, 0], bodies: [liver]}
  *   - {type: motion, region: clamp, displacement: [0, 5 mm, 0], law: start}
@@ -21,7 +22,8 @@ import org.tensim.scene.conditions.TimeLaw;
  *   - {type: attachment, region: back, with: spine, threshold: 3 mm}
  *   - {type: sliding, region: pleura, with: cavity, stiffness: 50 N/m, hard: true}
  * </pre>
- * A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
+ * A fixed region's nodes do not move; with {@code axes} (a list of x, y, z) they are held on those axes only
+ * ({@link Node#hold}) and free on the others (all three: fixed). A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
  * motion moves every node of the region to {@code rest + displacement * law(t)}. The law is a name from
  * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent). A
  * pressure acts on the faces of the body's surface the region covers ({@link SurfaceFaces}): {@code -p law(t) A n}
@@ -37,7 +39,7 @@ public final class SceneConditions {
 
     static {
         Map<String, List<String>> k = new java.util.LinkedHashMap<>();
-        k.put("fixed", List.of("type", "region"));
+        k.put("fixed", List.of("type", "region", "axes"));
         k.put("force", List.of("type", "region", "direction", "magnitude", "law"));
         k.put("gravity", List.of("type", "acceleration", "bodies"));
         k.put("motion", List.of("type", "region", "displacement", "law"));
@@ -110,7 +112,14 @@ public final class SceneConditions {
     private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u) {
         List<Node> all = b.topology().nodes();
         if (type.equals("fixed")) {
-            nodes.stream().forEach(i -> all.get(i).fix());
+            int axes = r.has("axes") ? axes(r.required("axes")) : 7;
+            nodes.stream().forEach(i -> {
+                if (axes == 7) {
+                    all.get(i).fix();
+                } else {
+                    all.get(i).hold(axes);
+                }
+            });
         } else if (type.equals("force")) {
             double[] dir = r.vector("direction", QuantityKind.NUMBER, u);
             Vec3 d = new Vec3(dir[0], dir[1], dir[2]);
@@ -172,6 +181,26 @@ public final class SceneConditions {
                 out[o + 2] += fz * s;
             });
         }
+    }
+
+    /** The mask (bit 0 x, 1 y, 2 z) of an {@code axes: [x, z]} list: each axis once, at least one. */
+    static int axes(SceneNode list) {
+        List<SceneNode> items = list.isList() ? list.items() : List.of(list);
+        if (items.isEmpty()) {
+            throw SceneException.at(list, "expected a list of axes among x, y, z, e.g. [x, z]; got an empty list");
+        }
+        int mask = 0;
+        for (SceneNode a : items) {
+            int axis = a.isScalar() ? List.of("x", "y", "z").indexOf(a.text()) : -1;
+            if (axis < 0) {
+                throw SceneException.at(a, a.describe() + " is not an axis (expected x, y or z)");
+            }
+            if ((mask >> axis & 1) != 0) {
+                throw SceneException.at(a, "axis " + a.text() + " is given twice");
+            }
+            mask |= 1 << axis;
+        }
+        return mask;
     }
 
     static SceneRegions.Region region(SceneNode name, Map<String, SceneRegions.Region> regions) {

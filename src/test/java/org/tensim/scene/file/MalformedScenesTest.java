@@ -141,6 +141,8 @@ class MalformedScenesTest {
                 "\"uper\" is not a part of body 's' (type shell); did you mean 'upper'? (its parts: upper, lower)"},
             {"region-part-of-cube.yaml", "region-part-of-cube.yaml:5:18: regions.tendon.part",
                 "body 'c' (type cube) declares no parts"},
+            {"fixed-unknown-axis.yaml", "fixed-unknown-axis.yaml:7:45: conditions[0].axes[1]",
+                "\"w\" is not an axis (expected x, y or z)"},
         });
     }
 
