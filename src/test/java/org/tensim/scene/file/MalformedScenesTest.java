@@ -143,6 +143,8 @@ class MalformedScenesTest {
                 "body 'c' (type cube) declares no parts"},
             {"fixed-unknown-axis.yaml", "fixed-unknown-axis.yaml:7:45: conditions[0].axes[1]",
                 "\"w\" is not an axis (expected x, y or z)"},
+            {"force-magnitude-and-total.yaml", "force-magnitude-and-total.yaml:7:5: conditions[0]",
+                "give either magnitude (N on each node) or total (N split over the region's nodes), not both"},
         });
     }
 
