@@ -145,6 +145,9 @@ class MalformedScenesTest {
                 "\"w\" is not an axis (expected x, y or z)"},
             {"force-magnitude-and-total.yaml", "force-magnitude-and-total.yaml:7:5: conditions[0]",
                 "give either magnitude (N on each node) or total (N split over the region's nodes), not both"},
+            {"diaphragm-expect-column.yaml", "diaphragm-expect-column.yaml:6:14: expect[0].column",
+                "this scene's run writes no CSV columns: check its summary instead (summary: KEY; keys:"
+                    + " dome_excursion_mm"},
         });
     }
 
