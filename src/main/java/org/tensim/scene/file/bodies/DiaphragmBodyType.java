@@ -78,10 +78,15 @@ public final class DiaphragmBodyType implements BodyType {
         return m;
     }
 
+    /** Each built diaphragm's parts, computed once for all its regions (the apposition zone queries the bones). */
+    private final java.util.Map<Object, java.util.Map<String, java.util.BitSet>> parts =
+            java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
+
     /** The diaphragm's parts ({@link org.tensim.scene.diaphragm.DiaphragmRegions#of}: tendon, muscle, ...). */
     @Override
     public java.util.Map<String, java.util.BitSet> parts(org.tensim.scene.file.SceneBody body) {
-        return org.tensim.scene.diaphragm.DiaphragmRegions.of(((DiaphragmSetup.Built) body.built()).scene());
+        return parts.computeIfAbsent(body.built(),
+                b -> org.tensim.scene.diaphragm.DiaphragmRegions.of(((DiaphragmSetup.Built) b).scene()));
     }
 
     @Override

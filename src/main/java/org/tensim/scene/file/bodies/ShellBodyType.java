@@ -36,7 +36,8 @@ import org.tensim.scene.shell.TwoSurfaces;
  * (the same with edge springs) or {@code paper} (the paper's springs: faces, folding springs, columns and
  * diagonals, no rigid link).</li>
  * </ul>
- * Node v is vertex v: the upper surface's vertices first, then the lower's. Zones: {@code tensegrity} (see
+ * Node v is vertex v: the upper surface's vertices first, then the lower's. Zones: {@code tensegrity} and
+ * {@code mass-spring} with their own E; parts: {@code upper} and {@code lower} (see
  * {@link #applyZone}).
  */
 public final class ShellBodyType implements BodyType {
