@@ -3,9 +3,12 @@ package org.tensim.app;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.tensim.experiment.SceneExpectations;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.io.FileDigest;
+import org.tensim.io.Json;
 import org.tensim.io.RunFolder;
+import org.tensim.io.RunStatus;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.file.RunSettings;
@@ -21,8 +24,9 @@ import picocli.CommandLine.ParameterException;
  * {@code tensim diaphragm} runs it ({@link DiaphragmCommand#report}, the same outputs and summary figures), its
  * integrator, step and duration from the file's run block ({@code dt: auto} for the step the time-step policy
  * recommends, the command's default), with the scene file, its digest and the overrides added to the summary.
- * The diaphragm brings its own attachments, loads and outputs: the loader refuses other bodies, zones, conditions,
- * probes and expectations beside it ({@link org.tensim.scene.file.BodyType#standalone()}).
+ * The diaphragm brings its own attachments, loads and outputs: the loader refuses other bodies, zones, conditions
+ * and probes beside it ({@link org.tensim.scene.file.BodyType#standalone()}); its {@code expect:} checks read the
+ * summary's breathing figures, and a failed one gives status expectation_failed (exit code 3), its outputs kept.
  */
 final class DiaphragmSceneRun {
     private DiaphragmSceneRun() {
@@ -56,7 +60,22 @@ final class DiaphragmSceneRun {
             fields.put("scene", scene.file().toString());
             fields.put("scene_digest", FileDigest.of(List.of(scene.file())));
             fields.put("overrides", scene.overrides());
-            DiaphragmCommand.finish(spec, f, fields);
+            if (scene.expect().isEmpty()) {
+                DiaphragmCommand.finish(spec, f, fields);
+                return;
+            }
+            // The file's checks read the summary's figures (no probe columns): evaluated as SceneRunner does.
+            List<Map<String, Object>> outcomes = SceneExpectations.evaluate(scene.expect(), null, fields);
+            long failed = SceneExpectations.failed(outcomes);
+            fields.put("expectations", outcomes);
+            fields.put("expectations_failed", failed);
+            RunCommand.printExpectations(scene, fields);
+            if (fields.containsKey("diverged") || failed == 0) {
+                DiaphragmCommand.finish(spec, f, fields);
+            } else {
+                Map<String, Object> summary = f.finish(RunStatus.EXPECTATION_FAILED, fields);
+                System.out.println(Json.line(summary));
+            }
         });
     }
 }

@@ -85,7 +85,7 @@ public final class RunCommand implements Callable<Integer> {
 
     /** One line per check of the expect block; a failed one also on standard error. */
     @SuppressWarnings("unchecked")
-    private static void printExpectations(Scene scene, Map<String, Object> summary) {
+    static void printExpectations(Scene scene, Map<String, Object> summary) {
         Object outcomes = summary.get("expectations");
         if (!(outcomes instanceof List<?> list)) {
             return;

@@ -15,6 +15,7 @@ public final class Node {
     private final double massKg;
     private boolean fixed;
     private Motion motion;
+    private int heldAxes;
 
     Node(int id, Vec3 position, double massKg) {
         this.id = id;
@@ -59,6 +60,28 @@ public final class Node {
         return this;
     }
 
+    /**
+     * Holds the node at its initial coordinate on some axes only ({@code axes}: bit 0 x, bit 1 y, bit 2 z), free on
+     * the others: the solver zeroes the force on those coordinates at every force pass and puts them back at rest
+     * (velocity 0) after every step. Adds to the axes held before. Returns this node.
+     */
+    public Node hold(int axes) {
+        if (axes <= 0 || axes > 7) {
+            throw new IllegalArgumentException("node " + id + ": held axes must be a mask of x (1), y (2), z (4), got "
+                    + axes);
+        }
+        if (motion != null) {
+            throw new IllegalStateException("node " + id + " is driven by a motion; it cannot also be held on an axis");
+        }
+        heldAxes |= axes;
+        return this;
+    }
+
+    /** The axes the node is held on ({@link #hold}: bit 0 x, 1 y, 2 z); 0 when none. A fixed node is held on all. */
+    public int heldAxes() {
+        return fixed ? 7 : heldAxes;
+    }
+
     /** Prescribes this node's position as a function of time. Returns this node. */
     public Node drive(Motion m) {
         if (m == null) {
@@ -66,6 +89,9 @@ public final class Node {
         }
         if (fixed) {
             throw new IllegalStateException("node " + id + " is fixed; it cannot also be driven");
+        }
+        if (heldAxes != 0) {
+            throw new IllegalStateException("node " + id + " is held on an axis; it cannot also be driven");
         }
         motion = m;
         return this;

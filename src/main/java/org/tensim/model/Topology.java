@@ -172,6 +172,44 @@ public final class Topology {
     }
 
     /**
+     * Puts {@code s} in the place of spring {@code index}, on the same two nodes: a scene's zone giving part of a
+     * body its own stiffness before the topology is compiled. The spring's position in the list is kept, so a
+     * compiled state's order (and its results, to the bit) is that of the unchanged springs.
+     */
+    public void replaceSpring(int index, Spring s) {
+        Spring old = springs.get(Check.index("spring", index, springs.size()));
+        if (old.a() != s.a() || old.b() != s.b()) {
+            throw new IllegalArgumentException("spring " + index + " joins nodes " + old.a() + "-" + old.b()
+                    + "; its replacement must join the same, got " + s.a() + "-" + s.b());
+        }
+        springs.set(index, s);
+    }
+
+    /** As {@link #replaceSpring} for membrane triangle {@code index}: the same corners p and q. */
+    public void replaceTriangle(int index, TriangleElement e) {
+        TriangleElement old = triangles.get(Check.index("triangle", index, triangles.size()));
+        for (int k = 0; k < 3; k++) {
+            if (old.p(k) != e.p(k) || old.q(k) != e.q(k)) {
+                throw new IllegalArgumentException("triangle " + index + "'s replacement must have the same corners"
+                        + " (corner " + k + ": " + old.p(k) + "/" + old.q(k) + ", got " + e.p(k) + "/" + e.q(k) + ")");
+            }
+        }
+        triangles.set(index, e);
+    }
+
+    /** As {@link #replaceSpring} for transverse shear element {@code index}: the same six nodes. */
+    public void replaceShear(int index, TransverseShear e) {
+        TransverseShear old = shears.get(Check.index("transverse shear element", index, shears.size()));
+        for (int a = 0; a < 6; a++) {
+            if (old.node(a) != e.node(a)) {
+                throw new IllegalArgumentException("transverse shear element " + index + "'s replacement must have"
+                        + " the same nodes (node " + a + ": " + old.node(a) + ", got " + e.node(a) + ")");
+            }
+        }
+        shears.set(index, e);
+    }
+
+    /**
      * Adds a penalty on the volume change of a tet (4 nodes) or a hexahedral cell (8, in the corner order of
      * {@link VolumeElement}), at rest in the nodes' current positions; see {@link VolumeElement}.
      *

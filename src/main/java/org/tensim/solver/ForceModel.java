@@ -154,6 +154,11 @@ public final class ForceModel {
         for (ForceTerm term : terms) {
             term.addForces(t, px, pv, f);
         }
+        // Coordinates held on an axis (Node#hold): the hold's reaction cancels every force on them, so they do not
+        // accelerate; Simulation#step puts them back at rest after the step (the implicit integrators' coupling).
+        for (int k : s.heldDof) {
+            f[k] = 0;
+        }
     }
 
     /**

@@ -299,6 +299,10 @@ public final class Simulation {
         if (links || hardContacts) {
             updateVelocities(dt);
         }
+        for (int k : state.heldDof) { // held coordinates stay at rest whatever the integrator's linear solve gave
+            state.x[k] = state.x0[k];
+            state.v[k] = 0;
+        }
         long t3 = System.nanoTime();
         profile.record(Stage.VELOCITY, t3 - t2);
 

@@ -88,13 +88,11 @@ public final class SystemState {
     public final Motion[] drivenMotion;
     final Vec3[] drivenRest;
 
-    /** Fixed nodes. */
-    public final int[] fixedNode;
+    /** Fixed nodes. */ public final int[] fixedNode;
+    /** Coordinates 3 i + axis of free nodes held on an axis ({@link Node#hold}). */ public final int[] heldDof;
 
-    /** True when at least one spring has axial damping (selects the force loop). */
-    boolean axialDamping;
-    /** True when at least one membrane triangle is damped. */
-    boolean triangleDamping;
+    /** True when at least one spring has axial damping (selects the force loop). */ boolean axialDamping;
+    /** True when at least one membrane triangle is damped. */ boolean triangleDamping;
 
     double gx;
     double gy;
@@ -142,6 +140,8 @@ public final class SystemState {
             }
         }
 
+        heldDof = t.nodes().stream().filter(n -> !n.isFixed()).flatMapToInt(n -> java.util.stream.IntStream.range(0, 3)
+                .filter(a -> (n.heldAxes() >> a & 1) != 0).map(a -> 3 * n.id() + a)).toArray();
         List<Spring> s = t.springs();
         springA = new int[s.size()];
         springB = new int[s.size()];

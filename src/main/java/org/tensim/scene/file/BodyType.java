@@ -31,12 +31,30 @@ public interface BodyType {
 
     /**
      * Whether a body of this type is a whole experiment (the diaphragm): it brings its own supports, loads and
-     * outputs, so its file has it alone, without zones, conditions, probes or expectations (refused), its run is its
-     * type's own, and {@code run: {dt: auto}} leaves the step to its time-step policy. False by default (and
-     * {@code dt: auto} is refused).
+     * outputs, so its file has it alone, without zones, conditions or probes (refused), its run is its type's own,
+     * its {@code expect:} checks read that run's summary ({@link #summaryKeys()}), and {@code run: {dt: auto}} leaves
+     * the step to its time-step policy. False by default (and {@code dt: auto} is refused).
      */
     default boolean standalone() {
         return false;
+    }
+
+    /**
+     * The named parts of a body this type built, each the set of its nodes (a region's {@code part: NAME}, e.g. a
+     * diaphragm's tendon or a shell's upper surface), in the order {@code tensim check} lists them; none by default
+     * (a {@code part:} region on such a body is refused).
+     */
+    default java.util.Map<String, java.util.BitSet> parts(SceneBody body) {
+        return java.util.Map.of();
+    }
+
+    /**
+     * For a {@link #standalone()} type, the numbers its own run writes to summary.json that an {@code expect:}
+     * check may read ({@code summary: KEY}), each with its unit ("" for a count or a ratio); the file's checks read
+     * these only (it writes no probe columns). None by default.
+     */
+    default java.util.Map<String, String> summaryKeys() {
+        return java.util.Map.of();
     }
 
     /** The zone models this type supports ({@code zones:} with {@code model:}); none by default. */

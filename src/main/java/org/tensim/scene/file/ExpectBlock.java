@@ -39,8 +39,14 @@ final class ExpectBlock {
             throw SceneException.at(block, "expected a list of checks (at least one), e.g. - {column: p_dy_m, stat:"
                     + " min, between: [-9 m, -7 m]}, got " + block.describe());
         }
-        List<String> columns = SceneExpectation.columns(probes);
-        Map<String, String> summary = SceneExpectation.summaryKeys(bodies.keySet(), columns);
+        // A standalone body's run (the diaphragm's) writes its own summary and no probe columns.
+        boolean standalone = bodies.values().stream().anyMatch(b -> BodyTypes.get(b.type()).standalone());
+        List<String> columns = standalone ? List.of() : SceneExpectation.columns(probes);
+        Map<String, String> summary = standalone ? new java.util.LinkedHashMap<>()
+                : SceneExpectation.summaryKeys(bodies.keySet(), columns);
+        for (SceneBody b : bodies.values()) {
+            summary.putAll(BodyTypes.get(b.type()).summaryKeys());
+        }
         for (SceneNode item : block.items()) {
             out.add(one(item, columns, summary, units));
         }
@@ -62,6 +68,10 @@ final class ExpectBlock {
             source = "column";
             SceneNode c = r.scalar("column");
             key = c.text();
+            if (columns.isEmpty()) {
+                throw SceneException.at(c, "this scene's run writes no CSV columns: check its summary instead"
+                        + " (summary: KEY; keys: " + String.join(", ", summary.keySet()) + ")");
+            }
             if (!columns.contains(key)) {
                 throw SceneException.at(c, c.describe() + " is not a column of this scene's CSV"
                         + DidYouMean.suggest(key, columns) + " (columns: " + String.join(", ", columns) + ")");

@@ -12,14 +12,14 @@ import java.util.Map;
  * <li>a body's keys its type lists in {@link BodyType#liveKeys()} (a cube's {@code stiffness}, a volume's
  * {@code material.E});</li>
  * <li>a zone's {@code material} keys its body's type lists in {@link BodyType#liveZoneMaterialKeys()};</li>
- * <li>a force's {@code magnitude} and {@code direction[i]}, gravity's {@code acceleration[i]};</li>
+ * <li>a force's {@code magnitude} (or {@code total}) and {@code direction[i]}, gravity's {@code acceleration[i]};</li>
  * <li>a sine law's {@code amplitude}, a ramp's {@code from} and {@code to}.</li>
  * </ul>
  * Everything else (a mesh, a cell size, a region, a density, a time) needs the scene rebuilt.
  */
 public final class LiveKeys {
     /** Condition keys that can change live, by condition type. */
-    static final Map<String, List<String>> CONDITIONS = Map.of("force", List.of("magnitude", "direction"),
+    static final Map<String, List<String>> CONDITIONS = Map.of("force", List.of("magnitude", "total", "direction"),
             "gravity", List.of("acceleration"));
     /** Law keys that can change live, by law type. */
     static final Map<String, List<String>> LAWS = Map.of("sine", List.of("amplitude"), "ramp", List.of("from", "to"));

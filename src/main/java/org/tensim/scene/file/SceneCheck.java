@@ -33,6 +33,10 @@ public final class SceneCheck {
             for (String line : b.report()) {
                 out.add("  " + line);
             }
+            long held = b.topology().nodes().stream().filter(n -> !n.isFixed() && n.heldAxes() != 0).count();
+            if (held > 0) {
+                out.add("  " + held + " node(s) held on some axes only (fixed with axes:), free on the others");
+            }
             if (!b.topology().contacts().isEmpty()) {
                 out.add("  " + b.topology().contacts().size() + " contact pair(s) with "
                         + String.join(", ", b.topology().contactBodies().stream().map(c -> c.name()

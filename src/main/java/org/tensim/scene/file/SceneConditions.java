@@ -13,7 +13,9 @@ import org.tensim.scene.conditions.TimeLaw;
  * <pre>
  * conditions:
  *   - {type: fixed, region: bottom}
+ *   - {type: fixed, region: floor, axes: [z]}
  *   - {type: force, region: top, direction: [0, -1, 0], magnitude: 400 N, law: wave}
+ *   - {type: force, region: top, direction: [0, -1, 0], total: 4 mN, split: mass}
  *   - {type: gravity, acceleration: [0, -9.81, 0], bodies: [liver]}
  *   - {type: motion, region: clamp, displacement: [0, 5 mm, 0], law: start}
  *   - {type: pressure, region: top_face, pressure: 200 Pa, law: breath}
@@ -22,7 +24,11 @@ import org.tensim.scene.conditions.TimeLaw;
  *   - {type: sliding, region: pleura, with: cavity, stiffness: 50 N/m, hard: true}
  *   - {type: fibres, region: muscle, stress: 20 kPa, law: breath, towards: [0, 0, 0.1], axis: [0, 0, 1]}
  * </pre>
- * A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node). A
+ * A fixed region's nodes do not move; with {@code axes} (a list of x, y, z) they are held on those axes only
+ * ({@link Node#hold}) and free on the others (all three: fixed). A force acts on every node of the region: {@code magnitude * law(t)} along the unit direction (N a node), or, with
+ * {@code total} instead of {@code magnitude}, the total split over the region's nodes (of all its bodies) in equal
+ * shares ({@code split: equal}, the default) or by nodal mass ({@code split: mass}), so the region carries
+ * {@code total * law(t)} whatever its node count. A
  * motion moves every node of the region to {@code rest + displacement * law(t)}. The law is a name from
  * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent). A
  * pressure acts on the faces of the body's surface the region covers ({@link SurfaceFaces}): {@code -p law(t) A n}
@@ -39,8 +45,8 @@ public final class SceneConditions {
 
     static {
         Map<String, List<String>> k = new java.util.LinkedHashMap<>();
-        k.put("fixed", List.of("type", "region"));
-        k.put("force", List.of("type", "region", "direction", "magnitude", "law"));
+        k.put("fixed", List.of("type", "region", "axes"));
+        k.put("force", List.of("type", "region", "direction", "magnitude", "total", "split", "law"));
         k.put("gravity", List.of("type", "acceleration", "bodies"));
         k.put("motion", List.of("type", "region", "displacement", "law"));
         k.put("pressure", List.of("type", "region", "pressure", "law"));
@@ -92,6 +98,7 @@ public final class SceneConditions {
             RigidBody rigid = RigidConditions.TYPES.contains(type) ? RigidConditions.rigid(r, bodies, rigids) : null;
             SceneRegions.Region region = region(r.scalar("region"), regions);
             TimeLaw law = r.has("law") ? law(r.scalar("law"), laws) : TimeLaw.one();
+            double[] share = type.equals("force") ? shares(r, region, bodies) : null;
             for (Map.Entry<String, BitSet> e : region.nodes().entrySet()) {
                 SceneBody b = bodies.get(e.getKey());
                 try {
@@ -102,7 +109,7 @@ public final class SceneConditions {
                     } else if (type.equals("pressure")) {
                         pressure(r, b, e.getValue(), law, u, region.name());
                     } else {
-                        applyTo(type, r, b, e.getValue(), law, u);
+                        applyTo(type, r, b, e.getValue(), law, u, share);
                     }
                 } catch (IllegalStateException ex) {
                     throw SceneException.at(c, ex.getMessage() + " (body '" + b.name() + "', region '"
@@ -112,29 +119,34 @@ public final class SceneConditions {
         }
     }
 
-    private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u) {
+    private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u,
+            double[] share) {
         List<Node> all = b.topology().nodes();
         if (type.equals("fixed")) {
-            nodes.stream().forEach(i -> all.get(i).fix());
+            int axes = r.has("axes") ? axes(r.required("axes")) : 7;
+            nodes.stream().forEach(i -> {
+                if (axes == 7) {
+                    all.get(i).fix();
+                } else {
+                    all.get(i).hold(axes);
+                }
+            });
         } else if (type.equals("force")) {
             double[] dir = r.vector("direction", QuantityKind.NUMBER, u);
             Vec3 d = new Vec3(dir[0], dir[1], dir[2]);
             if (!(d.norm() > 0)) {
                 throw SceneException.at(r.node().get("direction"), "the direction must not be zero");
             }
-            double m = r.nonNegative("magnitude", QuantityKind.FORCE, u, Double.NaN);
-            // As ForceLaw.sinusoid writes its force: unit direction times the magnitude, then times the law.
             Vec3 unit = d.normalized();
-            double fx = unit.x() * m;
-            double fy = unit.y() * m;
-            double fz = unit.z() * m;
-            ForceLaw f = (t, out, o) -> {
-                double s = law.value(t);
-                out[o] += fx * s;
-                out[o + 1] += fy * s;
-                out[o + 2] += fz * s;
-            };
-            nodes.stream().forEach(i -> b.topology().applyForce(all.get(i), f));
+            if (share == null) {
+                double m = r.nonNegative("magnitude", QuantityKind.FORCE, u, Double.NaN);
+                ForceLaw f = nodalForce(unit, m, law);
+                nodes.stream().forEach(i -> b.topology().applyForce(all.get(i), f));
+            } else {
+                double total = r.nonNegative("total", QuantityKind.FORCE, u, Double.NaN);
+                nodes.stream().forEach(i -> b.topology().applyForce(all.get(i), nodalForce(unit,
+                        total * (share[1] > 0 ? all.get(i).mass() / share[1] : 1 / share[0]), law)));
+            }
         } else {
             double[] dv = r.vector("displacement", QuantityKind.LENGTH, u);
             nodes.stream().forEach(i -> all.get(i).drive((t, rest, out, o) -> {
@@ -144,6 +156,47 @@ public final class SceneConditions {
                 out[o + 2] = rest.z() + dv[2] * s;
             }));
         }
+    }
+
+    /** As ForceLaw.sinusoid writes its force: the unit direction times the magnitude (N), then times the law. */
+    private static ForceLaw nodalForce(Vec3 unit, double magnitudeN, TimeLaw law) {
+        double fx = unit.x() * magnitudeN;
+        double fy = unit.y() * magnitudeN;
+        double fz = unit.z() * magnitudeN;
+        return (t, out, o) -> {
+            double s = law.value(t);
+            out[o] += fx * s;
+            out[o + 1] += fy * s;
+            out[o + 2] += fz * s;
+        };
+    }
+
+    /**
+     * A force's split: null for {@code magnitude} (N a node); for {@code total}, {node count, 0} (equal shares) or
+     * {node count, total mass in kg} (by nodal mass) over the region's nodes in all its bodies. Exactly one of the two.
+     */
+    private static double[] shares(MapReader r, SceneRegions.Region region, Map<String, SceneBody> bodies) {
+        if (r.has("magnitude") == r.has("total")) {
+            throw SceneException.at(r.node(), "give either magnitude (N on each node) or total (N split over the"
+                    + " region's nodes)" + (r.has("total") ? ", not both" : ""));
+        }
+        if (!r.has("total")) {
+            if (r.has("split")) {
+                throw SceneException.at(r.node().get("split"), "split goes with total, not magnitude (N a node)");
+            }
+            return null;
+        }
+        boolean byMass = r.choice("split", List.of("equal", "mass"), "equal").equals("mass");
+        double count = 0;
+        double mass = 0;
+        for (Map.Entry<String, BitSet> e : region.nodes().entrySet()) {
+            List<Node> all = bodies.get(e.getKey()).topology().nodes();
+            count += e.getValue().cardinality();
+            for (int i = e.getValue().nextSetBit(0); i >= 0; i = e.getValue().nextSetBit(i + 1)) {
+                mass += all.get(i).mass();
+            }
+        }
+        return new double[] {count, byMass ? mass : 0};
     }
 
     /** The pressure's nodal forces: {@code p law(t)} times those of a unit pressure on the faces covered. */
@@ -177,6 +230,26 @@ public final class SceneConditions {
                 out[o + 2] += fz * s;
             });
         }
+    }
+
+    /** The mask (bit 0 x, 1 y, 2 z) of an {@code axes: [x, z]} list: each axis once, at least one. */
+    static int axes(SceneNode list) {
+        List<SceneNode> items = list.isList() ? list.items() : List.of(list);
+        if (items.isEmpty()) {
+            throw SceneException.at(list, "expected a list of axes among x, y, z, e.g. [x, z]; got an empty list");
+        }
+        int mask = 0;
+        for (SceneNode a : items) {
+            int axis = a.isScalar() ? List.of("x", "y", "z").indexOf(a.text()) : -1;
+            if (axis < 0) {
+                throw SceneException.at(a, a.describe() + " is not an axis (expected x, y or z)");
+            }
+            if ((mask >> axis & 1) != 0) {
+                throw SceneException.at(a, "axis " + a.text() + " is given twice");
+            }
+            mask |= 1 << axis;
+        }
+        return mask;
     }
 
     static SceneRegions.Region region(SceneNode name, Map<String, SceneRegions.Region> regions) {

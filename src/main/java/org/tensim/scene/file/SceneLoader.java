@@ -89,7 +89,7 @@ public final class SceneLoader {
                 throw SceneException.at(top.required("bodies"), "a " + b.type() + " body brings its own supports and"
                         + " loads and is a file's only body; got " + bodies.keySet());
             }
-            for (String key : List.of("zones", "conditions", "probes", "expect")) {
+            for (String key : List.of("zones", "conditions", "probes")) {
                 if (top.has(key)) {
                     throw SceneException.at(top.required(key), "a " + b.type() + " body brings its own supports,"
                             + " loads and outputs: its file has no " + key + " block (docs/scenes.md)");

@@ -28,6 +28,8 @@ import org.tensim.model.Node;
  * <li>{@code surface: BODY}: the nodes that carry the body's surface (a volume's embedded surface: each vertex's
  * node of largest weight), on that body only; intersected with a box or a plane it is a part of the surface, on
  * whose faces a pressure acts ({@link SurfaceFaces});</li>
+ * <li>{@code part: NAME}: a part the body's type declares ({@link BodyType#parts}: a diaphragm's tendon, muscle,
+ * upper, lower, attached, free, apposition, apex; a shell's upper and lower), on every body of the region;</li>
  * <li>{@code union|intersection|difference: [r1, r2, ...]}: of other regions (difference: the first less the
  * others).</li>
  * </ul>
@@ -37,7 +39,7 @@ import org.tensim.model.Node;
 public final class SceneRegions {
     /** Ways of choosing nodes. */
     public static final List<String> KINDS = List.of("box", "sphere", "plane", "indices", "labels", "surface",
-            "union", "intersection", "difference");
+            "part", "union", "intersection", "difference");
     /** The keys of a region. */
     public static final List<String> KEYS;
     /** The keys of each geometric kind. */
@@ -177,6 +179,8 @@ public final class SceneRegions {
                 return labels(v, body);
             case "surface":
                 return surface(v, body);
+            case "part":
+                return part(v, body);
             default:
                 return combination(kind, v, body);
         }
@@ -289,6 +293,25 @@ public final class SceneRegions {
             s.set(n);
         }
         return s;
+    }
+
+    private static BitSet part(SceneNode v, SceneBody body) {
+        if (!v.isScalar()) {
+            throw SceneException.at(v, "expected the name of a part of body '" + body.name() + "', got "
+                    + v.describe());
+        }
+        Map<String, BitSet> parts = BodyTypes.get(body.type()).parts(body);
+        if (parts.isEmpty()) {
+            throw SceneException.at(v, "body '" + body.name() + "' (type " + body.type() + ") declares no parts:"
+                    + " select its nodes by a box, a sphere, a plane, indices or labels");
+        }
+        BitSet s = parts.get(v.text());
+        if (s == null) {
+            throw SceneException.at(v, "\"" + v.text() + "\" is not a part of body '" + body.name() + "' (type "
+                    + body.type() + ")" + DidYouMean.suggest(v.text(), parts.keySet()) + " (its parts: "
+                    + String.join(", ", parts.keySet()) + ")");
+        }
+        return (BitSet) s.clone();
     }
 
     private BitSet labels(SceneNode v, SceneBody body) {

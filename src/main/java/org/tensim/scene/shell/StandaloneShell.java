@@ -31,6 +31,19 @@ public final class StandaloneShell {
      */
     public static Topology of(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor,
             double betaS) {
+        return of(s, m, model, bendingFactor, betaS, (i, j) -> m.youngPa());
+    }
+
+    /**
+     * As {@link #of(TwoSurfaces, ShellMaterial, TissueModel, double, double)} with Young's modulus edge by edge, as
+     * the diaphragm gives its tendon and muscle theirs ({@link ShellNetwork}: a spring takes its edge's E, a
+     * membrane triangle or shear element the mean of its three edges'); {@code m}'s E stays the paper model's
+     * columns' and its nu, thickness and density the whole shell's. A scene file's zones of their own E.
+     *
+     * @param young E along an edge (i, j), Pa (&gt; 0)
+     */
+    public static Topology of(TwoSurfaces s, ShellMaterial m, TissueModel model, double bendingFactor,
+            double betaS, ShellNetwork.EdgeModulus young) {
         org.tensim.model.Check.nonNegative("shell damping time", "s", betaS);
         TriangleMesh mesh = s.mesh();
         double[] area = SurfaceGeometry.vertexAreas(mesh);
@@ -65,7 +78,7 @@ public final class StandaloneShell {
                 t.addShear(upper, lower, kappaGPa, thicknessM, betaS);
             }
         };
-        ShellNetwork n = new ShellNetwork(s, area, (i, j) -> m.youngPa(), m, model, bendingFactor);
+        ShellNetwork n = new ShellNetwork(s, area, young, m, model, bendingFactor);
         n.membrane(sink);
         boolean[] linked = new boolean[mesh.vertexCount()];
         Set<Long> linkPairs = new java.util.HashSet<>();

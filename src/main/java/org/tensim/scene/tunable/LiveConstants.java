@@ -57,7 +57,7 @@ public final class LiveConstants {
             return "rigid links";
         }
         if (!Arrays.equals(a.fixedNode, b.fixedNode) || !Arrays.equals(a.drivenNode, b.drivenNode)
-                || !Arrays.equals(a.forceNode, b.forceNode)) {
+                || !Arrays.equals(a.forceNode, b.forceNode) || !Arrays.equals(a.heldDof, b.heldDof)) {
             return "fixed, driven or loaded nodes";
         }
         if (!Arrays.equals(a.triP, b.triP) || !Arrays.equals(a.triMu, b.triMu)

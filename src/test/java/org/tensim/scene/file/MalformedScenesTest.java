@@ -135,6 +135,19 @@ class MalformedScenesTest {
                 "a rigid body needs exactly one surface"},
             {"helical-without-breathing.yaml", "helical-without-breathing.yaml:7:86: bodies.rib.motion.law",
                 "the helical-axis rib law follows a breathing cycle"},
+            {"shell-zone-modulus-not-pressure.yaml", "shell-zone-modulus-not-pressure.yaml:7:59: zones.scar.material.E",
+                "\"80 N/m\" is not a pressure (expected a value in Pa"},
+            {"region-unknown-part.yaml", "region-unknown-part.yaml:5:15: regions.top.part",
+                "\"uper\" is not a part of body 's' (type shell); did you mean 'upper'? (its parts: upper, lower)"},
+            {"region-part-of-cube.yaml", "region-part-of-cube.yaml:5:18: regions.tendon.part",
+                "body 'c' (type cube) declares no parts"},
+            {"fixed-unknown-axis.yaml", "fixed-unknown-axis.yaml:7:45: conditions[0].axes[1]",
+                "\"w\" is not an axis (expected x, y or z)"},
+            {"force-magnitude-and-total.yaml", "force-magnitude-and-total.yaml:7:5: conditions[0]",
+                "give either magnitude (N on each node) or total (N split over the region's nodes), not both"},
+            {"diaphragm-expect-column.yaml", "diaphragm-expect-column.yaml:6:14: expect[0].column",
+                "this scene's run writes no CSV columns: check its summary instead (summary: KEY; keys:"
+                    + " dome_excursion_mm"},
         });
     }
 

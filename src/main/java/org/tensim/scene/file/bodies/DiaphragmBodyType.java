@@ -65,6 +65,30 @@ public final class DiaphragmBodyType implements BodyType {
         return true;
     }
 
+    /** The breathing figures of the run's summary an {@code expect:} check may read (BreathingMetrics#fields). */
+    public static final List<String> SUMMARY_KEYS = List.of("dome_excursion_mm", "apex_descent_mm",
+            "right_dome_descent_mm", "left_dome_descent_mm", "largest_descent_mm", "ap_extent_change_mm",
+            "transverse_extent_change_mm", "vertical_extent_change_mm");
+
+    /** {@link #SUMMARY_KEYS}, in mm: present when the run measured a whole inspiration (else a check fails). */
+    @Override
+    public java.util.Map<String, String> summaryKeys() {
+        java.util.Map<String, String> m = new java.util.LinkedHashMap<>();
+        SUMMARY_KEYS.forEach(k -> m.put(k, "mm"));
+        return m;
+    }
+
+    /** Each built diaphragm's parts, computed once for all its regions (the apposition zone queries the bones). */
+    private final java.util.Map<Object, java.util.Map<String, java.util.BitSet>> parts =
+            java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
+
+    /** The diaphragm's parts ({@link org.tensim.scene.diaphragm.DiaphragmRegions#of}: tendon, muscle, ...). */
+    @Override
+    public java.util.Map<String, java.util.BitSet> parts(org.tensim.scene.file.SceneBody body) {
+        return parts.computeIfAbsent(body.built(),
+                b -> org.tensim.scene.diaphragm.DiaphragmRegions.of(((DiaphragmSetup.Built) b).scene()));
+    }
+
     @Override
     public int[] build(BodyContext ctx, Topology topology) {
         MapReader r = ctx.keys();
