@@ -78,7 +78,7 @@ class SurfaceSlidingTest {
                     fmax = Math.max(fmax, Math.abs(f[k]));
                 }
                 assertTrue(fmax > 1e-3, mode + " seed " + seed + ": forces " + fmax + " N");
-                assertTrue(worst < 1e-6 * fmax, mode + " seed " + seed + ": |f + dE/dx| = " + worst + " N against "
+                assertTrue(worst < 1e-8 * fmax, mode + " seed " + seed + ": |f + dE/dx| = " + worst + " N against "
                         + fmax + " N");
             }
         }
