@@ -11,6 +11,7 @@ import org.tensim.io.Progress;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunSignals;
 import org.tensim.io.RunStatus;
+import org.tensim.scene.file.CoupledBodies;
 import org.tensim.scene.file.RigidBody;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
@@ -23,7 +24,8 @@ import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /**
- * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation}, all stepped in lockstep
+ * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation} (bodies that touch or
+ * slide on each other share one, {@link CoupledBodies}), all stepped in lockstep
  * with the run's integrator and step, and coupled through the scene's rigid bodies, whose surfaces and motions
  * every body's contacts, attachments and slidings share (a rigid body has no state to step: its pose is a function
  * of time); after the start and after every {@code every}-th step one CSV row holds the time
@@ -38,11 +40,14 @@ public final class SceneRunner {
     }
 
     /** Runs the scene with {@code run} (the file's settings, possibly overridden) into the run folder. */
-    public static Map<String, Object> run(Scene scene, RunSettings run, RunFolder folder) throws IOException {
+    public static Map<String, Object> run(Scene loaded, RunSettings run, RunFolder folder) throws IOException {
+        Scene scene = CoupledBodies.merge(loaded); // bodies touching each other share one simulation
         List<SceneBody> bodies = new ArrayList<>(scene.bodies().values());
         Map<String, Simulation> sims = new LinkedHashMap<>();
         for (SceneBody b : bodies) {
-            sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator())));
+            Simulation sim = new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator()));
+            CoupledBodies.addTerms(b, sim);
+            sims.put(b.name(), sim);
         }
         Map<SceneProbe, int[]> springs = energySprings(scene, sims);
         List<String> header = SceneExpectation.columns(scene.probes());

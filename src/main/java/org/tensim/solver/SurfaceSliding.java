@@ -221,6 +221,20 @@ public final class SurfaceSliding implements ForceTerm {
         return gap[e] - readPlane[3];
     }
 
+    /**
+     * Each follower's signed distance d to its paired triangle's plane at positions x, m (+ outside), into out (one
+     * per follower); NaN for one off the surface (CONTACT, past a border) or whose triangle has no area. For a
+     * scene's rest distances.
+     */
+    public void distancesM(double[] x, double[] out) {
+        synchronized (readLock) {
+            mapping.apply(x, readPoints);
+            for (int e = 0; e < follower.length; e++) {
+                out[e] = gap[e] - penetration(e, x);
+            }
+        }
+    }
+
     /** The largest penetration over followers, max(0, g - d), m, at positions x (0 if none); off-surface ignored. */
     public double maxPenetrationM(double[] x) {
         return extreme(x, 1);
