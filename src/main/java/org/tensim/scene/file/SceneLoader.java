@@ -66,7 +66,8 @@ public final class SceneLoader {
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
         List<BodyCoupling> couplings = SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units,
                 rigids);
-        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids);
+        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids,
+                couplings);
         RunSettings run = RunSettings.read(top, units);
         for (SceneBody b : bodies.values()) {
             if (run.autoStep() && !BodyTypes.get(b.type()).standalone()) {
