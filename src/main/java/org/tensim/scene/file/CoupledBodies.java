@@ -180,7 +180,7 @@ public final class CoupledBodies {
                         + b.viscousDamping() + " N s/m and '" + members.get(0) + "' " + first.viscousDamping()
                         + ": bodies that touch or slide on each other share one state and one damping");
             }
-            if (!same) {
+            if (!same && b.gravity().norm() > 0) {
                 Vec3 g = b.gravity();
                 for (Node n : b.nodes()) {
                     t.applyForce(t.node(n.id() + offset.get(m)), ForceLaw.constant(g.times(n.mass())));
