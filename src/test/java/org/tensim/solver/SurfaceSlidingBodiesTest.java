@@ -157,4 +157,67 @@ class SurfaceSlidingBodiesTest {
         assertEquals(0.001, x[13], 1e-12);
         assertEquals(2, seen[0] + seen[1], "the surface slid far enough to pair the node with both triangles");
     }
+
+    /**
+     * A free node bouncing on a free-floating plate (4 nodes, 6 springs), no gravity, nothing fixed: the term's
+     * forces are internal, so the total momentum stays what it was to round-off, and the total energy (kinetic,
+     * springs and the term's) is conserved to the integrator's error (rk4, 20 000 steps a second).
+     */
+    @Test
+    void aFreeNodeOnAFreePlateConservesMomentumAndEnergy() {
+        Topology t = new Topology();
+        double[][] corners = {{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}};
+        for (double[] c : corners) {
+            t.addNode(c[0], c[1], 0, 0.01);
+        }
+        for (int a = 0; a < 4; a++) {
+            for (int b = a + 1; b < 4; b++) {
+                t.addSpring(t.node(a), t.node(b), 200, 0);
+            }
+        }
+        t.addNode(0.06, 0.03, 0.002, 0.005); // above triangle (0, 1, 2), 2 mm off the plate
+        Simulation sim = new Simulation(SystemState.compile(t), Integrators.create("rk4"));
+        double[] v = sim.state().v;
+        v[12] = 0.01; // m/s: sliding slowly along the plate (stays over the same triangle)
+        v[14] = -0.05; // and moving into it
+        SurfaceSliding term = new SurfaceSliding(new int[] {4}, identity(4, 5), new int[] {0, 1, 2, 0, 2, 3},
+                new double[] {50}, Mode.SLIDING, 0.002, sim.state().x);
+        sim.forces().addTerm(term);
+        double[] p0 = momentum(sim.state());
+        double e0 = energy(sim);
+        double worstE = 0;
+        for (int step = 0; step < 10000; step++) {
+            sim.step(5e-5);
+            worstE = Math.max(worstE, Math.abs(energy(sim) - e0));
+        }
+        double[] p1 = momentum(sim.state());
+        double scale = 0.005 * 0.05;
+        for (int a = 0; a < 3; a++) {
+            assertEquals(p0[a], p1[a], 1e-12 * scale, "momentum " + a);
+        }
+        assertTrue(e0 > 0 && worstE < 1e-6 * e0, "energy drift " + worstE + " J of " + e0 + " J");
+        assertTrue(term.maxSeparationM(sim.state().x) + term.maxPenetrationM(sim.state().x) > 1e-4,
+                "the node did move against the term");
+    }
+
+    private static double[] momentum(SystemState s) {
+        double[] p = new double[3];
+        for (int j = 0; j < s.nodeCount; j++) {
+            for (int a = 0; a < 3; a++) {
+                p[a] += s.mass[j] * s.v[3 * j + a];
+            }
+        }
+        return p;
+    }
+
+    private static double energy(Simulation sim) {
+        SystemState s = sim.state();
+        double k = 0;
+        for (int j = 0; j < s.nodeCount; j++) {
+            for (int a = 0; a < 3; a++) {
+                k += 0.5 * s.mass[j] * s.v[3 * j + a] * s.v[3 * j + a];
+            }
+        }
+        return k + sim.forces().elasticEnergy(sim.time(), s.x);
+    }
 }
