@@ -29,6 +29,7 @@ final class SurfacePairing {
     private final int[] around; // triangles sharing a vertex with triangle t: around[aroundStart[t]..]
     private final int[] aroundStart;
     private final int[] across; // 3 per triangle: the triangle across the edge opposite corner c, or -1 (border)
+    private final double[] sphere; // 4 per triangle: bounding sphere's centre and radius, m ({@link #bound})
 
     /**
      * @param triangles  3 point ids per triangle (outward normal by the right-hand rule on the winding)
@@ -81,6 +82,7 @@ final class SurfacePairing {
             lists[t] = s.stream().mapToInt(Integer::intValue).toArray();
             aroundStart[t + 1] = aroundStart[t] + lists[t].length;
         }
+        sphere = new double[4 * n];
         around = new int[aroundStart[n]];
         for (int t = 0; t < n; t++) {
             System.arraycopy(lists[t], 0, around, aroundStart[t], lists[t].length);
@@ -198,11 +200,41 @@ final class SurfacePairing {
         return dx * dx + dy * dy + dz * dz;
     }
 
-    /** The triangle whose closest point to y = (x[yo..yo+2]) is nearest, by testing all of them (the first of ties). */
+    /**
+     * Bounds every triangle at point positions p by a sphere (its centroid, and its farthest corner's distance from
+     * it), for {@link #nearest}. Allocation-free.
+     */
+    void bound(double[] p) {
+        for (int t = 0, n = triangleCount(); t < n; t++) {
+            int a = 3 * tri[3 * t], b = 3 * tri[3 * t + 1], c = 3 * tri[3 * t + 2];
+            double r2 = 0;
+            for (int k = 0; k < 3; k++) {
+                sphere[4 * t + k] = (p[a + k] + p[b + k] + p[c + k]) / 3;
+            }
+            for (int k = 0; k < 3; k++) {
+                int corner = 3 * tri[3 * t + k];
+                double dx = p[corner] - sphere[4 * t], dy = p[corner + 1] - sphere[4 * t + 1];
+                double dz = p[corner + 2] - sphere[4 * t + 2];
+                r2 = Math.max(r2, dx * dx + dy * dy + dz * dz);
+            }
+            sphere[4 * t + 3] = Math.sqrt(r2);
+        }
+    }
+
+    /**
+     * The triangle whose closest point to y = (x[yo..yo+2]) is nearest, by testing all of them (the first of ties),
+     * at the positions p last {@link #bound bounded}: a triangle whose sphere is farther than the best distance so far
+     * cannot be nearer and is not tested further.
+     */
     int nearest(double[] p, double[] x, int yo) {
         int best = 0;
         double bestD = Double.POSITIVE_INFINITY;
         for (int t = 0, n = triangleCount(); t < n; t++) {
+            double cx = x[yo] - sphere[4 * t], cy = x[yo + 1] - sphere[4 * t + 1], cz = x[yo + 2] - sphere[4 * t + 2];
+            double lower = Math.sqrt(cx * cx + cy * cy + cz * cz) - sphere[4 * t + 3];
+            if (lower > 0 && lower * lower >= bestD) {
+                continue;
+            }
             double d = closestDistance2(p, t, x, yo);
             if (d < bestD) {
                 bestD = d;

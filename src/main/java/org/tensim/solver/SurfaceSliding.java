@@ -145,6 +145,24 @@ public final class SurfaceSliding implements ForceTerm {
         repair(x);
     }
 
+    /**
+     * A term whose followers are held where they are at x, as a scene's conditions hold them: a SLIDING follower at
+     * its rest distance d0 to the surface (gap d0), a CONTACT follower beyond min(gap, d0) (one that starts closer
+     * than the gap is held from going deeper, not thrown out); one off the surface at x gets {@code gapM}. Pairs
+     * once (the constructor's arguments and refusals otherwise).
+     */
+    public static SurfaceSliding heldAtRest(int[] followers, LinearMapping surfacePoints, int[] triangles,
+            double[] stiffness, Mode mode, double gapM, double[] x) {
+        SurfaceSliding s = new SurfaceSliding(followers, surfacePoints, triangles, stiffness, mode, 0, x);
+        double[] d0 = new double[followers.length];
+        s.distancesM(x, d0);
+        for (int e = 0; e < d0.length; e++) {
+            double d = Double.isNaN(d0[e]) ? gapM : d0[e];
+            s.gap[e] = mode == Mode.SLIDING ? d : Math.min(gapM, d);
+        }
+        return s;
+    }
+
     private static double[] filled(int n, double v) {
         double[] a = new double[n];
         Arrays.fill(a, v);
@@ -158,6 +176,7 @@ public final class SurfaceSliding implements ForceTerm {
     public void repair(double[] x) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
+            surface.bound(readPoints);
             for (int e = 0; e < follower.length; e++) {
                 pair[e] = surface.nearest(readPoints, x, 3 * follower[e]);
             }

@@ -202,6 +202,7 @@ class SurfaceSlidingTest {
         }
         SurfacePairing pairing = new SurfacePairing(c.triangles(), c.mapping().pointCount());
         c.mapping().apply(x, p);
+        pairing.bound(p);
         SurfaceSliding fresh = c.term(Mode.SLIDING);
         int moved = 0;
         for (int e = 0; e < s.pairCount(); e++) {
@@ -212,6 +213,25 @@ class SurfaceSlidingTest {
             moved += fresh.pairedTriangle(e) != s.pairedTriangle(e) ? 1 : 0;
         }
         assertTrue(moved >= s.pairCount() / 2, moved + " of " + s.pairCount() + " followers changed triangle");
+    }
+
+    @Test
+    void heldAtRestTheFollowersStartWithoutForceAtTheirRestDistances() {
+        Case c = SlidingCases.random(13, 6, 12);
+        SurfaceSliding sliding = SurfaceSliding.heldAtRest(c.followers(), c.mapping(), c.triangles(), c.stiffness(),
+                Mode.SLIDING, 0, c.x());
+        assertEquals(0, sliding.energy(0, c.x()), 1e-30);
+        assertTrue(java.util.Arrays.stream(forces(sliding, c.x())).allMatch(v -> Math.abs(v) < 1e-15));
+        SurfaceSliding contact = SurfaceSliding.heldAtRest(c.followers(), c.mapping(), c.triangles(), c.stiffness(),
+                Mode.CONTACT, 0.001, c.x());
+        int capped = 0;
+        for (int e = 0; e < sliding.pairCount(); e++) {
+            double d0 = sliding.gapM(e);
+            assertEquals(Math.min(0.001, d0), contact.gapM(e), 0, "follower " + e);
+            capped += d0 > 0.001 ? 1 : 0;
+        }
+        assertTrue(capped > 0 && capped < sliding.pairCount(), capped + " followers start beyond the 1 mm gap");
+        assertEquals(0, contact.maxPenetrationM(c.x()), 1e-18);
     }
 
     @Test

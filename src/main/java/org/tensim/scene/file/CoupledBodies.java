@@ -235,15 +235,8 @@ public final class CoupledBodies {
             int n = c.followers().length;
             double[] k = new double[n];
             java.util.Arrays.fill(k, c.stiffnessNPerM());
-            SurfaceSliding probe = new SurfaceSliding(c.followers(), c.surface(), c.triangles(), k, c.mode(), 0, x);
-            double[] d0 = new double[n];
-            probe.distancesM(x, d0);
-            double[] gaps = new double[n];
-            for (int e = 0; e < n; e++) {
-                double d = Double.isNaN(d0[e]) ? c.gapM() : d0[e];
-                gaps[e] = c.mode() == SurfaceSliding.Mode.SLIDING ? d : Math.min(c.gapM(), d);
-            }
-            sim.forces().addTerm(new SurfaceSliding(c.followers(), c.surface(), c.triangles(), k, c.mode(), gaps, x));
+            sim.forces().addTerm(SurfaceSliding.heldAtRest(c.followers(), c.surface(), c.triangles(), k, c.mode(),
+                    c.gapM(), x));
         }
     }
 }
