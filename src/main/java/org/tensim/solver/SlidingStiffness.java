@@ -8,8 +8,9 @@ package org.tensim.solver;
  *
  * <p>Choosing k_A: a penalty, not a material constant. A pressure P then costs a penetration P / k_A, so k_A = P /
  * tolerated penetration: the pleural pressure swings by about 3 cmH2O = 0.3 kPa over a quiet breath (-5 to -8
- * cmH2O; West, Respiratory Physiology: The Essentials, ch. 7), and a 0.1 mm tolerance gives k_A = 3e6 Pa/m. The explicit step then must stay below
- * {@code 2 sqrt(m_i / k_i)} for the lightest follower (and the surface nodes' share).
+ * cmH2O; West, Respiratory Physiology: The Essentials, ch. 7), and a 0.1 mm tolerance gives k_A = 3e6 Pa/m. The
+ * explicit step then must stay below {@code 2 sqrt(m_i / k_i)} for the lightest follower (and the surface nodes'
+ * share).
  */
 public final class SlidingStiffness {
     private SlidingStiffness() {

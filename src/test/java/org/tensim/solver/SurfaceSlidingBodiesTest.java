@@ -30,7 +30,8 @@ class SurfaceSlidingBodiesTest {
     private static Simulation simulation(Topology t) {
         Simulation sim = new Simulation(SystemState.compile(t), Integrators.create("rk2"));
         // Gravity and the driven surface do work on the nodes: the monitor's energy balance does not hold.
-        return sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY, sim.settings().energyCheckInterval()));
+        return sim.apply(sim.settings().withEnergyCheck(Double.POSITIVE_INFINITY,
+                sim.settings().energyCheckInterval()));
     }
 
     @Test
