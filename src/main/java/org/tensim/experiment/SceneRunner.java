@@ -11,6 +11,7 @@ import org.tensim.io.Progress;
 import org.tensim.io.RunFolder;
 import org.tensim.io.RunSignals;
 import org.tensim.io.RunStatus;
+import org.tensim.scene.file.CoupledBodies;
 import org.tensim.scene.file.RigidBody;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
@@ -19,11 +20,13 @@ import org.tensim.scene.file.SceneExpectation;
 import org.tensim.scene.file.SceneProbe;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
+import org.tensim.solver.SurfaceSliding;
 import org.tensim.solver.SystemState;
 import org.tensim.solver.integrators.Integrators;
 
 /**
- * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation}, all stepped in lockstep
+ * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation} (bodies that touch or
+ * slide on each other share one, {@link CoupledBodies}), all stepped in lockstep
  * with the run's integrator and step, and coupled through the scene's rigid bodies, whose surfaces and motions
  * every body's contacts, attachments and slidings share (a rigid body has no state to step: its pose is a function
  * of time); after the start and after every {@code every}-th step one CSV row holds the time
@@ -38,11 +41,14 @@ public final class SceneRunner {
     }
 
     /** Runs the scene with {@code run} (the file's settings, possibly overridden) into the run folder. */
-    public static Map<String, Object> run(Scene scene, RunSettings run, RunFolder folder) throws IOException {
+    public static Map<String, Object> run(Scene loaded, RunSettings run, RunFolder folder) throws IOException {
+        Scene scene = CoupledBodies.merge(loaded); // bodies touching each other share one simulation
         List<SceneBody> bodies = new ArrayList<>(scene.bodies().values());
         Map<String, Simulation> sims = new LinkedHashMap<>();
         for (SceneBody b : bodies) {
-            sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator())));
+            Simulation sim = new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator()));
+            CoupledBodies.addTerms(b, sim);
+            sims.put(b.name(), sim);
         }
         Map<SceneProbe, int[]> springs = energySprings(scene, sims);
         List<String> header = SceneExpectation.columns(scene.probes());
@@ -213,6 +219,44 @@ public final class SceneRunner {
     }
 
     /**
+     * A contact probe on a coupling of deformable bodies ({@link CoupledBodies}): the largest penetration and
+     * separation over the followers of the sliding terms whose followers are the probe's nodes, m, into out[o],
+     * out[o + 1].
+     */
+    static void coupled(Simulation sim, SceneProbe p, double[] out, int o) {
+        double pen = 0;
+        double sep = 0;
+        int seen = 0;
+        for (org.tensim.solver.ForceTerm term : sim.forces().terms()) {
+            if (term instanceof SurfaceSliding s && covers(p.nodes(), s)) {
+                pen = Math.max(pen, s.maxPenetrationM(sim.state().x));
+                sep = Math.max(sep, s.maxSeparationM(sim.state().x));
+                seen += s.pairCount();
+            }
+        }
+        if (seen != p.nodes().length) {
+            throw new IllegalStateException("probe " + p.name() + " reads " + p.nodes().length + " followers but the"
+                    + " simulation's sliding terms hold " + seen + " of them");
+        }
+        out[o] = pen;
+        out[o + 1] = sep;
+    }
+
+    /** True when every follower of s is among the nodes. */
+    private static boolean covers(int[] nodes, SurfaceSliding s) {
+        java.util.BitSet in = new java.util.BitSet();
+        for (int n : nodes) {
+            in.set(n);
+        }
+        for (int e = 0; e < s.pairCount(); e++) {
+            if (!in.get(s.follower(e))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
      * One CSV row of the scene's probes ({@link SceneExpectation#columns}) at time t: the time, then every
      * probe's values from the bodies' simulations (by body name); {@code springs} are the energy probes' springs
      * ({@link #energySprings}), found once before the run.
@@ -229,6 +273,11 @@ public final class SceneRunner {
                 continue;
             }
             SystemState st = sims.get(p.body()).state();
+            if (p.quantity().equals("contact") && !scene.rigids().containsKey(p.with())) {
+                coupled(sims.get(p.body()), p, row, c);
+                c += 2;
+                continue;
+            }
             if (p.quantity().equals("contact")) {
                 contact(scene.rigids().get(p.with()), p, st, t, row, c);
                 c += 2;

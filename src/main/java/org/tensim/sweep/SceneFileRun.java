@@ -90,10 +90,12 @@ public final class SceneFileRun {
         Scene scene;
         Map<String, Simulation> sims = new LinkedHashMap<>();
         try {
-            scene = SceneLoader.load(Path.of(setup.scene()), sets);
+            scene = org.tensim.scene.file.CoupledBodies.merge(SceneLoader.load(Path.of(setup.scene()), sets));
             String integrator = setup.integrator() != null ? setup.integrator() : scene.run().integrator();
             for (SceneBody b : scene.bodies().values()) {
-                sims.put(b.name(), new Simulation(SystemState.compile(b.topology()), Integrators.create(integrator)));
+                Simulation sim = new Simulation(SystemState.compile(b.topology()), Integrators.create(integrator));
+                org.tensim.scene.file.CoupledBodies.addTerms(b, sim);
+                sims.put(b.name(), sim);
             }
         } catch (RuntimeException e) {
             return new PointResult(point.id(), point.values(), PointResult.REFUSED, SceneRun.message(e), fields,

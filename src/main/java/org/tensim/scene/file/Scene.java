@@ -15,10 +15,20 @@ import org.tensim.scene.conditions.TimeLaw;
  * @param expect    the {@code expect:} block's checks, in order (empty without one)
  * @param parameters the {@code parameters:} block's named parameters, in order (empty without one)
  * @param rigids    the {@code type: rigid} bodies, which have no nodes (not among {@code bodies}), in file order
+ * @param couplings the contacts and slidings between deformable bodies ({@link BodyCoupling}), which a run builds
+ *                  into one state ({@link CoupledBodies#merge}); empty when none
  */
 public record Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
         Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
-        List<SceneExpectation> expect, List<SceneParameter> parameters, Map<String, RigidBody> rigids) {
+        List<SceneExpectation> expect, List<SceneParameter> parameters, Map<String, RigidBody> rigids,
+        List<BodyCoupling> couplings) {
+    /** A scene whose deformable bodies are not coupled to each other. */
+    public Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
+            Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,
+            List<SceneExpectation> expect, List<SceneParameter> parameters, Map<String, RigidBody> rigids) {
+        this(file, overrides, bodies, laws, regions, probes, run, expect, parameters, rigids, List.of());
+    }
+
     /** A scene without rigid bodies. */
     public Scene(Path file, List<String> overrides, Map<String, SceneBody> bodies, Map<String, TimeLaw> laws,
             Map<String, SceneRegions.Region> regions, List<SceneProbe> probes, RunSettings run,

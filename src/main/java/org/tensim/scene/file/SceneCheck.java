@@ -14,8 +14,8 @@ public final class SceneCheck {
 
     /**
      * The report's lines: each body's type and counts (nodes, springs, rigid links, fixed nodes, loads), each
-     * region's resolved node count and bounding box per body, each probe's columns, each named parameter (path, value,
-     * default, unit, range, apply mode), each expectation's range and
+     * coupling between deformable bodies, each region's resolved node count and bounding box per body, each probe's
+     * columns, each named parameter (path, value, default, unit, range, apply mode), each expectation's range and
      * the run's settings.
      */
     public static List<String> report(Scene s) {
@@ -42,6 +42,11 @@ public final class SceneCheck {
                         + String.join(", ", b.topology().contactBodies().stream().map(c -> c.name()
                                 + (c.hard() ? " (hard)" : "")).toList()));
             }
+        }
+        for (BodyCoupling c : s.couplings()) {
+            out.add(String.format(Locale.ROOT, "%s of %d node(s) of %s with the surface of %s (%d triangles), %.6g"
+                    + " N/m a node: run in one state", c.type(), c.followers().length, c.body(), c.with(),
+                    s.bodies().get(c.with()).surface().mesh().triangleCount(), c.stiffnessNPerM()));
         }
         for (RigidBody r : s.rigids().values()) {
             out.add(String.format(Locale.ROOT, "rigid %s: %s%s, %s motion; surface in %s", r.name(), r.shape(),

@@ -33,7 +33,8 @@ import org.tensim.scene.conditions.TimeLaw;
  * {@code laws:}; without one the factor is 1. Gravity acts on every node of its bodies (all when absent). A
  * pressure acts on the faces of the body's surface the region covers ({@link SurfaceFaces}): {@code -p law(t) A n}
  * per face, a dead load, refused on a region that covers no face. Contact, attachment and sliding tie the region
- * to the rigid body named by {@code with} ({@link RigidConditions}). Fibres put an active muscle tension on the
+ * to the rigid body named by {@code with} ({@link RigidConditions}); contact and sliding {@code with} a deformable
+ * body's surface couple the two bodies ({@link BodyCoupling}). Fibres put an active muscle tension on the
  * region's membrane triangles ({@link FibreConditions}).
  */
 public final class SceneConditions {
@@ -64,11 +65,18 @@ public final class SceneConditions {
         apply(list, bodies, regions, laws, u, Map.of());
     }
 
-    /** Applies every condition of the list (absent: none); {@code rigids} are the bodies {@code with:} names. */
-    public static void apply(SceneNode list, Map<String, SceneBody> bodies, Map<String, SceneRegions.Region> regions,
-            Map<String, TimeLaw> laws, SceneUnits u, Map<String, RigidBody> rigids) {
+    /**
+     * Applies every condition of the list (absent: none); {@code rigids} are the bodies {@code with:} names.
+     *
+     * @return the contacts and slidings {@code with:} a deformable body ({@link BodyCoupling}), which need the bodies
+     *         in one state and so are not applied to a topology here; empty when none
+     */
+    public static List<BodyCoupling> apply(SceneNode list, Map<String, SceneBody> bodies,
+            Map<String, SceneRegions.Region> regions, Map<String, TimeLaw> laws, SceneUnits u,
+            Map<String, RigidBody> rigids) {
+        List<BodyCoupling> couplings = new java.util.ArrayList<>();
         if (list == null) {
-            return;
+            return couplings;
         }
         if (!list.isList()) {
             throw SceneException.at(list, "expected a list of conditions (- {type: fixed, region: ...}), got "
@@ -95,6 +103,10 @@ public final class SceneConditions {
                 }
                 continue;
             }
+            if (BodyCoupling.withDeformable(type, r, bodies)) {
+                couplings.addAll(BodyCoupling.read(type, r, bodies, region(r.scalar("region"), regions), u));
+                continue;
+            }
             RigidBody rigid = RigidConditions.TYPES.contains(type) ? RigidConditions.rigid(r, bodies, rigids) : null;
             SceneRegions.Region region = region(r.scalar("region"), regions);
             TimeLaw law = r.has("law") ? law(r.scalar("law"), laws) : TimeLaw.one();
@@ -117,6 +129,7 @@ public final class SceneConditions {
                 }
             }
         }
+        return couplings;
     }
 
     private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u,

@@ -64,8 +64,10 @@ public final class SceneLoader {
         Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder,
                 rigids.keySet());
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
-        SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units, rigids);
-        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids);
+        List<BodyCoupling> couplings = SceneConditions.apply(top.optional("conditions"), bodies, regions, laws, units,
+                rigids);
+        List<SceneProbe> probes = SceneProbe.read(top.optional("probes"), bodies, regions, rigids,
+                couplings);
         RunSettings run = RunSettings.read(top, units);
         for (SceneBody b : bodies.values()) {
             if (run.autoStep() && !BodyTypes.get(b.type()).standalone()) {
@@ -76,7 +78,8 @@ public final class SceneLoader {
         }
         List<SceneExpectation> expect = ExpectBlock.read(top.optional("expect"), bodies, probes, units);
         List<SceneParameter> parameters = SceneParameters.resolve(declared, root, units);
-        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters, rigids);
+        return new Scene(file, List.copyOf(overrides), bodies, laws, regions, probes, run, expect, parameters, rigids,
+                List.copyOf(couplings));
     }
 
     /** A {@link BodyType#standalone()} body is the file's only one, without the blocks it brings itself. */

@@ -23,7 +23,9 @@ import java.util.Map;
  * {@code NAME_cx_m, NAME_cy_m, NAME_cz_m, NAME_rx_rad, NAME_ry_rad, NAME_rz_rad};</li>
  * <li>{@code {body: b, with: plate}} ({@code quantity: contact}): over the body's contact (and sliding) pairs with
  * the rigid body, the largest penetration {@code max(0, g - d)} and the largest separation {@code max(0, d - g)},
- * d a node's signed distance to the rigid solid and g its gap, {@code NAME_penetration_m, NAME_separation_m}.</li>
+ * d a node's signed distance to the rigid solid and g its gap, {@code NAME_penetration_m, NAME_separation_m}; with a
+ * deformable body, the same over the followers of the body's contacts or slidings with that body's surface
+ * ({@link BodyCoupling}), d the distance to the paired triangle's plane.</li>
  * </ul>
  * {@code body} may be left out when the scene has one body.
  *
@@ -33,7 +35,7 @@ import java.util.Map;
  * @param quantity displacement (one node or surface vertex), mean, extents, energy or pose (body: the rigid body's
  *                 name, no node)
  * @param weights  the nodes' weights of a surface vertex (summing to 1); for a contact probe, each node's gap (m);
- *                 null for a node or a region
+ *                 null for a node or a region, and for a contact probe with a deformable body
  * @param with     the rigid body of a contact probe; null for the others
  */
 public record SceneProbe(String name, String body, int[] nodes, String quantity, double[] weights, String with) {
@@ -79,9 +81,15 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
         return c;
     }
 
-    /** Reads the {@code probes:} block (absent: none). */
+    /** Reads the {@code probes:} block (absent: none) of a scene without couplings between deformable bodies. */
     static List<SceneProbe> read(SceneNode block, Map<String, SceneBody> bodies,
             Map<String, SceneRegions.Region> regions, Map<String, RigidBody> rigids) {
+        return read(block, bodies, regions, rigids, List.of());
+    }
+
+    /** Reads the {@code probes:} block (absent: none); a contact probe may read a {@link BodyCoupling}. */
+    static List<SceneProbe> read(SceneNode block, Map<String, SceneBody> bodies,
+            Map<String, SceneRegions.Region> regions, Map<String, RigidBody> rigids, List<BodyCoupling> couplings) {
         List<SceneProbe> out = new ArrayList<>();
         if (block == null) {
             return out;
@@ -103,6 +111,10 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
             } else {
                 throw SceneException.at(r.node(), "missing required key 'body' (the scene has "
                         + bodies.size() + " bodies: " + String.join(", ", bodies.keySet()) + ")");
+            }
+            if (r.has("with") && bodies.containsKey(r.scalar("with").text())) {
+                out.add(coupled(e.getKey(), body, r, couplings));
+                continue;
             }
             if (r.has("with")) {
                 out.add(contact(e.getKey(), body, bodies.get(body), r, rigids));
@@ -168,6 +180,25 @@ public record SceneProbe(String name, String body, int[] nodes, String quantity,
         }
         return new SceneProbe(name, body, nodes.stream().mapToInt(Integer::intValue).toArray(), "contact",
                 gaps.stream().mapToDouble(Double::doubleValue).toArray(), rigid.name());
+    }
+
+    /** A contact probe on the body's couplings with a deformable body: its followers, no gaps (the term has them). */
+    private static SceneProbe coupled(String name, String body, MapReader r, List<BodyCoupling> couplings) {
+        for (String k : List.of("node", "vertex", "region")) {
+            if (r.has(k)) {
+                throw SceneException.at(r.node().get(k), "a contact probe reads every follower of the body's"
+                        + " couplings with the other body: leave out " + k);
+            }
+        }
+        String with = r.scalar("with").text();
+        r.choice("quantity", List.of("contact"), "contact");
+        int[] nodes = couplings.stream().filter(c -> c.body().equals(body) && c.with().equals(with))
+                .flatMapToInt(c -> java.util.Arrays.stream(c.followers())).toArray();
+        if (nodes.length == 0) {
+            throw SceneException.at(r.node().get("with"), "body '" + body + "' has no contact or sliding with body '"
+                    + with + "'");
+        }
+        return new SceneProbe(name, body, nodes, "contact", null, with);
     }
 
     private static Map<String, SceneBody> bodies(SceneBody b) {

@@ -161,6 +161,12 @@ public final class FileViewScene implements ViewScene {
                         + " options (the body's keys, - for _)");
             }
         }
+        if (!loaded.couplings().isEmpty()) {
+            // Each body is its own simulation here, rebuilt live; coupled bodies need one state with their terms.
+            throw org.tensim.scene.file.SceneException.at(loaded.couplings().get(0).node(), "the GUI does not run"
+                    + " bodies that touch or slide on each other (with: a deformable body) yet: run the file with"
+                    + " tensim run");
+        }
         FileViewScene checked = new FileViewScene(file, sets, loaded);
         // The values the file and the options give, before any control moves (the first scene's change live).
         Map<String, Double> defaults = new LinkedHashMap<>(checked.values);

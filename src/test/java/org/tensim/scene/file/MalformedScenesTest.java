@@ -124,7 +124,8 @@ class MalformedScenesTest {
             {"unknown-rigid-body.yaml", "unknown-rigid-body.yaml:8:43: conditions[0].with",
                 "\"plat\" is not a rigid body of this file; did you mean 'plate'?"},
             {"contact-with-deformable.yaml", "contact-with-deformable.yaml:8:43: conditions[0].with",
-                "body 'c' is of type cube, not rigid"},
+                "body 'c' (type cube) carries no surface to touch: with: names a rigid body or a deformable body with a"
+                + " surface"},
             {"region-on-rigid-body.yaml", "region-on-rigid-body.yaml:6:17: regions.under.body",
                 "body 'plate' is rigid: it has no nodes"},
             {"pressure-no-face.yaml", "pressure-no-face.yaml:9:30: conditions[0].region",
