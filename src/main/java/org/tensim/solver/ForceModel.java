@@ -57,6 +57,16 @@ public final class ForceModel {
         terms = java.util.Arrays.stream(terms).filter(x -> x != term).toArray(ForceTerm[]::new);
     }
 
+    /** Number of added terms. */
+    public int termCount() {
+        return terms.length;
+    }
+
+    /** Added term i, in order (allocation-free, for the integrators' tangent products). */
+    public ForceTerm term(int i) {
+        return terms[i];
+    }
+
     /** The added terms, in order (a copy). */
     public java.util.List<ForceTerm> terms() {
         return java.util.List.of(terms);
