@@ -23,6 +23,7 @@ public final class ForceModel {
     private TriangleForcePass trianglePass;
     private NodeLoops nodeLoops = NodeLoops.SERIAL;
     private ForceTerm[] terms = new ForceTerm[0];
+    private int termVersion;
 
     public ForceModel(SystemState state) {
         this.s = state;
@@ -50,11 +51,18 @@ public final class ForceModel {
         ForceTerm[] t = java.util.Arrays.copyOf(terms, terms.length + 1);
         t[terms.length] = term;
         terms = t;
+        termVersion++;
     }
 
     /** Removes a term added by {@link #addTerm} (no effect if absent). */
     public void removeTerm(ForceTerm term) {
         terms = java.util.Arrays.stream(terms).filter(x -> x != term).toArray(ForceTerm[]::new);
+        termVersion++;
+    }
+
+    /** Changes whenever a term is added or removed (for those who cache what the terms need). */
+    public int termVersion() {
+        return termVersion;
     }
 
     /** Number of added terms. */

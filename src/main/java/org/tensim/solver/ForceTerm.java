@@ -47,4 +47,20 @@ public interface ForceTerm {
      */
     default void addIsotropicStiffness(double[] perNode) {
     }
+
+    /**
+     * The term's projection stage, run after each step with the rigid links' and the nodes' own contacts'
+     * ({@link Simulation}): moves positions {@code x} (m) at time {@code t} (s) to satisfy the term's hard
+     * constraints (a mapped surface kept out of the bones), nodes of zero inverse mass left where they are; the
+     * velocity update that follows takes away the velocity of the motion removed. Returns the largest correction, m
+     * (0: nothing to correct, and the rounds stop). Allocation-free. Default: none.
+     */
+    default double project(double t, double[] x, double[] invMass) {
+        return 0;
+    }
+
+    /** The nodes {@link #project} may move (each once, ascending); default none. */
+    default int[] projectedNodes() {
+        return new int[0];
+    }
 }

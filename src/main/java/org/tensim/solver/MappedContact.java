@@ -23,9 +23,16 @@ import org.tensim.model.LinearMapping;
  *
  * <p>The tangent {@code K} joins {@code bdf2}'s Newton-Krylov products ({@link #multiplyAdd}) and its isotropic part
  * on each node, {@code sum_i w_ij^2 k_i / 3}, the prefactored preconditioner ({@link #addIsotropicStiffness}): a stiff
- * penalty (k / m far above 1 / h^2) is then as stable under {@code bdf2} as the nodes' own contact. No projection
- * stage: a point's penetration is the penalty's (load over k) and an unconverged step's, read by
- * {@link #maxPenetrationPastGap}. The force pass and the products do not allocate; the read-outs do.
+ * penalty (k / m far above 1 / h^2) is then as stable under {@code bdf2} as the nodes' own contact.
+ *
+ * <p><b>Projection.</b> As the nodes' own contact on a hard body ({@link ContactBody#hard()}, a bone), a point that
+ * went deeper than its gap is put back after each step ({@link #project}, the simulation's projection stage): each
+ * such point's correction {@code dp_i} ({@link ContactForces#project} on the points) is carried to its nodes as
+ * their weighted mean, {@code dx_j = sum_i w_ij dp_i / sum_i |w_ij|} over the points corrected: a uniform
+ * penetration moves the nodes, and so the points, by exactly the correction, and the points a node carries share
+ * it rather than each moving it by the whole (which would throw a node that carries many out by a multiple). What
+ * remains is read by {@link #maxPenetrationPastGap}. The force pass, the products and the projection do not
+ * allocate; the read-outs do.
  */
 public final class MappedContact implements ForceTerm {
     private final LinearMapping points; // the paired points only, on the model's nodes
@@ -36,6 +43,10 @@ public final class MappedContact implements ForceTerm {
     private final double[] px; // 3 per paired point: positions, m
     private final double[] pf; // 3 per paired point: forces, N (and the products' scratch)
     private final double[] pz; // 3 per paired point: the products' gathered z
+    private final double[] ones; // per paired point: the points' inverse masses for the projection (all free)
+    private final double[] nodeSum; // 3 per node: the projection's weighted corrections
+    private final double[] nodeWeight; // per node: the projection's sum of |w|
+    private final int[] hardNodes; // the nodes of points with a pair on a hard body, ascending
 
     /**
      * @param carried the fine surface on the model's nodes: point i is a node combination (nodes of the model whose
@@ -91,6 +102,73 @@ public final class MappedContact implements ForceTerm {
         px = new double[3 * n];
         pf = new double[3 * n];
         pz = new double[3 * n];
+        ones = new double[n];
+        java.util.Arrays.fill(ones, 1);
+        nodeSum = new double[3 * carried.nodeCount()];
+        nodeWeight = new double[carried.nodeCount()];
+        java.util.TreeSet<Integer> hard = new java.util.TreeSet<>();
+        for (int e = 0; e < contact.count(); e++) {
+            if (bodies.get(contact.body(e)).hard()) {
+                int i = contact.node(e);
+                for (int q = start[i]; q < start[i + 1]; q++) {
+                    hard.add(node[q]);
+                }
+            }
+        }
+        hardNodes = hard.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    @Override
+    public int[] projectedNodes() {
+        return hardNodes.clone();
+    }
+
+    /**
+     * Puts the points deeper than their gaps into a hard body back on the gap, through their nodes' weighted mean
+     * correction (class comment); nodes of zero inverse mass stay. Returns the largest point correction, m.
+     */
+    @Override
+    public double project(double t, double[] x, double[] invMass) {
+        if (hardNodes.length == 0) {
+            return 0;
+        }
+        points.apply(x, px);
+        System.arraycopy(px, 0, pz, 0, px.length);
+        double largest = contact.project(t, pz, ones);
+        if (largest == 0) {
+            return 0;
+        }
+        for (int j : hardNodes) {
+            nodeSum[3 * j] = 0;
+            nodeSum[3 * j + 1] = 0;
+            nodeSum[3 * j + 2] = 0;
+            nodeWeight[j] = 0;
+        }
+        final int n = px.length / 3;
+        for (int i = 0; i < n; i++) {
+            final double dx = pz[3 * i] - px[3 * i];
+            final double dy = pz[3 * i + 1] - px[3 * i + 1];
+            final double dz = pz[3 * i + 2] - px[3 * i + 2];
+            if (dx == 0 && dy == 0 && dz == 0) {
+                continue;
+            }
+            for (int e = start[i]; e < start[i + 1]; e++) {
+                final int j = node[e];
+                final double w = weight[e];
+                nodeSum[3 * j] += w * dx;
+                nodeSum[3 * j + 1] += w * dy;
+                nodeSum[3 * j + 2] += w * dz;
+                nodeWeight[j] += Math.abs(w);
+            }
+        }
+        for (int j : hardNodes) {
+            if (nodeWeight[j] > 0 && invMass[j] != 0) {
+                x[3 * j] += nodeSum[3 * j] / nodeWeight[j];
+                x[3 * j + 1] += nodeSum[3 * j + 1] / nodeWeight[j];
+                x[3 * j + 2] += nodeSum[3 * j + 2] / nodeWeight[j];
+            }
+        }
+        return largest;
     }
 
     /** Number of contact pairs. */

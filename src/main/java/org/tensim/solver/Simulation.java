@@ -59,15 +59,19 @@ public final class Simulation {
     // Notified from this array: iterating the list would allocate an iterator per step.
     private volatile StepListener[] listenerSnapshot = new StepListener[0];
     private final StepProfile profile = new StepProfile();
-    private final double[] unconstrained;
+    private double[] unconstrained;
     /**
      * Rounds of the contact projection, each followed by the links' projection: a node put back on a bone
      * while its rigid column pulls it in again gets there to within half its correction per round.
      */
     public static final int CONTACT_ROUNDS = 3;
     /** Free nodes the projection stage may move (links' and hard contacts'), each once. */
-    private final int[] correctedNodes;
+    private int[] correctedNodes;
     private final boolean hardContacts;
+    /** The force terms' version {@link #correctedNodes} and {@link #unconstrained} were sized for. */
+    private int termVersionSeen;
+    /** Whether a force term has a projection stage ({@link ForceTerm#projectedNodes} not empty). */
+    private boolean termProjection;
     private Integrator integrator;
     private double time;
     private long steps;
@@ -273,20 +277,28 @@ public final class Simulation {
         if (dt != checkedDt || integrator != checkedIntegrator) {
             checkStepLimit(dt);
         }
+        if (forces.termVersion() != termVersionSeen) {
+            termsChanged();
+        }
         long t0 = System.nanoTime();
         integrator.step(forces, time, dt);
         long t1 = System.nanoTime();
         profile.record(Stage.INTEGRATE, t1 - t0);
 
         boolean links = state.linkCount() > 0;
-        if (links || hardContacts) {
+        boolean hard = hardContacts || termProjection;
+        if (links || hard) {
             System.arraycopy(state.x, 0, unconstrained, 0, unconstrained.length);
         }
         if (links) {
             projectLinks(dt);
         }
-        for (int round = 0; round < CONTACT_ROUNDS && hardContacts; round++) {
-            if (state.contacts.project(time + dt, state.x, state.invMass) == 0) {
+        for (int round = 0; round < CONTACT_ROUNDS && hard; round++) {
+            double moved = hardContacts ? state.contacts.project(time + dt, state.x, state.invMass) : 0;
+            for (int i = 0; termProjection && i < forces.termCount(); i++) {
+                moved = Math.max(moved, forces.term(i).project(time + dt, state.x, state.invMass));
+            }
+            if (moved == 0) {
                 break;
             }
             if (links) {
@@ -296,7 +308,7 @@ public final class Simulation {
         long t2 = System.nanoTime();
         profile.record(Stage.PROJECT, t2 - t1);
 
-        if (links || hardContacts) {
+        if (links || hard) {
             updateVelocities(dt);
         }
         long t3 = System.nanoTime();
@@ -326,6 +338,23 @@ public final class Simulation {
         if (!projection.project(state, state.x, settings.projectionTolerance(), settings.projectionMaxIterations())) {
             unconvergedProjections++;
             projectionFailed(dt);
+        }
+    }
+
+    /** The nodes the velocity update corrects, with those of the force terms' projections (added or removed). */
+    private void termsChanged() {
+        termVersionSeen = forces.termVersion();
+        java.util.stream.IntStream nodes = java.util.stream.IntStream.concat(java.util.Arrays.stream(state.linkNodes),
+                java.util.Arrays.stream(state.contacts.hardNodes()));
+        termProjection = false;
+        for (ForceTerm term : forces.terms()) {
+            int[] p = term.projectedNodes();
+            termProjection |= p.length > 0;
+            nodes = java.util.stream.IntStream.concat(nodes, java.util.Arrays.stream(p));
+        }
+        correctedNodes = nodes.distinct().sorted().toArray();
+        if (termProjection && unconstrained.length == 0) {
+            unconstrained = new double[3 * state.nodeCount];
         }
     }
 

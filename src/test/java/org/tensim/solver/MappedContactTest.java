@@ -114,6 +114,38 @@ class MappedContactTest {
         assertTrue(worst > 0.01, "explicit penalty at 10 ms stayed within " + worst + " m");
     }
 
+    @Test
+    void onAHardBodyTheProjectionPutsTheFineSurfaceBackOnItsGap() {
+        // a soft penalty (the plate's weight would sink it by load / (81 k) = 2.4 mm) on a hard floor: after every
+        // step the fine points are put back through their nodes, and the plate rests on the floor
+        double m = 0.05;
+        double k = 10;
+        LinearMapping fine = grid();
+        ContactBody floor = new ContactBody("floor", ContactShapes.plane(0, 0, 1, 0), RigidMotion.FIXED,
+                ContactShapes.BOUNDS, true);
+        for (boolean hard : new boolean[] {false, true}) {
+            Topology t = plate(0.002, m, 1e4);
+            t.setGravity(new Vec3(0, 0, -9.81));
+            t.setViscousDamping(2.0);
+            ContactBody b = hard ? floor : ContactShapes.body("floor", ContactShapes.plane(0, 0, 1, 0),
+                    RigidMotion.FIXED);
+            MappedContact contact = new MappedContact(fine, List.of(b), everyPoint(fine.pointCount(), k));
+            assertEquals(hard ? 4 : 0, contact.projectedNodes().length);
+            Simulation sim = ContactDynamicsTest.simulation(t, Integrators.create("bdf2"));
+            sim.forces().addTerm(contact);
+            sim.runUntil(3, 0.02);
+            double p = contact.maxPenetrationPastGap(sim.time(), sim.state().x)[0];
+            if (hard) {
+                assertTrue(p < 1e-9, "penetration after the projection " + p + " m");
+                for (int j = 0; j < 4; j++) {
+                    assertEquals(0, sim.state().x[3 * j + 2], 1e-9, "node " + j + " rests on the floor");
+                }
+            } else {
+                assertEquals(4 * m * 9.81 / (FINE * FINE * k), p, 1e-3 * p, "the penalty alone: load over k");
+            }
+        }
+    }
+
     /** A sphere's signed distance (curved normals) touching some of the fine points of a tilted plate. */
     private static MappedContact onSphere(LinearMapping fine) {
         SignedDistance ball = ContactShapes.sphere(0.05, 0.05, -0.3, 0.3005);
