@@ -60,6 +60,24 @@ public final class ForceModel {
         termVersion++;
     }
 
+    /**
+     * Each term's projection stage ({@link ForceTerm#project}) at time t (s) on positions x (m); returns the largest
+     * correction, m. Allocation-free (the simulation's projection stage).
+     */
+    public double projectTerms(double t, double[] x, double[] invMass) {
+        double moved = 0;
+        for (ForceTerm term : terms) {
+            moved = Math.max(moved, term.project(t, x, invMass));
+        }
+        return moved;
+    }
+
+    /** The nodes the terms' projections may move, each once, ascending. */
+    public int[] projectedNodes() {
+        return java.util.Arrays.stream(terms).flatMapToInt(term -> java.util.Arrays.stream(term.projectedNodes()))
+                .distinct().sorted().toArray();
+    }
+
     /** Changes whenever a term is added or removed (for those who cache what the terms need). */
     public int termVersion() {
         return termVersion;
