@@ -55,6 +55,14 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " measured; the summary names both (realtime_setting, resolution_pick).")
     boolean realtime;
 
+    @Option(names = "--coarse-edge", paramLabel = "MM",
+            description = "Run the mechanics on the mesh decimated by quadric edge collapse to about this edge length,"
+                    + " mm, carrying the mesh given (drawn, measured, exported; with a thorax, the contact is on it"
+                    + " and passes to the coarse nodes through the mapping's transpose); needs --mesh, not with"
+                    + " --pick or --labels. The error of a coarse edge against the full mesh is measured, not"
+                    + " assumed: docs/thorax.md, \"Mapped mechanics\".")
+    Double coarseEdgeMm;
+
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
             description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE}).")
     int vtkPerCycle = 8;
@@ -103,6 +111,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         final org.tensim.experiment.diaphragm.ResolutionPick mappedAt = picked;
+        if (coarseEdgeMm != null && (scene.mesh == null || pick.file() != null || !(coarseEdgeMm > 0))) {
+            throw usage("--coarse-edge " + coarseEdgeMm + ": expected a positive edge length in mm with --mesh, and"
+                    + " without --pick (a pick is a resolution of the generated double dome)");
+        }
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
         int threadCount = threads.threads(spec);
@@ -150,8 +162,22 @@ public final class DiaphragmCommand implements Callable<Integer> {
     private void simulate(RunFolder run, DiaphragmSpec sceneSpec, DiaphragmReport.Options o,
             org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads,
             org.tensim.experiment.diaphragm.ResolutionPick picked) throws Exception {
-        DiaphragmSetup.Built built = DiaphragmSetup.build(sceneSpec);
-        Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked);
+        DiaphragmSetup.Built built;
+        org.tensim.scene.diaphragm.MappedDiaphragm decimated = null;
+        if (coarseEdgeMm != null) {
+            DiaphragmSetup.Inputs in = DiaphragmSetup.read(sceneSpec);
+            built = DiaphragmSetup.build(in, sceneSpec, sceneSpec.newControls());
+            decimated = org.tensim.scene.diaphragm.MappedDiaphragm.decimated(in, built.scene(), 1e-3 * coarseEdgeMm);
+            System.out.println("mechanics on " + decimated.coarse().spec().mesh().describe() + " decimated to "
+                    + coarseEdgeMm + " mm edges (" + decimated.mechanicalNodes() + " nodes), carrying the "
+                    + decimated.drawnNodes() + " nodes of " + built.source());
+        } else {
+            built = DiaphragmSetup.build(sceneSpec);
+        }
+        Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked, decimated);
+        if (decimated != null) {
+            fields.put("coarse_edge_mm", coarseEdgeMm);
+        }
         if (pick.file() != null) {
             fields.put("resolution_pick_file", pick.file().toString());
         }
@@ -170,11 +196,19 @@ public final class DiaphragmCommand implements Callable<Integer> {
     static Map<String, Object> report(RunFolder run, DiaphragmSetup.Built built, DiaphragmReport.Options o,
             org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads, Path meshGiven,
             org.tensim.experiment.diaphragm.ResolutionPick picked) throws Exception {
+        return report(run, built, o, chosen, setting, threads, meshGiven, picked, null);
+    }
+
+    /** As above, the mechanics run by {@code premapped} when not null (a decimation carrying the built mesh). */
+    static Map<String, Object> report(RunFolder run, DiaphragmSetup.Built built, DiaphragmReport.Options o,
+            org.tensim.solver.Integrator chosen, RealTimeSetting setting, int threads, Path meshGiven,
+            org.tensim.experiment.diaphragm.ResolutionPick picked,
+            org.tensim.scene.diaphragm.MappedDiaphragm premapped) throws Exception {
         DiaphragmSpec sceneSpec = built.scene().spec();
         if (built.meshReport() != null) {
             System.out.println(built.meshReport().describe());
         }
-        org.tensim.scene.diaphragm.MappedDiaphragm mapped = null;
+        org.tensim.scene.diaphragm.MappedDiaphragm mapped = premapped;
         if (picked != null) {
             DiaphragmSpec coarse = sceneSpec.withMesh(sceneSpec.mesh().withFile(null, sceneSpec.mesh().units())
                     .withRings(picked.rings()));

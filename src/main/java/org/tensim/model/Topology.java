@@ -319,6 +319,16 @@ public final class Topology {
         return c;
     }
 
+    /**
+     * Removes every contact pair (the bodies stay): for a coarse model whose contact is carried by a fine surface
+     * mapped from it instead (the pairs are then the fine surface's). Returns how many were removed.
+     */
+    public int clearContacts() {
+        int n = contacts.size();
+        contacts.clear();
+        return n;
+    }
+
     /** The contact bodies, in the order added. */
     public List<ContactBody> contactBodies() {
         return Collections.unmodifiableList(contactBodies);

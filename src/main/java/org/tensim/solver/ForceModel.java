@@ -23,6 +23,7 @@ public final class ForceModel {
     private TriangleForcePass trianglePass;
     private NodeLoops nodeLoops = NodeLoops.SERIAL;
     private ForceTerm[] terms = new ForceTerm[0];
+    private int termVersion;
 
     public ForceModel(SystemState state) {
         this.s = state;
@@ -50,11 +51,46 @@ public final class ForceModel {
         ForceTerm[] t = java.util.Arrays.copyOf(terms, terms.length + 1);
         t[terms.length] = term;
         terms = t;
+        termVersion++;
     }
 
     /** Removes a term added by {@link #addTerm} (no effect if absent). */
     public void removeTerm(ForceTerm term) {
         terms = java.util.Arrays.stream(terms).filter(x -> x != term).toArray(ForceTerm[]::new);
+        termVersion++;
+    }
+
+    /**
+     * Each term's projection stage ({@link ForceTerm#project}) at time t (s) on positions x (m); returns the largest
+     * correction, m. Allocation-free (the simulation's projection stage).
+     */
+    public double projectTerms(double t, double[] x, double[] invMass) {
+        double moved = 0;
+        for (ForceTerm term : terms) {
+            moved = Math.max(moved, term.project(t, x, invMass));
+        }
+        return moved;
+    }
+
+    /** The nodes the terms' projections may move, each once, ascending. */
+    public int[] projectedNodes() {
+        return java.util.Arrays.stream(terms).flatMapToInt(term -> java.util.Arrays.stream(term.projectedNodes()))
+                .distinct().sorted().toArray();
+    }
+
+    /** Changes whenever a term is added or removed (for those who cache what the terms need). */
+    public int termVersion() {
+        return termVersion;
+    }
+
+    /** Number of added terms. */
+    public int termCount() {
+        return terms.length;
+    }
+
+    /** Added term i, in order (allocation-free, for the integrators' tangent products). */
+    public ForceTerm term(int i) {
+        return terms[i];
     }
 
     /** The added terms, in order (a copy). */

@@ -7,8 +7,11 @@ package org.tensim.solver;
  *
  * <p>Contract: {@link #addForces} adds (never overwrites) newtons to {@code f}, 3 per node, and does not allocate
  * (it runs at every force pass). A conservative term gives its potential in {@link #energy}, and its forces are
- * minus that energy's gradient; the implicit integrators linearise the built-in forces only, so a term with a
- * large stiffness against the node masses and the step needs its own stability check (its owner's job).
+ * minus that energy's gradient. A stiff term (a contact penalty) gives its tangent too: {@link #linearise} and
+ * {@link #multiplyAdd}, which {@code bdf2}'s Newton-Krylov products add to the built-in forces' (and
+ * {@link #addIsotropicStiffness}, which its prefactored preconditioner adds to its diagonal); a term without them is
+ * treated explicitly, and one with a large stiffness against the node masses and the step then needs its own
+ * stability check (its owner's job). The other implicit integrators linearise the built-in forces only.
  */
 public interface ForceTerm {
     /**
@@ -20,5 +23,44 @@ public interface ForceTerm {
     /** The term's potential energy at time {@code t} (s) and positions {@code x} (m), J; 0 for a term that has none. */
     default double energy(double t, double[] x) {
         return 0;
+    }
+
+    /**
+     * Linearises the term's tangent stiffness {@code K = -df/dx} (N/m) at time {@code t} (s) and positions {@code x}
+     * (m) for the {@link #multiplyAdd} products that follow, until the next call. Default: no tangent.
+     */
+    default void linearise(double t, double[] x) {
+    }
+
+    /**
+     * {@code y += weight K z} with K linearised by {@link #linearise}: {@code offset[i]} is the index of node i's x in
+     * z and y, or -1 for a node left out (its z taken as 0, its y not written); a null offset means the full layout
+     * (3 i). Allocation-free. Default: nothing (no tangent).
+     */
+    default void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
+    }
+
+    /**
+     * Adds to {@code perNode[i]} (N/m, one per node) an isotropic part of the term's stiffness on node i, the trace
+     * of its diagonal block over 3 for any configuration it may take (a contact counted as touching), for a
+     * preconditioner that is factored once. Default: nothing.
+     */
+    default void addIsotropicStiffness(double[] perNode) {
+    }
+
+    /**
+     * The term's projection stage, run after each step with the rigid links' and the nodes' own contacts'
+     * ({@link Simulation}): moves positions {@code x} (m) at time {@code t} (s) to satisfy the term's hard
+     * constraints (a mapped surface kept out of the bones), nodes of zero inverse mass left where they are; the
+     * velocity update that follows takes away the velocity of the motion removed. Returns the largest correction, m
+     * (0: nothing to correct, and the rounds stop). Allocation-free. Default: none.
+     */
+    default double project(double t, double[] x, double[] invMass) {
+        return 0;
+    }
+
+    /** The nodes {@link #project} may move (each once, ascending); default none. */
+    default int[] projectedNodes() {
+        return new int[0];
     }
 }

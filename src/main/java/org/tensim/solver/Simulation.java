@@ -19,7 +19,8 @@ import org.tensim.solver.stability.TimeStepPolicy;
  * ({@link org.tensim.model.ContactBody#hard()}), {@link ContactForces#project} then puts every node that went
  * deeper than its gap back on it along the body's normal, alternately with the links' projection
  * ({@link #CONTACT_ROUNDS} rounds, the links last), so that neither a large step nor an inexact implicit
- * solve leaves a node inside a bone (the penalty alone lets it in by its load over the stiffness);</li>
+ * solve leaves a node inside a bone (the penalty alone lets it in by its load over the stiffness); each round
+ * runs the force terms' own projections too ({@link ForceTerm#project}: a mapped surface kept out of bones);</li>
  * <li>{@link Stage#VELOCITY}: new velocities from the corrected positions: each
  * node moved by the projection gets {@code v += (x_corrected - x_unconstrained) / dt},
  * so the velocity matches the constrained motion (a node that no link or hard contact touches keeps
@@ -65,9 +66,10 @@ public final class Simulation {
      * while its rigid column pulls it in again gets there to within half its correction per round.
      */
     public static final int CONTACT_ROUNDS = 3;
-    /** Free nodes the projection stage may move (links' and hard contacts'), each once. */
-    private final int[] correctedNodes;
+    private int[] correctedNodes; // free nodes the projection stage may move (links', contacts', terms'), each once
     private final boolean hardContacts;
+    private int termVersionSeen; // the force terms' version correctedNodes and unconstrained are for
+    private boolean termProjection; // whether a force term has a projection stage
     private Integrator integrator;
     private double time;
     private long steps;
@@ -94,11 +96,9 @@ public final class Simulation {
     public Simulation(SystemState state, Integrator integrator) {
         this.state = state;
         this.forces = new ForceModel(state);
-        int[] hardNodes = state.contacts.hardNodes();
-        this.hardContacts = hardNodes.length > 0;
-        this.unconstrained = new double[state.linkCount() > 0 || hardContacts ? 3 * state.nodeCount : 0];
-        this.correctedNodes = java.util.stream.IntStream.concat(java.util.Arrays.stream(state.linkNodes),
-                java.util.Arrays.stream(hardNodes)).distinct().sorted().toArray();
+        this.hardContacts = state.contacts.hardNodes().length > 0;
+        this.unconstrained = new double[3 * state.nodeCount]; // the positions before the projection stage
+        termsChanged();
         setIntegrator(integrator);
         monitor.setEnergyGrowthLimit(settings.energyGrowthLimit());
         monitor.setEnergyCheckInterval(settings.energyCheckInterval());
@@ -273,20 +273,24 @@ public final class Simulation {
         if (dt != checkedDt || integrator != checkedIntegrator) {
             checkStepLimit(dt);
         }
+        if (forces.termVersion() != termVersionSeen) {
+            termsChanged();
+        }
         long t0 = System.nanoTime();
         integrator.step(forces, time, dt);
         long t1 = System.nanoTime();
         profile.record(Stage.INTEGRATE, t1 - t0);
 
-        boolean links = state.linkCount() > 0;
-        if (links || hardContacts) {
+        boolean links = state.linkCount() > 0, hard = hardContacts || termProjection;
+        if (links || hard) {
             System.arraycopy(state.x, 0, unconstrained, 0, unconstrained.length);
         }
         if (links) {
             projectLinks(dt);
         }
-        for (int round = 0; round < CONTACT_ROUNDS && hardContacts; round++) {
-            if (state.contacts.project(time + dt, state.x, state.invMass) == 0) {
+        for (int round = 0; round < CONTACT_ROUNDS && hard; round++) {
+            double moved = hardContacts ? state.contacts.project(time + dt, state.x, state.invMass) : 0;
+            if (Math.max(moved, termProjection ? forces.projectTerms(time + dt, state.x, state.invMass) : 0) == 0) {
                 break;
             }
             if (links) {
@@ -296,7 +300,7 @@ public final class Simulation {
         long t2 = System.nanoTime();
         profile.record(Stage.PROJECT, t2 - t1);
 
-        if (links || hardContacts) {
+        if (links || hard) {
             updateVelocities(dt);
         }
         for (int k : state.heldDof) { // held coordinates stay at rest whatever the integrator's linear solve gave
@@ -331,6 +335,15 @@ public final class Simulation {
             unconvergedProjections++;
             projectionFailed(dt);
         }
+    }
+
+    /** The nodes the velocity update corrects, with those of the force terms' projections (added or removed). */
+    private void termsChanged() {
+        termVersionSeen = forces.termVersion();
+        int[] p = forces.projectedNodes();
+        termProjection = p.length > 0;
+        correctedNodes = java.util.stream.Stream.of(state.linkNodes, state.contacts.hardNodes(), p)
+                .flatMapToInt(java.util.stream.IntStream::of).distinct().sorted().toArray();
     }
 
     private void updateVelocities(double dt) {

@@ -38,7 +38,7 @@ public final class MappedRun {
             throws IOException {
         Check.atLeast("thread count", threads, 1);
         DiaphragmScene coarse = mapped.coarse();
-        Simulation mechanics = coarse.newSimulation();
+        Simulation mechanics = mapped.newMechanics();
         mechanics.setIntegrator(chosen);
         // the coarse model's step: its stable step for the integrator when none is given
         TimeStep step = coarse.timeStep(chosen, o.dtS());
@@ -60,6 +60,11 @@ public final class MappedRun {
             m.put("rigid_links", coarse.topology().rigidLinks().size());
             m.put("unconverged_projections", mechanics.unconvergedProjections());
             m.put("max_mapping_offset_at_rest_mm", DiaphragmReport.round(1e3 * mapped.maxResidualM(), 3));
+            if (mapped.contact() != null) {
+                m.put("contact", "on the drawn mesh's surface: " + mapped.contact().pairCount() + " pairs on "
+                        + mapped.contact().pointCount() + " of its points, their forces carried to the mechanics'"
+                        + " nodes by the mapping's transpose (the summary's contact figures are the drawn mesh's)");
+            }
             s.put("mechanics", m);
             return s;
         }

@@ -1,9 +1,11 @@
 package org.tensim.scene.diaphragm;
 
+import org.tensim.model.ContactPair;
 import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
 import org.tensim.solver.ForceModel;
 import org.tensim.solver.Integrator;
+import org.tensim.solver.MappedContact;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SystemState;
 
@@ -18,6 +20,12 @@ import org.tensim.solver.SystemState;
  * no springs, at the mapped rest positions, so that the fine scene's measuring (dome tops, extents, VTK frames) reads
  * it as it reads a full run. The mapped rest differs from the fine mesh only where the mapping leaves an offset out
  * ({@link ShellMapping#residualM}: {@link #maxResidualM}); displacements are then exactly the mapped displacements.
+ *
+ * <p><b>Contact on the fine surface.</b> When the fine scene touches bones (a thorax), its contact pairs are the
+ * fine surface's: the coarse scene's own pairs are removed, and the fine pairs act on the coarse nodes through the
+ * mapping's transpose ({@link MappedContact}, added to the mechanics by {@link #newMechanics}). The carried nodes'
+ * simulation has the fine pairs too (never stepped: its nodes are fixed), so that what a run measures of contact
+ * (penetration, contact area) is measured on the fine surface.
  */
 public final class MappedDiaphragm {
     /** The cage's nodes must agree between the two scenes to this, m: they are the same generated cage. */
@@ -27,12 +35,15 @@ public final class MappedDiaphragm {
     private final DiaphragmScene fine;
     private final ShellMapping shell;
     private final LinearMapping mapping;
+    private final MappedContact contact;
 
-    private MappedDiaphragm(DiaphragmScene coarse, DiaphragmScene fine, ShellMapping shell, LinearMapping mapping) {
+    private MappedDiaphragm(DiaphragmScene coarse, DiaphragmScene fine, ShellMapping shell, LinearMapping mapping,
+            MappedContact contact) {
         this.coarse = coarse;
         this.fine = fine;
         this.shell = shell;
         this.mapping = mapping;
+        this.contact = contact;
     }
 
     /**
@@ -75,7 +86,53 @@ public final class MappedDiaphragm {
             }
             b.add(new int[] {cd + k}, new double[] {1});
         }
-        return new MappedDiaphragm(coarse, fine, shell, b.build());
+        LinearMapping all = b.build();
+        MappedContact contact = null;
+        if (!fine.topology().contacts().isEmpty()) {
+            // the fine surface touches: the coarse scene's own pairs would touch twice
+            coarse.topology().clearContacts();
+            contact = new MappedContact(all, fine.topology().contactBodies(), fine.topology().contacts());
+        }
+        return new MappedDiaphragm(coarse, fine, shell, all, contact);
+    }
+
+    /**
+     * The fine scene carried by a coarse model of the same mesh: the fine scene's surfaces decimated by quadric-error
+     * edge collapse to about the given edge length ({@link Decimation#QUADRIC}), built with the fine scene's spec,
+     * live controls, cage and bones (read once: {@code in}).
+     *
+     * @param in    what the fine scene was built from ({@link DiaphragmSetup#read})
+     * @param edgeM the coarse model's target edge length, m (&gt; 0)
+     * @throws IllegalArgumentException when the fine scene has a label file (labels name the fine mesh's vertices)
+     */
+    public static MappedDiaphragm decimated(DiaphragmSetup.Inputs in, DiaphragmScene fine, double edgeM) {
+        if (in.labels() != null) {
+            throw new IllegalArgumentException("a label file names the vertices of " + fine.spec().mesh().describe()
+                    + ": a coarse model of it cannot take them; run it unmapped");
+        }
+        org.tensim.scene.shell.TwoSurfaces c = Decimation.QUADRIC.coarsen(in.surfaces().surfaces(), edgeM);
+        DiaphragmSetup.Inputs coarseIn = new DiaphragmSetup.Inputs(new DiaphragmSetup.Surfaces(c,
+                DiaphragmSetup.SurfaceMode.SHELL), null, in.boxes(), in.bones(), null, String.format(
+                java.util.Locale.ROOT, "%s decimated to %.1f mm edges", in.source(), 1e3 * edgeM));
+        DiaphragmScene cs = DiaphragmSetup.build(coarseIn, fine.spec(), fine.controls()).scene();
+        return of(cs, fine);
+    }
+
+    /**
+     * A simulation of the coarse scene that runs the mechanics, with the fine surface's contact when there is one
+     * ({@link #contact}). Its integrator is the scene's default: set the one to run.
+     */
+    public Simulation newMechanics() {
+        Simulation s = coarse.newSimulation();
+        if (contact != null) {
+            s.forces().addTerm(contact);
+        }
+        return s;
+    }
+
+    /** The fine surface's contact on the coarse nodes, or null when the fine scene touches nothing. */
+    public MappedContact contact() {
+        return contact;
     }
 
     private static double[] positions(Topology t, int n) {
@@ -142,6 +199,13 @@ public final class MappedDiaphragm {
         Topology t = new Topology();
         for (int i = 0; i < mapping.pointCount(); i++) {
             t.addNode(rest[3 * i], rest[3 * i + 1], rest[3 * i + 2], 1).fix();
+        }
+        // the fine pairs on the carried nodes (the fine scene's node ids): measured there, never acting (fixed)
+        for (org.tensim.model.ContactBody body : fine.topology().contactBodies()) {
+            t.addContactBody(body);
+        }
+        for (ContactPair p : fine.topology().contacts()) {
+            t.addContact(p.node(), p.body(), p.stiffnessNPerM(), p.gapM());
         }
         Simulation s = new Simulation(SystemState.compile(t));
         follow(mechanics, s);

@@ -99,7 +99,7 @@ final class NewtonKrylov {
             if (norm == 0) {
                 break;
             }
-            jacobian.linearise(t1, xIt, beta, model.nodeLoops());
+            jacobian.linearise(t1, xIt, beta, model.nodeLoops(), model);
             partNanos[Bdf2Part.LINEARISE.ordinal()] += System.nanoTime() - t2;
             conjugateGradient(model, precond, krylovIterations, krylovTolerance);
             for (int j = 0; j < nodes.length; j++) {

@@ -255,7 +255,7 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
     @Override
     public void step(ForceModel model, double t, double h) {
         SystemState st = model.state();
-        setup(st);
+        setup(st, model);
         if (matrix.freeCount() == 0) {
             st.applyMotions(t + h, st.x, st.v, scratch);
             return;
@@ -353,12 +353,12 @@ public final class PrefactoredBdf2 implements Integrator, org.tensim.solver.Erro
                 : (e2 > 0 ? Double.POSITIVE_INFINITY : 0);
     }
 
-    private void setup(SystemState st) {
+    private void setup(SystemState st, ForceModel model) {
         if (st == s) {
             return;
         }
         s = st;
-        matrix = new PrefactoredMatrix(st, linkCoupling);
+        matrix = new PrefactoredMatrix(st, linkCoupling, model);
         if (executor != null) {
             matrix.setExecutor(executor);
         }

@@ -36,7 +36,8 @@ import org.tensim.solver.SystemState;
  * is taken as touching, the same for all. Left out, a stiff contact ({@code k / m} far above {@code 1 / beta^2})
  * was left to the few Krylov iterations of a step, which do not resolve it; the exact
  * {@code beta^2 k n n^T} is in the Newton-Krylov products ({@link SpringJacobian}), so CG converges to the true
- * step either way.
+ * step either way. A scene's own term (a contact on a mapped surface, {@link org.tensim.solver.MappedContact}) adds
+ * {@code beta^2} times its {@link org.tensim.solver.ForceTerm#addIsotropicStiffness} in the same way.
  *
  * <p>With a link coupling c &gt; 0 ({@link PrefactoredBdf2#setLinkCoupling}) each rigid link (a, b) adds
  * {@code w (e_a - e_b)(e_a - e_b)^T}, {@code w = c max(A_aa, A_bb)} from the diagonal assembled before the links:
@@ -84,6 +85,8 @@ final class PrefactoredMatrix {
     private final SystemState s;
     /** The links' coupling c (dimensionless), see the class comment. */
     private final double linkCoupling;
+    /** Per node: the added terms' isotropic stiffness, N/m (0 without terms). */
+    private final double[] termStiffness;
     /** Free-node index of each node, -1 for fixed and driven nodes. */
     final int[] freeIndex;
     /** Node id of each free node. */
@@ -103,8 +106,17 @@ final class PrefactoredMatrix {
 
     /** The matrix of a state, the rigid links' ends tied by {@code linkCoupling} (0 for none; see the class comment). */
     PrefactoredMatrix(SystemState s, double linkCoupling) {
+        this(s, linkCoupling, null);
+    }
+
+    /** As {@link #PrefactoredMatrix(SystemState, double)}, with the isotropic stiffness of model's terms (null: none). */
+    PrefactoredMatrix(SystemState s, double linkCoupling, org.tensim.solver.ForceModel model) {
         this.s = s;
         this.linkCoupling = linkCoupling;
+        termStiffness = new double[s.nodeCount];
+        for (int i = 0; model != null && i < model.termCount(); i++) {
+            model.term(i).addIsotropicStiffness(termStiffness);
+        }
         freeIndex = new int[s.nodeCount];
         int nf = 0;
         for (int i = 0; i < s.nodeCount; i++) {
@@ -200,7 +212,7 @@ final class PrefactoredMatrix {
     private Triplets assemble(double beta, double[] k, double[] c, double cv) {
         int nf = freeNodes.length;
         int ns = s.springCount();
-        Triplets t = new Triplets(nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count()
+        Triplets t = new Triplets(2 * nf + 4 * ns + 36 * s.triangleCount() + 48 * s.shears.count() + s.contacts.count()
                 + s.volumes.restPairCount()
                 + (linkCoupling > 0 ? 4 * s.linkA.length : 0));
         for (int j = 0; j < nf; j++) {
@@ -244,6 +256,11 @@ final class PrefactoredMatrix {
             int a = freeIndex[s.contacts.node(e)];
             if (a >= 0) {
                 t.add(a, a, beta * beta * s.contacts.stiffness(e) / 3);
+            }
+        }
+        for (int j = 0; j < nf; j++) {
+            if (termStiffness[freeNodes[j]] != 0) {
+                t.add(j, j, beta * beta * termStiffness[freeNodes[j]]);
             }
         }
         if (linkCoupling > 0) {

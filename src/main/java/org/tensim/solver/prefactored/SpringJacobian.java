@@ -1,5 +1,8 @@
 package org.tensim.solver.prefactored;
 
+import org.tensim.solver.ForceModel;
+import org.tensim.solver.ForceTerm;
+
 import org.tensim.solver.NodeLoops;
 import org.tensim.solver.PartitionedTriangleTangent;
 import org.tensim.solver.SpringKernels;
@@ -49,6 +52,8 @@ final class SpringJacobian {
     private final PartitionedTriangleTangent triangles; // null without triangles
     private final int[] triangleOffset; // per node: 3 x compact index, -1 when not free
     private NodeLoops loops = NodeLoops.SERIAL;
+    /** Whose added terms' tangents join the products (null: none), set at linearisation. */
+    private ForceModel model;
     private final NodeLoops.Body springRange = this::lineariseSprings;
     private double[] positions; // during linearise only
     private double weight; // beta, during linearise only
@@ -81,7 +86,21 @@ final class SpringJacobian {
      * products until the next linearisation share their triangle slabs among the threads of loops.
      */
     void linearise(double t, double[] px, double beta, NodeLoops loops) {
+        linearise(t, px, beta, loops, null);
+    }
+
+    /**
+     * As {@link #linearise(double, double[], double, NodeLoops)}, with the tangents of {@code model}'s added terms
+     * ({@link ForceTerm#linearise}; null: none) in the products, after the built-in ones, on the calling thread.
+     */
+    void linearise(double t, double[] px, double beta, NodeLoops loops, ForceModel model) {
         this.loops = loops;
+        this.model = model;
+        if (model != null) {
+            for (int i = 0; i < model.termCount(); i++) {
+                model.term(i).linearise(t, px);
+            }
+        }
         final double b2 = beta * beta;
         diagonalTerm = beta * s.viscousDamping();
         triangleWeight = b2;
@@ -219,6 +238,12 @@ final class SpringJacobian {
         }
         // The volume elements, serial (their pass is one loop over the cells).
         s.volumes.multiplyAdd(p, out, triangleOffset, triangleWeight, triangleDampingWeight);
+        // The scene's own terms (a mapped contact), serial: their nodes are not partitioned.
+        if (model != null) {
+            for (int i = 0; i < model.termCount(); i++) {
+                model.term(i).multiplyAdd(p, out, triangleOffset, triangleWeight);
+            }
+        }
     }
 
     /**
