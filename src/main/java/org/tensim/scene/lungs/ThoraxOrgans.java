@@ -22,7 +22,7 @@ import org.tensim.solver.SurfaceSliding;
  * <li>each lung a lattice volume ({@link LungVolumes}) whose followers (the lattice nodes within half a cell of
  * its surface) slide, bilaterally and without friction, on the parietal pleura ({@link PleuraCarriers}: the
  * lung's own rest surface carried by the diaphragm's upper surface, the ribs' frames and fixed frames);</li>
- * <li>the liver (optional) a lattice volume whose followers near the diaphragm (lattice nodes within half a cell
+ * <li>the liver (optional) a lattice volume whose followers near the diaphragm (lattice nodes within the band
  * of its surface and {@link Options#liverReachM} of the diaphragm's lower surface) touch that lower surface,
  * one-sided, carried by the diaphragm's own nodes; held behind by zero-length springs to fixed anchors at its
  * bare area (the posterior fifth of its depth, upper half of its height: the coronary and triangular ligaments'
@@ -42,17 +42,23 @@ public final class ThoraxOrgans {
      * @param liverHoldPaPerM   the bare area's springs per area, Pa/m
      * @param liverReachM       how far from the diaphragm's lower surface a liver surface node may be to be a
      *                          follower, m
+     * @param followerBandM     how far from its organ's surface (either side) a lattice node may be to be a
+     *                          follower, m: small against the surface's radius of curvature, so that the rest
+     *                          distance it is held at is the same to its triangle's plane and to the neighbours'
+     *                          it walks to (a follower at d from a surface bending by theta between triangles sees
+     *                          their planes differ by about d theta^2 / 2)
      * @param samples           lung points drawn (LungSamples, fixed seed)
      * @param probesM           user probes, 3 per point, m, each inside a lung
      */
     public record Options(VolumeParameters lung, VolumeParameters liver, PleuraCarriers.Rules rules,
-            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverReachM, int samples,
-            double[] probesM) {
+            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverReachM, double followerBandM,
+            int samples, double[] probesM) {
         public Options {
             Check.positive("pleural sliding stiffness", "Pa/m", pleuraPaPerM);
             Check.positive("liver contact stiffness", "Pa/m", liverPaPerM);
             Check.positive("liver bare-area stiffness", "Pa/m", liverHoldPaPerM);
             Check.positive("liver reach", "m", liverReachM);
+            Check.positive("follower band", "m", followerBandM);
             Check.atLeast("lung sample points", samples, 1);
             if (probesM.length % 3 != 0) {
                 throw new IllegalArgumentException("lung probes need 3 coordinates each, got " + probesM.length);
@@ -62,28 +68,42 @@ public final class ThoraxOrgans {
         /**
          * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 3e5 Pa/m
          * (a pressure of 300 Pa, the lungs' elastic stress at tidal strains, leaves 1 mm), liver contact 3e5 Pa/m,
-         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, 300 points.
+         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, followers within 4 mm of
+         * their surface, 300 points.
          */
         public static Options defaults() {
             return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), LIVER, PleuraCarriers.Rules.defaults(),
-                    3e5, 3e5, 1e4, 0.02, 300, new double[0]);
+                    3e5, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
+        }
+
+        /**
+         * The same with the organs' damping times at most {@code 0.4 dt}: stiffness-proportional damping
+         * {@code c = beta k} adds the rate {@code beta omega^2} to a mode of angular frequency omega, which an
+         * explicit step of dt keeps stable for {@code beta omega^2 dt <~ 1}; with {@code omega dt < 1.5} (the scene's
+         * step) {@code beta = 0.4 dt} is safe for every mode of the organs' light boundary nodes.
+         */
+        public Options dampedFor(double dtS) {
+            double cap = 0.4 * dtS;
+            return new Options(lung.withDampingTime(Math.min(lung.dampingTimeS(), cap)), liver == null ? null
+                    : liver.withDampingTime(Math.min(liver.dampingTimeS(), cap)), rules, pleuraPaPerM, liverPaPerM,
+                    liverHoldPaPerM, liverReachM, followerBandM, samples, probesM);
         }
 
         /** The same without the liver volume. */
         public Options withoutLiver() {
-            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, samples,
+            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples,
                     probesM);
         }
 
         /** The same with other cell sizes, m (the lungs', the liver's). */
         public Options withCells(double lungM, double liverM) {
             return new Options(lung.withCellSize(lungM), liver == null ? null : liver.withCellSize(liverM), rules,
-                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, samples, probesM);
+                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples, probesM);
         }
 
         /** The same with user probes, 3 per point, m. */
         public Options withProbes(double[] m) {
-            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, samples,
+            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples,
                     m.clone());
         }
     }
@@ -141,11 +161,13 @@ public final class ThoraxOrgans {
             Options o) {
         Topology t = scene.topology();
         int first = t.nodeCount();
+        o = o.dampedFor(scene.recommendedTimeStep());
         List<LungVolumes.Lung> lungs = new ArrayList<>();
         String[] side = {"right", "left"};
         for (int i = 0; i < lungSurfaces.size(); i++) {
             long t0 = System.nanoTime();
-            VolumeBody body = VolumeBody.build(t, lungSurfaces.get(i), o.lung(), "the " + side[i] + " lung");
+            VolumeBody body = VolumeBody.build(t, lungSurfaces.get(i), o.lung(), "the " + side[i] + " lung",
+                    minMass(o.lung()));
             lungs.add(new LungVolumes.Lung(i == 0 ? org.tensim.io.thorax.ThoraxPart.Side.RIGHT
                     : org.tensim.io.thorax.ThoraxPart.Side.LEFT, List.of(side[i]), lungSurfaces.get(i), body,
                     (System.nanoTime() - t0) * 1e-9));
@@ -153,9 +175,10 @@ public final class ThoraxOrgans {
         VolumeBody liver = null;
         int[] held = new int[0];
         if (liverSurface != null && o.liver() != null) {
-            liver = VolumeBody.build(t, liverSurface, o.liver(), "the liver");
+            liver = VolumeBody.build(t, liverSurface, o.liver(), "the liver", minMass(o.liver()));
             held = holdBareArea(t, liver, o.liver().cellSizeM(), o.liverHoldPaPerM());
         }
+        refuseOverdamped(t, first, scene.recommendedTimeStep());
         List<RibCage.Segment> segs = scene.cage().segments();
         List<PleuraCarriers.Rib> ribs = ribs(t, segs);
         int[] upper = scene.upperTriangles();
@@ -168,7 +191,7 @@ public final class ThoraxOrgans {
         for (int i = 0; i < lungs.size(); i++) {
             VolumeBody body = lungs.get(i).body();
             double h = o.lung().cellSizeM();
-            int[] f = surfaceNodes(t, body, 0.5 * h, null, 0);
+            int[] f = surfaceNodes(t, body, o.followerBandM(), null, 0);
             couplings.add(new Coupling(side[i] + " lung on the pleura", f, rebase(pleurae.get(i).mapping(), n),
                     lungs.get(i).surface().triangles(), filled(f.length, o.pleuraPaPerM() * h * h), true));
         }
@@ -178,7 +201,7 @@ public final class ThoraxOrgans {
             int[] lower = lowerTriangles(scene);
             double[] xyz = restPositions(t, nd);
             TriangleTree tree = new TriangleTree(xyz, lower, 3);
-            int[] f = surfaceNodes(t, liver, 0.5 * h, tree, o.liverReachM());
+            int[] f = surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
             couplings.add(new Coupling("liver under the diaphragm", f, identity(nd, n), lower,
                     filled(f.length, o.liverPaPerM() * h * h), false));
         }
@@ -247,6 +270,38 @@ public final class ThoraxOrgans {
         double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         return (nx * (x[o] - p[a]) + ny * (x[o + 1] - p[a + 1]) + nz * (x[o + 2] - p[a + 2])) / len;
+    }
+
+    /**
+     * Share of an interior node's mass {@code rho h^3} that every organ node has at least: the clipped corner nodes
+     * would otherwise carry down to 1/512 of it, and the couplings' stiffness on them (not linearised by the implicit
+     * integrators) would set the step; inertia is negligible in breathing (the organs' lowest modes are some 100
+     * times faster than the breath), so the added mass changes the motion little.
+     */
+    public static final double MASS_FLOOR = 0.25;
+
+    private static double minMass(VolumeParameters p) {
+        double h = p.cellSizeM();
+        return MASS_FLOOR * p.densityKgPerM3() * h * h * h;
+    }
+
+    /**
+     * The scene's global viscous damping is c N s/m on every node (c = alpha times the diaphragm's mean node mass):
+     * on an organ node of mass m it is the rate c / m, which an explicit step of dt keeps stable for c dt / m below
+     * about 1. The lattices' clipped corner nodes are light (down to rho h^3 / 512), so a coarse diaphragm (heavy
+     * nodes, a large c) with fine organs is refused here, naming the values, rather than left to diverge.
+     */
+    private static void refuseOverdamped(Topology t, int first, double dt) {
+        double c = t.viscousDamping();
+        for (int id = first; id < t.nodeCount(); id++) {
+            double m = t.node(id).mass();
+            if (!t.node(id).isFixed() && c * dt / m > 0.5) {
+                throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "organ node %d of mass %.3g"
+                        + " kg under the scene's viscous damping %.3g N s/m at the step %.3g s: c dt / m = %.2f,"
+                        + " expected at most 0.5 (coarser organ cells, a finer diaphragm or less viscous damping)", id,
+                        m, c, dt, c * dt / m));
+            }
+        }
     }
 
     /** The couplings to enforce (the lungs' sliding on the pleura, the liver's contact). */
