@@ -1,0 +1,283 @@
+package org.tensim.solver;
+
+import java.util.Arrays;
+import org.tensim.model.LinearMapping;
+
+/**
+ * Follower nodes sliding on (or touching) a moving, deforming surface carried by other nodes of the same state: the
+ * frictionless coupling of two deformable bodies (the lung on the pleura carried by the diaphragm and the ribs, the
+ * liver pushed by the diaphragm's lower surface). The surface's points are {@code p = W x}, a {@link LinearMapping}
+ * of the state's nodes (driven and fixed nodes may carry points: the forces they receive are ignored by their zero
+ * inverse mass); its triangles join the points, outward normal by the right-hand rule on the winding.
+ *
+ * <p>Follower i (position y, stiffness k_i in N/m, gap g_i in m) is paired with a triangle (a, b, c) of unit normal
+ * n; with {@code d = n . (y - a)} its signed distance to the triangle's plane (m, + outside) and {@code pen = g - d}:
+ * <pre>
+ *   SLIDING (bilateral):  E = k pen^2 / 2            (held at distance g, on both sides)
+ *   CONTACT (one-sided):  E = k max(0, pen)^2 / 2    (pushed out to the gap along +n, free to leave)
+ *   f_follower = -dE/dd n = k pen n                  (along n only: frictionless)
+ *   f_corner_j = -k pen beta_j n,  j = a, b, c        (beta: barycentric coordinates of the projection y - d n)
+ *   F_nodes   += W^T f_corners                        ({@link LinearMapping#addTranspose})
+ * </pre>
+ * These are exactly minus the gradient of E for the pairing held: moving a corner along the plane leaves the plane,
+ * so d, unchanged, and moving corner j by e along n raises the plane under the projection by beta_j e, so
+ * {@code dd/dx_j = -beta_j n} with n's rotation included (nothing neglected). The reaction is equal and opposite to
+ * the follower's force and acts at the projection, on the force's line: the total force and the total moment vanish
+ * at the points, and so at the nodes (the mapping's weights sum to 1 and carry moments exactly).
+ *
+ * <p>Pairing: each follower with its nearest triangle (closest point), by brute force at construction, then kept up
+ * to date at every force pass by a local walk over triangles sharing a vertex ({@link SurfacePairing}, which says
+ * why). The pairing is the one state this term changes; {@link #energy} and the read-outs walk from it without
+ * storing. A pairing change moves a follower to another plane, continuous where the surface is flat and a jump of
+ * the energy of order {@code k pen^2 theta} at an edge of angle theta. A CONTACT follower whose projection is past
+ * a border edge of an open surface is off the surface and takes no force (otherwise the extended plane of the rim
+ * triangle would push nodes that are nowhere near); a SLIDING follower stays held to that plane.
+ *
+ * <p>Stability: the term is not linearised by the implicit integrators; its stiffness counts against the followers'
+ * and the surface nodes' masses, {@code dt < 2 sqrt(m / k)} for an explicit step ({@link ForceTerm}). Allocation-free
+ * in {@link #addForces}; {@link #energy} and the read-outs use their own scratch under a lock, and may run on
+ * another thread on a copy of the positions.
+ */
+public final class SurfaceSliding implements ForceTerm {
+    /** How a follower is held: {@link #SLIDING} bilateral, {@link #CONTACT} one-sided. */
+    public enum Mode {
+        /** E = k (g - d)^2 / 2: kept at the gap from both sides, free tangentially (the pleura). */
+        SLIDING,
+        /** E = k max(0, g - d)^2 / 2: pushed out along +n when closer than the gap, free to separate. */
+        CONTACT
+    }
+
+    private final int[] follower; // node ids
+    private final double[] stiffness; // N/m per follower
+    private final double[] gap; // m per follower
+    private final Mode mode;
+    private final LinearMapping mapping;
+    private final SurfacePairing surface;
+    private final int[] pair; // triangle per follower
+    private final double[] points; // force pass: p = W x, 3 per point
+    private final double[] pointForces; // force pass: 3 per point, N
+    private final double[] plane = new double[7]; // force pass: n, d, beta
+    private final double[] readPoints; // energy and read-outs (under readLock)
+    private final double[] readPlane = new double[7];
+    private final Object readLock = new Object();
+
+    /**
+     * A term with one gap for all followers.
+     *
+     * @see #SurfaceSliding(int[], LinearMapping, int[], double[], Mode, double[], double[])
+     */
+    public SurfaceSliding(int[] followers, LinearMapping surfacePoints, int[] triangles, double[] stiffness, Mode mode,
+            double gapM, double[] x) {
+        this(followers, surfacePoints, triangles, stiffness, mode, filled(followers.length, gapM), x);
+    }
+
+    /**
+     * @param followers     node ids (of the state x belongs to) that slide, each once, none carrying a surface point
+     * @param surfacePoints the surface's points as a mapping of the same state's nodes
+     * @param triangles     3 point ids each, outward normal by the right-hand rule on the winding
+     * @param stiffness     per follower, N/m, positive ({@link SlidingStiffness} makes them from Pa/m and areas)
+     * @param mode          bilateral {@link Mode#SLIDING} or one-sided {@link Mode#CONTACT}
+     * @param gapsM         per follower, the distance g it is held at (SLIDING) or kept beyond (CONTACT), m, finite
+     * @param x             the state's positions to pair the followers at, m, 3 per node
+     * @throws IllegalArgumentException naming the value: a follower out of range, repeated or carrying a surface
+     *                                  point; a stiffness or gap not positive or finite; a degenerate triangle
+     */
+    public SurfaceSliding(int[] followers, LinearMapping surfacePoints, int[] triangles, double[] stiffness, Mode mode,
+            double[] gapsM, double[] x) {
+        int nodes = x.length / 3;
+        if (surfacePoints.nodeCount() > nodes) {
+            throw new IllegalArgumentException("the sliding surface's mapping refers to " + surfacePoints.nodeCount()
+                    + " nodes but the positions have " + nodes);
+        }
+        if (followers.length == 0 || stiffness.length != followers.length || gapsM.length != followers.length) {
+            throw new IllegalArgumentException("a sliding term needs followers and one stiffness and gap each: got "
+                    + followers.length + " followers, " + stiffness.length + " stiffnesses, " + gapsM.length
+                    + " gaps");
+        }
+        if (mode == null) {
+            throw new IllegalArgumentException("a sliding term needs a mode: SLIDING or CONTACT");
+        }
+        boolean[] carries = new boolean[nodes];
+        for (int i = 0; i < surfacePoints.pointCount(); i++) {
+            for (int k = 0; k < surfacePoints.entries(i); k++) {
+                carries[surfacePoints.node(i, k)] = true;
+            }
+        }
+        boolean[] seen = new boolean[nodes];
+        for (int e = 0; e < followers.length; e++) {
+            int j = followers[e];
+            if (j < 0 || j >= nodes) {
+                throw new IllegalArgumentException("follower " + e + " is node " + j + ": expected a node id in [0, "
+                        + nodes + ")");
+            }
+            if (seen[j] || carries[j]) {
+                throw new IllegalArgumentException("follower " + e + " (node " + j + ") "
+                        + (seen[j] ? "is listed twice" : "carries a point of the surface it slides on"));
+            }
+            seen[j] = true;
+            if (!(stiffness[e] > 0) || Double.isInfinite(stiffness[e])) {
+                throw new IllegalArgumentException("follower " + e + " (node " + j + ") has stiffness " + stiffness[e]
+                        + " N/m: expected a positive finite value");
+            }
+            if (!Double.isFinite(gapsM[e])) {
+                throw new IllegalArgumentException("follower " + e + " (node " + j + ") has gap " + gapsM[e]
+                        + " m: expected a finite length");
+            }
+        }
+        this.follower = followers.clone();
+        this.stiffness = stiffness.clone();
+        this.gap = gapsM.clone();
+        this.mode = mode;
+        this.mapping = surfacePoints;
+        this.surface = new SurfacePairing(triangles, surfacePoints.pointCount());
+        this.points = new double[3 * surfacePoints.pointCount()];
+        this.pointForces = new double[points.length];
+        this.readPoints = new double[points.length];
+        mapping.apply(x, points);
+        for (int t = 0; t < surface.triangleCount(); t++) {
+            if (!surface.plane(points, t, x, 0, plane)) {
+                throw new IllegalArgumentException("sliding surface triangle " + t + " (points "
+                        + surface.corner(t, 0) + ", " + surface.corner(t, 1) + ", " + surface.corner(t, 2)
+                        + ") has zero area: expected a triangle with three distinct corners");
+            }
+        }
+        this.pair = new int[followers.length];
+        repair(x);
+    }
+
+    private static double[] filled(int n, double v) {
+        double[] a = new double[n];
+        Arrays.fill(a, v);
+        return a;
+    }
+
+    /**
+     * Pairs every follower anew with its nearest triangle by testing all triangles, O(followers x triangles):
+     * for construction and after a jump (a reset of the positions), not for every step. Allocation-free.
+     */
+    public void repair(double[] x) {
+        synchronized (readLock) {
+            mapping.apply(x, readPoints);
+            for (int e = 0; e < follower.length; e++) {
+                pair[e] = surface.nearest(readPoints, x, 3 * follower[e]);
+            }
+        }
+    }
+
+    @Override
+    public void addForces(double t, double[] x, double[] v, double[] f) {
+        mapping.apply(x, points);
+        Arrays.fill(pointForces, 0);
+        final double[] pl = plane;
+        for (int e = 0; e < follower.length; e++) {
+            int i = 3 * follower[e];
+            int tri = surface.walk(points, pair[e], x, i, pl);
+            if (tri < 0) {
+                continue; // a triangle crushed to zero area has no normal: no force until it opens again
+            }
+            pair[e] = tri;
+            double pen = gap[e] - pl[3];
+            if (mode == Mode.CONTACT && (pen <= 0 || surface.beyondBorder(tri, pl))) {
+                continue;
+            }
+            double s = stiffness[e] * pen;
+            double fx = s * pl[0], fy = s * pl[1], fz = s * pl[2];
+            f[i] += fx;
+            f[i + 1] += fy;
+            f[i + 2] += fz;
+            for (int c = 0; c < 3; c++) {
+                int o = 3 * surface.corner(tri, c);
+                double b = pl[4 + c];
+                pointForces[o] -= b * fx;
+                pointForces[o + 1] -= b * fy;
+                pointForces[o + 2] -= b * fz;
+            }
+        }
+        mapping.addTranspose(pointForces, f);
+    }
+
+    /** {@inheritDoc} The sum over followers of E above, J, for the pairing walked from the current one. */
+    @Override
+    public double energy(double t, double[] x) {
+        synchronized (readLock) {
+            mapping.apply(x, readPoints);
+            double sum = 0;
+            for (int e = 0; e < follower.length; e++) {
+                double pen = penetration(e, x);
+                if (!Double.isNaN(pen) && (mode == Mode.SLIDING || pen > 0)) {
+                    sum += 0.5 * stiffness[e] * pen * pen;
+                }
+            }
+            return sum;
+        }
+    }
+
+    /** g - d of follower e at x with readPoints mapped; NaN when off the surface (CONTACT) or degenerate. */
+    private double penetration(int e, double[] x) {
+        int tri = surface.walk(readPoints, pair[e], x, 3 * follower[e], readPlane);
+        if (tri < 0 || mode == Mode.CONTACT && surface.beyondBorder(tri, readPlane)) {
+            return Double.NaN;
+        }
+        return gap[e] - readPlane[3];
+    }
+
+    /** The largest penetration over followers, max(0, g - d), m, at positions x (0 if none); off-surface ignored. */
+    public double maxPenetrationM(double[] x) {
+        return extreme(x, 1);
+    }
+
+    /** The largest separation over followers, max(0, d - g), m, at positions x (0 if none); off-surface ignored. */
+    public double maxSeparationM(double[] x) {
+        return extreme(x, -1);
+    }
+
+    private double extreme(double[] x, double sign) {
+        synchronized (readLock) {
+            mapping.apply(x, readPoints);
+            double m = 0;
+            for (int e = 0; e < follower.length; e++) {
+                double pen = penetration(e, x);
+                if (!Double.isNaN(pen)) {
+                    m = Math.max(m, sign * pen);
+                }
+            }
+            return m;
+        }
+    }
+
+    /** Number of follower-triangle pairs (one per follower). */
+    public int pairCount() {
+        return follower.length;
+    }
+
+    /** Node id of follower e. */
+    public int follower(int e) {
+        return follower[e];
+    }
+
+    /** The triangle follower e is paired with now (its index in the triangles given). */
+    public int pairedTriangle(int e) {
+        return pair[e];
+    }
+
+    /** Stiffness of follower e, N/m. */
+    public double stiffness(int e) {
+        return stiffness[e];
+    }
+
+    /** Gap of follower e, m. */
+    public double gapM(int e) {
+        return gap[e];
+    }
+
+    /** The mode: bilateral or one-sided. */
+    public Mode mode() {
+        return mode;
+    }
+
+    @Override
+    public String toString() {
+        return "SurfaceSliding[" + mode + ", " + follower.length + " followers on " + surface.triangleCount()
+                + " triangles of " + mapping.pointCount() + " points]";
+    }
+}

@@ -1,0 +1,103 @@
+package org.tensim.solver;
+
+import java.util.Random;
+import org.tensim.model.LinearMapping;
+
+/**
+ * Seeded random configurations for the sliding term's tests: a bumpy grid surface of g x g points, each point a
+ * 0.6 / 0.4 mix of two carrier nodes jittered around it (so the mapping is not the identity), followers scattered
+ * above and below it, the whole turned by a random rotation and shifted.
+ */
+final class SlidingCases {
+    static final double SPACING = 0.01; // m
+
+    /** A configuration: positions (3 per node), followers, the surface's mapping and triangles, k and gaps. */
+    record Case(double[] x, int[] followers, LinearMapping mapping, int[] triangles, double[] stiffness,
+            double[] gaps) {
+        SurfaceSliding term(SurfaceSliding.Mode mode) {
+            return new SurfaceSliding(followers, mapping, triangles, stiffness, mode, gaps, x);
+        }
+    }
+
+    private SlidingCases() {
+    }
+
+    static Case random(long seed, int g, int followerCount) {
+        Random r = new Random(seed);
+        int points = g * g;
+        int nodes = 2 * points + followerCount;
+        double[] x = new double[3 * nodes];
+        LinearMapping.Builder map = new LinearMapping.Builder(nodes);
+        for (int i = 0; i < g; i++) {
+            for (int j = 0; j < g; j++) {
+                int p = i * g + j;
+                double px = i * SPACING, py = j * SPACING, pz = 0.002 * r.nextDouble();
+                double[] jitter = {0.003 * r.nextGaussian(), 0.003 * r.nextGaussian(), 0.003 * r.nextGaussian()};
+                double[] at = {px, py, pz};
+                for (int a = 0; a < 3; a++) {
+                    x[6 * p + a] = at[a] + jitter[a];
+                    x[6 * p + 3 + a] = (at[a] - 0.6 * (at[a] + jitter[a])) / 0.4; // 0.6 A + 0.4 B = point
+                }
+                map.add(new int[] {2 * p, 2 * p + 1}, new double[] {0.6, 0.4});
+            }
+        }
+        int[] tris = new int[6 * (g - 1) * (g - 1)];
+        int k = 0;
+        for (int i = 0; i + 1 < g; i++) {
+            for (int j = 0; j + 1 < g; j++) {
+                int a = i * g + j, b = (i + 1) * g + j, c = (i + 1) * g + j + 1, d = i * g + j + 1;
+                int[] two = {a, b, c, a, c, d}; // counter-clockwise seen from +z: normal +z
+                System.arraycopy(two, 0, tris, k, 6);
+                k += 6;
+            }
+        }
+        int[] followers = new int[followerCount];
+        double[] stiffness = new double[followerCount];
+        double[] gaps = new double[followerCount];
+        double extent = (g - 1) * SPACING;
+        for (int e = 0; e < followerCount; e++) {
+            int n = 2 * points + e;
+            followers[e] = n;
+            x[3 * n] = extent * (0.1 + 0.8 * r.nextDouble());
+            x[3 * n + 1] = extent * (0.1 + 0.8 * r.nextDouble());
+            x[3 * n + 2] = 0.001 + 0.003 * (2 * r.nextDouble() - 1);
+            stiffness[e] = 50 + 100 * r.nextDouble();
+            gaps[e] = 0.001 * (2 * r.nextDouble() - 1);
+        }
+        rotate(x, r);
+        return new Case(x, followers, map.build(), tris, stiffness, gaps);
+    }
+
+    /** Turns all positions by a random rotation (a random unit quaternion) and shifts them by up to 0.1 m. */
+    private static void rotate(double[] x, Random r) {
+        double qw = r.nextGaussian(), qx = r.nextGaussian(), qy = r.nextGaussian(), qz = r.nextGaussian();
+        double q = Math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
+        qw /= q;
+        qx /= q;
+        qy /= q;
+        qz /= q;
+        double[] m = {
+            1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw),
+            2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw),
+            2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)};
+        double[] shift = {0.1 * r.nextDouble(), 0.1 * r.nextDouble(), 0.1 * r.nextDouble()};
+        for (int i = 0; i < x.length; i += 3) {
+            double a = x[i], b = x[i + 1], c = x[i + 2];
+            for (int k = 0; k < 3; k++) {
+                x[i + k] = m[3 * k] * a + m[3 * k + 1] * b + m[3 * k + 2] * c + shift[k];
+            }
+        }
+    }
+
+    /** Unit normal of triangle t of the case at positions x (independent of the term's code), and its corner a. */
+    static double[] normalAndCorner(Case c, double[] x, int t) {
+        double[] p = new double[3 * c.mapping().pointCount()];
+        c.mapping().apply(x, p);
+        int a = 3 * c.triangles()[3 * t], b = 3 * c.triangles()[3 * t + 1], d = 3 * c.triangles()[3 * t + 2];
+        double[] u = {p[b] - p[a], p[b + 1] - p[a + 1], p[b + 2] - p[a + 2]};
+        double[] v = {p[d] - p[a], p[d + 1] - p[a + 1], p[d + 2] - p[a + 2]};
+        double[] n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        double len = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        return new double[] {n[0] / len, n[1] / len, n[2] / len, p[a], p[a + 1], p[a + 2]};
+    }
+}
