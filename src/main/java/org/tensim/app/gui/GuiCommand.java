@@ -150,8 +150,8 @@ public final class GuiCommand implements Callable<Integer> {
         boolean keep = !sceneFile.given();
         GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
                 !paused && !script, threadCount,
-                keep && TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
-                options.thorax != null);
+                keep && !organs && TunableScenes.opensInRealTime(scene) && !options.paperModel(),
+                options.muscleLoad != null, options.thorax != null && !organs);
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
             String note = "mechanics at " + picked.describe();

@@ -98,9 +98,13 @@ public final class DiaphragmOrgansViewScene implements ViewScene {
         return diaphragm.liveState();
     }
 
+    /**
+     * RK2, as {@code tensim diaphragm --lungs} runs: the organs' couplings are explicit force terms, not linearised by
+     * the implicit integrators, so the large real-time steps of the thorax do not hold with them.
+     */
     @Override
     public String defaultIntegrator() {
-        return diaphragm.defaultIntegrator();
+        return org.tensim.solver.integrators.Integrators.DEFAULT;
     }
 
     @Override
