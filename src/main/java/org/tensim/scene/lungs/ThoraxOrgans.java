@@ -66,14 +66,15 @@ public final class ThoraxOrgans {
         }
 
         /**
-         * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 3e5 Pa/m
-         * (a pressure of 300 Pa, the lungs' elastic stress at tidal strains, leaves 1 mm), liver contact 3e5 Pa/m,
+         * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 1e6 Pa/m
+         * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
+         * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, followers within 4 mm of
          * their surface, 300 points.
          */
         public static Options defaults() {
             return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), LIVER, PleuraCarriers.Rules.defaults(),
-                    3e5, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
+                    1e6, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
         }
 
         /**
