@@ -52,7 +52,7 @@ class PleuraDrivenLungsTest {
         double[] p0 = new double[3 * organs.points().pointCount()];
         organs.points().apply(sim.state().x, p0);
         double ti = scene.cycle().inspirationS();
-        List<PleuraCarriers.Rib> ribs = ThoraxOrgans.ribs(scene.topology(), scene.cage().segments());
+        List<PleuraCarriers.Rib> ribs = OrganGeometry.ribs(scene.topology(), scene.cage().segments());
         double worst = 0;
         double worstPen = 0;
         double worstSep = 0;
