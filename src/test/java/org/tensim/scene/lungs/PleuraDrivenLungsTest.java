@@ -69,12 +69,28 @@ class PleuraDrivenLungsTest {
                 worst = Math.max(worst, balance(terms, x));
             }
         }
+        int apex = scene.apexNode();
+        double withOrgans = scene.topology().node(apex).position().z() - sim.state().x[3 * apex + 2];
+        DiaphragmScene plain = DiaphragmScene.build(TwoSurfaces.split(DoubleDomeGenerator.shell(
+                DoubleDomeGenerator.Shape.adult().withRings(12))), ParametricRibCage.adult(),
+                DiaphragmParameters.defaults(), BreathingCycle.quiet(),
+                new DiaphragmControls(1, DiaphragmSetup.defaultMusclePa()), null, BoundaryConditions.defaults());
+        Simulation bare = plain.newSimulation();
+        while (bare.time() < ti - 0.5 * dt) {
+            bare.step(dt);
+        }
+        double without = plain.topology().node(apex).position().z() - bare.state().x[3 * apex + 2];
+        System.out.printf("dome apex descent to end-inspiration: %.2f mm with the lungs, %.2f mm without%n",
+                1e3 * withOrgans, 1e3 * without);
         double[] p1 = new double[p0.length];
         organs.points().apply(sim.state().x, p1);
         double[] ends = baseAndApexDescent(p0, p1, organs.pointLung(), 0);
         System.out.printf("to end-inspiration %.2f s: pleura penetration %.3f mm, separation %.3f mm, rib carriers"
                 + " %.2e m off, force balance %.2e; right lung SI descent base %.2f mm, apex %.2f mm%n", ti,
                 1e3 * worstPen, 1e3 * worstSep, worstRib, worst, 1e3 * ends[0], 1e3 * ends[1]);
+        // The lungs press back: the dome descends less with them (14.3 against 17.1 mm when measured), not stopped.
+        assertTrue(withOrgans < without && withOrgans > 0.5 * without, "the lungs press back on the diaphragm: "
+                + withOrgans + " m against " + without + " m");
         assertTrue(worstRib < 1e-12, "rib-carried pleura vertices move exactly with their rib: " + worstRib + " m");
         // The term's penetration (g - d > 0: a lung node deeper inside than at rest) is the lung lagging away from the
         // pleura; its separation the lung pressed into the wall. On this coarse lattice (15 mm cells, a 266-vertex
