@@ -37,6 +37,7 @@ public final class OrganRecorder implements RunRecorder {
     private double period;
     private double nextFrame;
     private double nextRead;
+    private double lastT;
     private double liverMin = Double.POSITIVE_INFINITY;
     private double liverMax = Double.NEGATIVE_INFINITY;
     private double[] eePoints;
@@ -57,25 +58,29 @@ public final class OrganRecorder implements RunRecorder {
         period = periodS;
         nextFrame = start;
         nextRead = Math.min(period, start);
+        lastT = sim.time();
+        afterStep(sim);
     }
 
     @Override
     public void afterStep(Simulation sim) {
         double t = sim.time();
+        double half = t > lastT ? 0.5 * (t - lastT) : 1e-9; // half a step: an instant is the step nearest it
+        lastT = t;
         double[] x = sim.state().x;
-        if (t >= nextRead - 1e-9) {
+        if (t >= nextRead - half) {
             nextRead += READ_S;
             for (int i = 0; i < terms.size(); i++) {
                 worstPen[i] = Math.max(worstPen[i], terms.get(i).maxPenetrationM(x));
                 worstSep[i] = Math.max(worstSep[i], terms.get(i).maxSeparationM(x));
             }
-            if (organs.liver() != null && t >= start - 1e-9 && t <= start + period + 1e-9) {
+            if (organs.liver() != null && t >= start - half && t <= start + period + half) {
                 double z = meanZ(x, organs.liver().firstNode(), organs.liver().nodeCount());
                 liverMin = Math.min(liverMin, z);
                 liverMax = Math.max(liverMax, z);
             }
         }
-        if (t >= nextFrame - 1e-9 && t <= start + period + 1e-6) {
+        if (t >= nextFrame - half && nextFrame <= start + period + 1e-9) {
             double[] p = new double[3 * organs.points().pointCount()];
             organs.points().apply(x, p);
             times.add(nextFrame);
@@ -83,7 +88,7 @@ public final class OrganRecorder implements RunRecorder {
             if (eePoints == null) {
                 eePoints = p;
             }
-            if (eiPoints == null && nextFrame >= inspEnd - 1e-9) {
+            if (eiPoints == null && nextFrame >= inspEnd - half) {
                 eiPoints = p;
             }
             nextFrame = start + EVERY_S * times.size();
@@ -146,8 +151,9 @@ public final class OrganRecorder implements RunRecorder {
                             subset.stream().mapToInt(Integer::intValue).toArray());
                     m.put("basal_si_mm", round(1e3 * s.basalSiM(), 2));
                     m.put("mean_3d_mm", round(1e3 * s.mean3dM(), 2));
-                    m.put("si_profile_ratio", java.util.Arrays.stream(s.ratio()).map(r -> round(r, 3)).boxed()
-                            .toList());
+                    // An empty bin's ratio is NaN: null in the JSON.
+                    m.put("si_profile_ratio", java.util.Arrays.stream(s.ratio()).mapToObj(r -> Double.isNaN(r)
+                            ? null : (Object) round(r, 3)).toList());
                 } catch (IllegalArgumentException e) {
                     m.put("not_measured", e.getMessage());
                 }

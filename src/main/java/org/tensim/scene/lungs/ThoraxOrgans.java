@@ -6,7 +6,6 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Check;
 import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
-import org.tensim.model.Vec3;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.RibCage;
 import org.tensim.scene.thorax.TriangleTree;
@@ -66,14 +65,15 @@ public final class ThoraxOrgans {
         }
 
         /**
-         * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 3e5 Pa/m
-         * (a pressure of 300 Pa, the lungs' elastic stress at tidal strains, leaves 1 mm), liver contact 3e5 Pa/m,
+         * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 1e6 Pa/m
+         * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
+         * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, followers within 4 mm of
          * their surface, 300 points.
          */
         public static Options defaults() {
             return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), LIVER, PleuraCarriers.Rules.defaults(),
-                    3e5, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
+                    1e6, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
         }
 
         /**
@@ -176,11 +176,11 @@ public final class ThoraxOrgans {
         int[] held = new int[0];
         if (liverSurface != null && o.liver() != null) {
             liver = VolumeBody.build(t, liverSurface, o.liver(), "the liver", minMass(o.liver()));
-            held = holdBareArea(t, liver, o.liver().cellSizeM(), o.liverHoldPaPerM());
+            held = OrganGeometry.holdBareArea(t, liver, o.liver().cellSizeM(), o.liverHoldPaPerM());
         }
-        refuseOverdamped(t, first, scene.recommendedTimeStep());
+        OrganGeometry.refuseOverdamped(t, first, scene.recommendedTimeStep());
         List<RibCage.Segment> segs = scene.cage().segments();
-        List<PleuraCarriers.Rib> ribs = ribs(t, segs);
+        List<PleuraCarriers.Rib> ribs = OrganGeometry.ribs(t, segs);
         int[] upper = scene.upperTriangles();
         List<PleuraCarriers.Built> pleurae = new ArrayList<>();
         for (LungVolumes.Lung l : lungs) {
@@ -191,19 +191,19 @@ public final class ThoraxOrgans {
         for (int i = 0; i < lungs.size(); i++) {
             VolumeBody body = lungs.get(i).body();
             double h = o.lung().cellSizeM();
-            int[] f = surfaceNodes(t, body, o.followerBandM(), null, 0);
-            couplings.add(new Coupling(side[i] + " lung on the pleura", f, rebase(pleurae.get(i).mapping(), n),
-                    lungs.get(i).surface().triangles(), filled(f.length, o.pleuraPaPerM() * h * h), true));
+            int[] f = OrganGeometry.surfaceNodes(t, body, o.followerBandM(), null, 0);
+            couplings.add(new Coupling(side[i] + " lung on the pleura", f, OrganGeometry.rebase(pleurae.get(i).mapping(), n),
+                    lungs.get(i).surface().triangles(), OrganGeometry.filled(f.length, o.pleuraPaPerM() * h * h), true));
         }
         if (liver != null) {
             double h = o.liver().cellSizeM();
             int nd = scene.diaphragmNodes();
-            int[] lower = lowerTriangles(scene);
-            double[] xyz = restPositions(t, nd);
+            int[] lower = OrganGeometry.lowerTriangles(scene);
+            double[] xyz = OrganGeometry.restPositions(t, nd);
             TriangleTree tree = new TriangleTree(xyz, lower, 3);
-            int[] f = surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
-            couplings.add(new Coupling("liver under the diaphragm", f, identity(nd, n), lower,
-                    filled(f.length, o.liverPaPerM() * h * h), false));
+            int[] f = OrganGeometry.surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
+            couplings.add(new Coupling("liver under the diaphragm", f, OrganGeometry.identity(nd, n), lower,
+                    OrganGeometry.filled(f.length, o.liverPaPerM() * h * h), false));
         }
         // The sample points and the probes, each in the lattice of the lung that holds it.
         LungSamples s = LungSamples.draw(lungSurfaces, o.samples(), LungSamples.SEED);
@@ -217,7 +217,7 @@ public final class ThoraxOrgans {
         }
         for (int k = 0; 3 * k < o.probesM().length; k++) {
             double[] p = java.util.Arrays.copyOfRange(o.probesM(), 3 * k, 3 * k + 3);
-            int lung = lungHolding(lungSurfaces, p);
+            int lung = OrganGeometry.lungHolding(lungSurfaces, p);
             if (lung < 0) {
                 throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "lung probe %d at (%.1f,"
                         + " %.1f, %.1f) mm is inside neither lung: expected a point in a lung's volume", k,
@@ -240,7 +240,7 @@ public final class ThoraxOrgans {
      */
     public List<SurfaceSliding> install(DiaphragmScene scene) {
         Topology t = scene.topology();
-        double[] x0 = restPositions(t, t.nodeCount());
+        double[] x0 = OrganGeometry.restPositions(t, t.nodeCount());
         List<SurfaceSliding> terms = new ArrayList<>();
         for (Coupling c : couplings) {
             SurfaceSliding.Mode mode = c.bilateral() ? SurfaceSliding.Mode.SLIDING : SurfaceSliding.Mode.CONTACT;
@@ -250,7 +250,7 @@ public final class ThoraxOrgans {
             c.surface().apply(x0, p);
             double[] gaps = new double[c.followers().length];
             for (int e = 0; e < gaps.length; e++) {
-                gaps[e] = planeDistance(p, c.triangles(), probe.pairedTriangle(e), x0, 3 * c.followers()[e]);
+                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), x0, 3 * c.followers()[e]);
             }
             SurfaceSliding term = new SurfaceSliding(c.followers(), c.surface(), c.triangles(), c.stiffness(), mode,
                     gaps, x0);
@@ -258,18 +258,6 @@ public final class ThoraxOrgans {
             terms.add(term);
         }
         return terms;
-    }
-
-    /** Signed distance of x[o..o+2] to the plane of triangle tri (corners in p), + on the winding's outward side. */
-    static double planeDistance(double[] p, int[] tris, int tri, double[] x, int o) {
-        int a = 3 * tris[3 * tri];
-        int b = 3 * tris[3 * tri + 1];
-        int c = 3 * tris[3 * tri + 2];
-        double ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
-        double vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
-        double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-        double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        return (nx * (x[o] - p[a]) + ny * (x[o + 1] - p[a + 1]) + nz * (x[o + 2] - p[a + 2])) / len;
     }
 
     /**
@@ -283,25 +271,6 @@ public final class ThoraxOrgans {
     private static double minMass(VolumeParameters p) {
         double h = p.cellSizeM();
         return MASS_FLOOR * p.densityKgPerM3() * h * h * h;
-    }
-
-    /**
-     * The scene's global viscous damping is c N s/m on every node (c = alpha times the diaphragm's mean node mass):
-     * on an organ node of mass m it is the rate c / m, which an explicit step of dt keeps stable for c dt / m below
-     * about 1. The lattices' clipped corner nodes are light (down to rho h^3 / 512), so a coarse diaphragm (heavy
-     * nodes, a large c) with fine organs is refused here, naming the values, rather than left to diverge.
-     */
-    private static void refuseOverdamped(Topology t, int first, double dt) {
-        double c = t.viscousDamping();
-        for (int id = first; id < t.nodeCount(); id++) {
-            double m = t.node(id).mass();
-            if (!t.node(id).isFixed() && c * dt / m > 0.5) {
-                throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "organ node %d of mass %.3g"
-                        + " kg under the scene's viscous damping %.3g N s/m at the step %.3g s: c dt / m = %.2f,"
-                        + " expected at most 0.5 (coarser organ cells, a finer diaphragm or less viscous damping)", id,
-                        m, c, dt, c * dt / m));
-            }
-        }
     }
 
     /** The couplings to enforce (the lungs' sliding on the pleura, the liver's contact). */
@@ -343,143 +312,4 @@ public final class ThoraxOrgans {
         return firstNode;
     }
 
-    /** The ribs' centrelines with their motions, from the cage's rib segments (consecutive by name). */
-    static List<PleuraCarriers.Rib> ribs(Topology t, List<RibCage.Segment> segs) {
-        java.util.Map<String, List<RibCage.Segment>> byName = new java.util.LinkedHashMap<>();
-        for (RibCage.Segment s : segs) {
-            if (s.kind() == RibCage.Kind.RIB && s.motion() != null) {
-                byName.computeIfAbsent(s.name(), k -> new ArrayList<>()).add(s);
-            }
-        }
-        List<PleuraCarriers.Rib> out = new ArrayList<>();
-        for (var e : byName.entrySet()) {
-            List<RibCage.Segment> l = e.getValue();
-            double[] line = new double[6 * l.size()];
-            int k = 0;
-            for (RibCage.Segment s : l) {
-                for (int end : new int[] {s.a(), s.b()}) {
-                    Vec3 p = t.node(end).position();
-                    line[k++] = p.x();
-                    line[k++] = p.y();
-                    line[k++] = p.z();
-                }
-            }
-            out.add(new PleuraCarriers.Rib(e.getKey(), l.get(0).motion(), line));
-        }
-        return out;
-    }
-
-    /**
-     * The body's nodes within {@code band} of its surface (either side) and, with a tree, within {@code reach} of
-     * the tree's surface.
-     */
-    static int[] surfaceNodes(Topology t, VolumeBody body, double band, TriangleTree near, double reach) {
-        TriangleMesh m = body.surface();
-        TriangleTree tree = new TriangleTree(m.coordinates(), m.triangles(), 3);
-        int[] stack = tree.newStack();
-        int[] stack2 = near == null ? null : near.newStack();
-        List<Integer> out = new ArrayList<>();
-        for (int id = body.firstNode(), e = body.firstNode() + body.nodeCount(); id < e; id++) {
-            Vec3 p = t.node(id).position();
-            if (tree.distance(p.x(), p.y(), p.z(), stack) <= band
-                    && (near == null || near.distance(p.x(), p.y(), p.z(), stack2) <= reach)) {
-                out.add(id);
-            }
-        }
-        return out.stream().mapToInt(Integer::intValue).toArray();
-    }
-
-    /**
-     * Zero-length springs from the liver's bare-area nodes (posterior fifth of its depth, +y posterior; upper half
-     * of its height) to fixed anchors, of stiffness K h^2 each; returns the held nodes.
-     */
-    private static int[] holdBareArea(Topology t, VolumeBody liver, double h, double paPerM) {
-        double[] b = liver.surface().bounds();
-        double yCut = b[4] - 0.2 * (b[4] - b[1]);
-        double zCut = 0.5 * (b[2] + b[5]);
-        List<Integer> held = new ArrayList<>();
-        int end = liver.firstNode() + liver.nodeCount();
-        for (int id = liver.firstNode(); id < end; id++) {
-            Vec3 p = t.node(id).position();
-            if (p.y() >= yCut && p.z() >= zCut) {
-                held.add(id);
-            }
-        }
-        for (int id : held) {
-            int a = t.addNode(t.node(id).position(), PleuraCarriers.FRAME_MASS_KG).fix().id();
-            t.addSpring(id, a, paPerM * h * h, 0, 0);
-        }
-        return held.stream().mapToInt(Integer::intValue).toArray();
-    }
-
-    /** The diaphragm's lower-surface triangles (mesh triangles none of whose corners is upper), as node ids. */
-    static int[] lowerTriangles(DiaphragmScene scene) {
-        TriangleMesh m = scene.surfaces().mesh();
-        List<Integer> out = new ArrayList<>();
-        for (int tr = 0; tr < m.triangleCount(); tr++) {
-            boolean lower = true;
-            for (int k = 0; k < 3; k++) {
-                lower &= !scene.surfaces().isUpper(m.corner(tr, k));
-            }
-            if (lower) {
-                for (int k = 0; k < 3; k++) {
-                    out.add(m.corner(tr, k));
-                }
-            }
-        }
-        return out.stream().mapToInt(Integer::intValue).toArray();
-    }
-
-    private static int lungHolding(List<TriangleMesh> surfaces, double[] p) {
-        for (int i = 0; i < surfaces.size(); i++) {
-            TriangleMesh m = surfaces.get(i);
-            TriangleTree tree = new TriangleTree(m.coordinates(), m.triangles(), 3);
-            if (Math.abs(tree.winding(p[0], p[1], p[2], tree.newStack())) > 0.5) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    private static double[] restPositions(Topology t, int n) {
-        double[] x = new double[3 * n];
-        for (int i = 0; i < n; i++) {
-            Vec3 p = t.node(i).position();
-            x[3 * i] = p.x();
-            x[3 * i + 1] = p.y();
-            x[3 * i + 2] = p.z();
-        }
-        return x;
-    }
-
-    private static double[] filled(int n, double v) {
-        double[] a = new double[n];
-        java.util.Arrays.fill(a, v);
-        return a;
-    }
-
-    /** Points 0 .. n-1 on nodes 0 .. n-1, weight 1, for a state of {@code nodeCount} nodes. */
-    static LinearMapping identity(int n, int nodeCount) {
-        LinearMapping.Builder b = new LinearMapping.Builder(nodeCount);
-        for (int i = 0; i < n; i++) {
-            b.add(new int[] {i}, new double[] {1});
-        }
-        return b.build();
-    }
-
-    /** The same rows on a state of more nodes. */
-    static LinearMapping rebase(LinearMapping m, int nodeCount) {
-        LinearMapping.Builder b = new LinearMapping.Builder(nodeCount);
-        for (int i = 0; i < m.pointCount(); i++) {
-            int e = m.entries(i);
-            int[] nodes = new int[e];
-            double[] w = new double[e];
-            for (int k = 0; k < e; k++) {
-                nodes[k] = m.node(i, k);
-                w[k] = m.weight(i, k);
-            }
-            b.add(nodes, w);
-        }
-        return b.build();
-    }
 }
