@@ -113,6 +113,20 @@ class GuiOrgansTest {
         }
     }
 
+    /** --lungs without a thorax or on the cube, and --no-liver alone, are usage errors naming the option. */
+    @Test
+    void organOptionsOutOfPlaceAreRefused() {
+        for (String[] args : new String[][] {{"gui", "--lungs"}, {"gui", "--scene", "cube", "--lungs"},
+            {"gui", "--no-liver"}}) {
+            java.io.StringWriter err = new java.io.StringWriter();
+            assertEquals(2, GuiCommandTest.run(err, args), String.join(" ", args) + ": " + err);
+            assertTrue(err.toString().contains(args[args.length - 1]), err.toString());
+        }
+        java.io.StringWriter err = new java.io.StringWriter();
+        GuiCommandTest.run(err, "gui", "--lungs");
+        assertTrue(err.toString().contains("--thorax"), "names what --lungs needs: " + err);
+    }
+
     /** Lower then upper corner of the first n points, mm, rounded. */
     private static double[] bounds(double[] x, int n) {
         double[] b = {1e9, 1e9, 1e9, -1e9, -1e9, -1e9};
