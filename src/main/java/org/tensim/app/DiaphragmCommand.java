@@ -75,6 +75,18 @@ public final class DiaphragmCommand implements Callable<Integer> {
             description = "Times of displacements.csv, s (default: end-inspiration and end of the last cycle).")
     double[] csvTimes;
 
+    @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs and liver into the run, the lungs"
+            + " sliding on the pleura carried by the diaphragm and the ribs, the liver pushed by the diaphragm"
+            + " (docs/lungs.md); writes lung-points.csv.")
+    boolean lungs;
+
+    @Option(names = "--no-liver", description = "With --lungs: leave the liver volume out (the rigid support stays).")
+    boolean noLiver;
+
+    @Option(names = "--lung-probe", paramLabel = "X,Y,Z", split = ";", hideParamSyntax = true,
+            description = "With --lungs: a point to follow in a lung, mm in the thorax's frame (repeatable).")
+    String[] lungProbes;
+
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
 
@@ -115,6 +127,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
             throw usage("--coarse-edge " + coarseEdgeMm + ": expected a positive edge length in mm with --mesh, and"
                     + " without --pick (a pick is a resolution of the generated double dome)");
         }
+        if (lungs && (sceneSpec.cage().thorax() == null || picked != null || coarseEdgeMm != null)) {
+            throw usage("--lungs needs --thorax DIR (the organs' meshes) and runs the built mesh itself: leave out"
+                    + " --pick, --realtime and --coarse-edge");
+        }
+        if ((noLiver || lungProbes != null) && !lungs) {
+            throw usage("--no-liver and --lung-probe go with --lungs");
+        }
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
         int threadCount = threads.threads(spec);
@@ -140,6 +159,30 @@ public final class DiaphragmCommand implements Callable<Integer> {
         final RealTimeSetting named = setting;
         return RunFolder.run(folder, "diaphragm", DiaphragmReport.OUTPUTS, out.overwrite(),
                 run -> simulate(run, sceneSpec, o, integratorUsed, named, threadCount, mappedAt));
+    }
+
+    /** The organs' options from --no-liver and --lung-probe (mm, checked as numbers). */
+    private org.tensim.scene.lungs.ThoraxOrgans.Options organOptions() {
+        var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
+        if (noLiver) {
+            o = o.withoutLiver();
+        }
+        String[] probes = lungProbes == null ? new String[0] : lungProbes;
+        double[] m = new double[3 * probes.length];
+        for (int i = 0; i < probes.length; i++) {
+            String[] c = probes[i].split(",");
+            if (c.length != 3) {
+                throw usage("--lung-probe " + probes[i] + ": expected X,Y,Z in mm");
+            }
+            for (int a = 0; a < 3; a++) {
+                try {
+                    m[3 * i + a] = 1e-3 * Double.parseDouble(c[a].trim());
+                } catch (NumberFormatException e) {
+                    throw usage("--lung-probe " + probes[i] + ": '" + c[a] + "' is not a number; expected X,Y,Z in mm");
+                }
+            }
+        }
+        return o.withProbes(m);
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {
@@ -173,6 +216,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + decimated.drawnNodes() + " nodes of " + built.source());
         } else {
             built = DiaphragmSetup.build(sceneSpec);
+        }
+        if (lungs) {
+            org.tensim.experiment.lungs.ThoraxOrganRun.attach(built.scene(), sceneSpec.cage().thorax(), organOptions(),
+                    System.out);
         }
         Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked, decimated);
         if (decimated != null) {

@@ -20,6 +20,7 @@ import org.jogamp.java3d.PointAttributes;
 import org.jogamp.java3d.PolygonAttributes;
 import org.jogamp.java3d.RenderingAttributes;
 import org.jogamp.java3d.Shape3D;
+import org.jogamp.java3d.TransparencyAttributes;
 import org.jogamp.vecmath.Color3f;
 import org.tensim.solver.SystemState;
 
@@ -32,7 +33,14 @@ import org.tensim.solver.SystemState;
  */
 final class BodyShapes {
     /** The layers a user can show or hide. */
-    enum Layer { SURFACE, SPRINGS, LINKS, NODES, VECTORS, STRUCTURE }
+    enum Layer { SURFACE, SPRINGS, LINKS, NODES, VECTORS, STRUCTURE, ORGANS }
+
+    /**
+     * Opacity of an organ's surface (the lungs, the liver): 0.35, through which the diaphragm and the other organs
+     * show. Java3D draws translucent shapes after the opaque ones with the depth buffer frozen (the view's default),
+     * so the organs hide nothing they cover.
+     */
+    static final float ORGAN_OPACITY = 0.35f;
 
     private static final int REF = GeometryArray.COORDINATES | GeometryArray.BY_REFERENCE;
     private static final int REF_INDEXED = REF | GeometryArray.USE_COORD_INDEX_ONLY;
@@ -83,6 +91,15 @@ final class BodyShapes {
      *                    null when it has none
      */
     BodyShapes(Body body, float[] initial, double vectorScale, float[][] markColours) {
+        this(body, initial, vectorScale, markColours, false);
+    }
+
+    /**
+     * As {@link #BodyShapes(Body, float[], double, float[][])}; an {@code organ} body is only its surface, drawn
+     * translucent ({@link #ORGAN_OPACITY}) in the {@link Layer#ORGANS} layer: its vertices are carried points, not
+     * nodes with springs, and no marks or vectors are drawn on it.
+     */
+    BodyShapes(Body body, float[] initial, double vectorScale, float[][] markColours, boolean organ) {
         this.body = body;
         this.markColours = markColours;
         this.vectorScale = vectorScale;
@@ -92,8 +109,13 @@ final class BodyShapes {
             rest[k] = (float) s.x0[k];
         }
         int n = body.nodeCount();
+        if (organ) {
+            addSurface(n, Layer.ORGANS);
+            update(initial);
+            return;
+        }
         if (body.triangles().length > 0) {
-            addSurface(n);
+            addSurface(n, Layer.SURFACE);
         }
         int visible = body.visibleNodes();
         int[] springs = pairs(s.springA, s.springB, visible);
@@ -178,7 +200,7 @@ final class BodyShapes {
         g.setCapability(GeometryArray.ALLOW_REF_DATA_READ);
     }
 
-    private void addSurface(int n) {
+    private void addSurface(int n, Layer layer) {
         int[] tri = body.triangles();
         boolean coloured = body.vertexColours() != null;
         int format = REF_INDEXED | GeometryArray.NORMALS | (coloured ? GeometryArray.COLOR_3 : 0);
@@ -209,9 +231,13 @@ final class BodyShapes {
         pa.setPolygonOffsetFactor(1f); // lines drawn on the surface stay visible
         pa.setPolygonOffset(1f);
         app.setPolygonAttributes(pa);
+        if (layer == Layer.ORGANS) {
+            app.setTransparencyAttributes(new TransparencyAttributes(TransparencyAttributes.BLENDED,
+                    1 - ORGAN_OPACITY));
+        }
         RenderingAttributes ra = visibility();
         app.setRenderingAttributes(ra);
-        parts.add(new Part(Layer.SURFACE, new Shape3D(g, app), g, ra, p -> {
+        parts.add(new Part(layer, new Shape3D(g, app), g, ra, p -> {
             System.arraycopy(p, 0, coords, 0, coords.length);
             Normals.compute(p, tri, normals);
             if (live && marks != null) {

@@ -114,6 +114,14 @@ public final class SceneView {
      * positions, and frames them in the home view. Call on the Swing thread.
      */
     public void show(FrameBuffer frames, double displacementScale, Vec3 up, Vec3 viewFrom) {
+        show(frames, displacementScale, up, viewFrom, List.of());
+    }
+
+    /**
+     * As {@link #show(FrameBuffer, double, Vec3, Vec3)}, the bodies of index {@code organs} drawn as translucent
+     * surfaces in the organs' layer ({@link #showOrgans}).
+     */
+    public void show(FrameBuffer frames, double displacementScale, Vec3 up, Vec3 viewFrom, List<Integer> organs) {
         if (content != null) {
             content.detach();
         }
@@ -146,6 +154,7 @@ public final class SceneView {
         // Frame what matters: the surfaces when there are any (not the ribs around them), else every node drawn.
         boolean surfaces = bodies.stream().anyMatch(b -> b.triangles().length > 0);
         for (Body b : bodies) {
+            boolean organ = organs.contains(bodies.indexOf(b));
             double[] x = b.simulation().state().x;
             float[] initial = new float[x.length];
             double[] off = {b.offset().x(), b.offset().y(), b.offset().z()};
@@ -162,7 +171,8 @@ public final class SceneView {
                 }
             }
             boolean marked = frames.live() != null && frames.live().body() == bodies.indexOf(b);
-            BodyShapes s = new BodyShapes(b, initial, displacementScale, marked ? frames.live().markColours() : null);
+            BodyShapes s = new BodyShapes(b, initial, displacementScale, marked ? frames.live().markColours() : null,
+                    organ);
             Transform3D t = new Transform3D();
             t.setTranslation(new Vector3d(off));
             TransformGroup tg = new TransformGroup(t);
@@ -244,6 +254,16 @@ public final class SceneView {
     /** Ribs, sternum and cartilage (the bodies' structure lines). */
     public void showStructure(boolean on) {
         setVisible(BodyShapes.Layer.STRUCTURE, on);
+    }
+
+    /** The organs' translucent surfaces (the lungs and the liver about the diaphragm). */
+    public void showOrgans(boolean on) {
+        setVisible(BodyShapes.Layer.ORGANS, on);
+    }
+
+    /** Whether the organs' layer is shown. */
+    public boolean organsShown() {
+        return visible.get(BodyShapes.Layer.ORGANS);
     }
 
     /** Displacement vectors, scaled by the scene's displacement scale. */

@@ -156,6 +156,10 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         layers.add(layerBox("Nodes", "nodes", true));
         layers.add(layerBox("Ribs, sternum", "structure", true));
         layers.add(layerBox("Displacements", "vectors", false));
+        // Shown by the window for a scene with organs (the lungs and the liver about the diaphragm).
+        layers.add(layerBox("Lungs, liver", "organs", true));
+        layerBoxes.get("organs").setToolTipText("The organs' surfaces, translucent: hidden, they still run.");
+        layerBoxes.get("organs").setVisible(false);
         view.add(left(layers));
         JComboBox<String> axis = new JComboBox<>(new String[] {"x", "y", "z", "magnitude"});
         axis.setName("probeAxis");
@@ -223,6 +227,11 @@ final class ControlPanel extends JPanel implements javax.swing.Scrollable {
         JCheckBox box = layerBoxes.get(layer);
         box.setSelected(on);
         actions.layer(layer, on);
+    }
+
+    /** Shows or hides the organs' box (a scene with organs has it). */
+    void showOrgansBox(boolean on) {
+        layerBoxes.get("organs").setVisible(on);
     }
 
     /** Ticks or unticks "Real time" (pacing to wall time) and applies it. */

@@ -46,6 +46,14 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     org.tensim.tuning.PickOption pick = new org.tensim.tuning.PickOption();
 
+    @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs and liver into the diaphragm's"
+            + " state, as tensim diaphragm --lungs does (docs/lungs.md), and draw them translucent (View: \"Lungs,"
+            + " liver\" hides them). The full model runs: no mapped mechanics.")
+    boolean lungs;
+
+    @Option(names = "--no-liver", description = "With --lungs: leave the liver volume out (the rigid support stays).")
+    boolean noLiver;
+
     @Option(names = "--preset", paramLabel = "FILE",
             description = "Load this JSON preset at start (after the last-used parameters).")
     Path preset;
@@ -129,7 +137,8 @@ public final class GuiCommand implements Callable<Integer> {
         sceneFile.refuseSetsWithoutFile();
         SceneFactory factory = sceneFile.given() ? sceneFile.factory(spec) : TunableScenes.factory(scene, options);
         StringBuilder unmapped = new StringBuilder();
-        org.tensim.experiment.diaphragm.ResolutionPick picked = sceneFile.given() ? null
+        boolean organs = addOrgans(factory);
+        org.tensim.experiment.diaphragm.ResolutionPick picked = sceneFile.given() || organs ? null
                 : TunableScenes.mapMechanics(factory, pick, options, unmapped::append);
         requireDisplay();
         boolean script = screenshot != null || runFor != null;
@@ -141,8 +150,8 @@ public final class GuiCommand implements Callable<Integer> {
         boolean keep = !sceneFile.given();
         GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
                 !paused && !script, threadCount,
-                keep && TunableScenes.opensInRealTime(scene) && !options.paperModel(), options.muscleLoad != null,
-                options.thorax != null);
+                keep && !organs && TunableScenes.opensInRealTime(scene) && !options.paperModel(),
+                options.muscleLoad != null, options.thorax != null && !organs);
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
             String note = "mechanics at " + picked.describe();
@@ -170,6 +179,32 @@ public final class GuiCommand implements Callable<Integer> {
         }
         w.awaitClosed();
         return 0;
+    }
+
+    /**
+     * With {@code --lungs}, reads the thorax's organs and has the factory build them into every scene; returns
+     * whether it did.
+     *
+     * @throws picocli.CommandLine.ParameterException for --lungs without --thorax, on another scene or with --pick,
+     *                                                and for --no-liver without --lungs
+     */
+    private boolean addOrgans(SceneFactory factory) throws java.io.IOException {
+        if (noLiver && !lungs) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--no-liver goes with --lungs");
+        }
+        if (!lungs) {
+            return false;
+        }
+        if (!(factory instanceof org.tensim.scene.tunable.DiaphragmViewFactory f) || options.thorax == null
+                || pick.file() != null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--lungs needs the diaphragm with"
+                    + " --thorax DIR (the organs' meshes) and runs the full model: leave out --pick, --scene cube and"
+                    + " a scene file");
+        }
+        var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
+        f.setOrgans(new org.tensim.scene.tunable.DiaphragmOrgans(org.tensim.scene.lungs.OrganMeshes.load(
+                options.thorax, !noLiver), noLiver ? o.withoutLiver() : o));
+        return true;
     }
 
     /**

@@ -190,7 +190,8 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
                 return;
             }
             scene = s;
-            view.show(frames, s.displacementScale(), s.up(), s.viewFrom());
+            view.show(frames, s.displacementScale(), s.up(), s.viewFrom(), s.organBodies());
+            controls.showOrgansBox(!s.organBodies().isEmpty());
             if (!layersSet) { // the scene's choice at first; the user's afterwards
                 layersSet = true;
                 controls.setLayer("springs", s.wireframeAtStart());
@@ -276,6 +277,7 @@ final class GuiWindow implements ControlPanel.Actions, SimulationRunner.Events {
             case "nodes" -> view.showNodes(on);
             case "vectors" -> view.showVectors(on);
             case "structure" -> view.showStructure(on);
+            case "organs" -> view.showOrgans(on);
             default -> throw new IllegalArgumentException("unknown layer " + layer);
         }
     }

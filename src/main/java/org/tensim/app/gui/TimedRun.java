@@ -115,6 +115,13 @@ final class TimedRun {
             links += st.linkCount();
         }
         m.put("nodes", nodes);
+        // The organs' share of the simulated nodes (the lungs and the liver, with their anchors): their cost.
+        m.put("organ_nodes", w.scene().organNodes());
+        int drawn = 0;
+        for (int b : w.scene().organBodies()) {
+            drawn += w.scene().bodies().get(b).nodeCount();
+        }
+        m.put("organ_drawn_vertices", drawn);
         org.tensim.scene.tunable.ViewScene.Resolution res = w.scene().resolution();
         if (res != null) {
             m.put("drawn_nodes", res.drawnNodes());

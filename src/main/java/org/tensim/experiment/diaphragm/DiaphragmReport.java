@@ -136,6 +136,9 @@ public final class DiaphragmReport {
                     + metrics.inspirationEnd() + " s");
         }
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
+        if (scene.recorder() != null) {
+            scene.recorder().finish(summary, out.dir());
+        }
         writeDisplacements(out.file("displacements.csv"), snapshots, scene, sim.state().contacts);
         figures(out, scene, snapshots.kept, snapshots.rest, o, stepping.divergedAtS());
         BreathingChart.write(out.file("breathing.png"), out.dir().resolve("probe.csv"), stepping.divergedAtS());
@@ -178,6 +181,10 @@ public final class DiaphragmReport {
             double probeEvery = 0.005;
             double nextProbe = 0;
             metrics.begin(sim);
+            org.tensim.scene.diaphragm.RunRecorder organs = scene.recorder();
+            if (organs != null) {
+                organs.begin(sim, metrics.measuredCycleStart(), metrics.inspirationEnd(), scene.cycle().periodS());
+            }
             while (true) {
                 double t = sim.time();
                 snapshots.offer(t, dt, sim.state().x, simulated);
@@ -202,6 +209,9 @@ public final class DiaphragmReport {
                 stepNanos += System.nanoTime() - t0;
                 cpuNanos += cpuTimed ? cpu.getCurrentThreadCpuTime() - c0 : 0;
                 metrics.afterStep(sim);
+                if (organs != null) {
+                    organs.afterStep(sim);
+                }
             }
         } catch (SimulationDivergedException e) {
             diverged = e.getMessage();

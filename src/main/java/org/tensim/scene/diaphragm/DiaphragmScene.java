@@ -70,6 +70,9 @@ public final class DiaphragmScene {
     private final Bones bones;
     private final DiaphragmParts parts;
     private final org.tensim.io.mesh.VertexLabel[] vertexLabels;
+    /** Terms of bodies built into this scene's topology after it (the organs' couplings). */
+    private final List<org.tensim.solver.ForceTerm> terms = new java.util.ArrayList<>();
+    private RunRecorder recorder;
 
     private DiaphragmScene(DiaphragmParts b, Map<String, double[]> boxes, DiaphragmSpec spec, Bones bones,
             org.tensim.io.mesh.VertexLabel[] vertexLabels) {
@@ -259,10 +262,32 @@ public final class DiaphragmScene {
      */
     public Simulation newSimulation() {
         Simulation sim = Simulation.of(topology);
+        for (org.tensim.solver.ForceTerm term : terms) {
+            sim.forces().addTerm(term);
+        }
         sim.setDisplacementLimit(MAX_DISPLACEMENT_M);
         // Disjoint links: one sweep is exact; a tolerance still guards the general case.
         sim.apply(sim.settings().withProjection(1e-9, 50));
         return sim;
+    }
+
+    /**
+     * Adds a force term on this scene's state (a coupling of bodies built into {@link #topology()} after the
+     * scene's own nodes, the organs): every {@link #newSimulation()} from now on has it. A term is stateful (its
+     * pairing), so one scene runs one simulation at a time with it.
+     */
+    public void addTerm(org.tensim.solver.ForceTerm term) {
+        terms.add(term);
+    }
+
+    /** What records the bodies added to this scene during a run (their own outputs), or null. */
+    public RunRecorder recorder() {
+        return recorder;
+    }
+
+    /** Sets what records the added bodies during a run (null: nothing). */
+    public void setRecorder(RunRecorder r) {
+        recorder = r;
     }
 
     public Topology topology() {

@@ -71,6 +71,27 @@ public final class LungVolumes {
         return out;
     }
 
+    /**
+     * The right lung's then the left's merged surface (m), from the thorax's lung parts, as {@link #build} merges
+     * them.
+     *
+     * @throws IllegalArgumentException when the thorax has no lung part on a side
+     */
+    public static List<TriangleMesh> surfaces(Thorax thorax) {
+        List<TriangleMesh> out = new ArrayList<>();
+        for (Side side : new Side[] {Side.RIGHT, Side.LEFT}) {
+            String key = "lung-" + side.name().toLowerCase(java.util.Locale.ROOT) + "-";
+            List<ThoraxPart> lobes = thorax.group(Group.LUNG).stream().filter(q -> q.side() == side
+                    || q.file().getFileName().toString().toLowerCase(java.util.Locale.ROOT).startsWith(key)).toList();
+            if (lobes.isEmpty()) {
+                throw new IllegalArgumentException(thorax.partsJson() + " lists no " + side.name().toLowerCase(
+                        java.util.Locale.ROOT) + " lung part (group organ, file " + key + "*.obj); expected its lobes");
+            }
+            out.add(merge(lobes));
+        }
+        return out;
+    }
+
     /** The union of the parts' triangles, each part's vertices renumbered after the ones before. */
     static TriangleMesh merge(List<ThoraxPart> parts) {
         int nv = 0;

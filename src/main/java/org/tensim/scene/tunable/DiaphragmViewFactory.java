@@ -71,6 +71,22 @@ public final class DiaphragmViewFactory implements SceneFactory {
         mechanics = m;
     }
 
+    /** The lungs and the liver built into every scene from now on ({@link #setOrgans}), or null. */
+    private volatile DiaphragmOrgans organs;
+
+    /**
+     * From now on, every scene has these organs in its state, drawn translucent ({@link DiaphragmOrgansViewScene});
+     * null for none. The organs run with the full model: the mapped mechanics are not used with them.
+     */
+    public void setOrgans(DiaphragmOrgans o) {
+        organs = o;
+    }
+
+    /** The organs set, or null. */
+    public DiaphragmOrgans organs() {
+        return organs;
+    }
+
     /** The mapped mechanics set, or null. */
     public Mechanics mechanics() {
         return mechanics;
@@ -170,6 +186,12 @@ public final class DiaphragmViewFactory implements SceneFactory {
             DiaphragmSpec fineSpec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
             DiaphragmControls controls = fineSpec.newControls();
             DiaphragmScene s = DiaphragmSetup.build(in, fineSpec, controls).scene();
+            DiaphragmOrgans o = organs;
+            if (o != null) {
+                DiaphragmOrgans.Built built = o.install(s);
+                return new DiaphragmOrgansViewScene(new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad(), o,
+                        built), built);
+            }
             Mechanics m = mechanics;
             if (m == null || fullModel || painting != null) {
                 return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());

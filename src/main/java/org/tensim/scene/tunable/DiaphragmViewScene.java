@@ -146,7 +146,21 @@ public final class DiaphragmViewScene implements ViewScene {
     /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
     private volatile DiaphragmScene prepared;
 
+    /** Organs built into the scene's state, rebuilt into each rebuild of it; null for none. */
+    private final DiaphragmOrgans organs;
+
     DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load) {
+        this(scene, tensegrity, load, null, null);
+    }
+
+    /**
+     * With organs ({@code organs}, installed in {@code scene} as {@code built}): the mass-spring tendon's copy of the
+     * topology runs their couplings too, and a tissue constant's rebuild builds them again (the same nodes and
+     * springs), so that the running state takes its constants.
+     */
+    DiaphragmViewScene(DiaphragmScene scene, boolean tensegrity, BoundaryConditions.MuscleLoad load,
+            DiaphragmOrgans organs, DiaphragmOrgans.Built built) {
+        this.organs = organs;
         this.load = load;
         this.parameters = parameters(load, scene.spec().tendonRule(), scene.spec().mesh().labels() != null);
         this.scene = scene;
@@ -156,6 +170,9 @@ public final class DiaphragmViewScene implements ViewScene {
             sim = scene.newSimulation();
         } else {
             sim = Simulation.of(RigidLinksAsSprings.of(scene.topology()));
+            if (built != null) {
+                built.terms().forEach(sim.forces()::addTerm);
+            }
         }
         SystemState s = sim.state();
         bodies = List.of(new Body("diaphragm apex", sim, scene.allTriangles(), colours(scene, s.nodeCount), Vec3.ZERO,
@@ -359,6 +376,9 @@ public final class DiaphragmViewScene implements ViewScene {
             return () -> { };
         }
         DiaphragmScene rebuilt = from.rebuiltWith(p);
+        if (organs != null) {
+            organs.build(rebuilt);
+        }
         Topology constants = tensegrity ? rebuilt.topology() : RigidLinksAsSprings.of(rebuilt.topology());
         prepared = rebuilt;
         return () -> {

@@ -102,6 +102,19 @@ public interface ViewScene {
     record Resolution(int drawnNodes, int mechanicalNodes, double error, String describe) {
     }
 
+    /**
+     * Indices of the bodies that are organs around the scene's own (the lungs and the liver about the diaphragm):
+     * drawn translucent, in a layer of their own that is shown or hidden at once. Default: none.
+     */
+    default List<Integer> organBodies() {
+        return List.of();
+    }
+
+    /** Nodes the organs add to the simulated state (their cost), 0 without organs. */
+    default int organNodes() {
+        return 0;
+    }
+
     /** The scene's {@link Resolution}, or null when the question does not arise (the cube, a scene file). */
     default Resolution resolution() {
         return null;

@@ -64,6 +64,17 @@ public final class VolumeBody {
      *                                  ambiguous (open), or when the lattice would be too large
      */
     public static VolumeBody build(Topology t, TriangleMesh surface, VolumeParameters p, String name) {
+        return build(t, surface, p, name, 0);
+    }
+
+    /**
+     * As {@link #build(Topology, TriangleMesh, VolumeParameters, String)} with every node's mass at least
+     * {@code minNodeMassKg} (kg, &gt;= 0): a clipped corner node carries as little as {@code rho h^3 / (8 s^3)}, and
+     * a stiff coupling on it (a body sliding on another) would alone set the stable step; the floor adds mass
+     * there ({@link VolumeReport#massKg} stays rho times the lattice volume; the nodes' sum is the topology's).
+     */
+    public static VolumeBody build(Topology t, TriangleMesh surface, VolumeParameters p, String name,
+            double minNodeMassKg) {
         double h = p.cellSizeM();
         LatticeClip.Result clip = LatticeClip.clip(surface, h, p.fillSamples(), name);
         int boundary = surface.boundaryEdgeCount();
@@ -115,7 +126,8 @@ public final class VolumeBody {
                 int i = q % px;
                 int j = (q / px) % py;
                 int k = q / (px * py);
-                nodeOf[q] = t.addNode(o[0] + i * h, o[1] + j * h, o[2] + k * h, pointMass[q]).id();
+                nodeOf[q] = t.addNode(o[0] + i * h, o[1] + j * h, o[2] + k * h, Math.max(pointMass[q],
+                        minNodeMassKg)).id();
             } else {
                 nodeOf[q] = -1;
             }
