@@ -16,7 +16,8 @@ import org.tensim.solver.SurfaceSliding;
 /**
  * Records the organs of a thorax run: the lung points every {@link #EVERY_S} over the measured cycle
  * ({@code lung-points.csv}: {@code t_s,point,lung,x_mm,y_mm,z_mm}, lung "right" or "left"), the couplings' largest
- * departure from their rest relation after the first cycle (penetration and separation, mm), the liver's
+ * departure from their rest relation over the run (penetration and separation, mm, read every
+ * {@link #READ_S}), the liver's
  * superior-inferior motion (its nodes' mean z, peak to peak over the measured cycle) and, in {@code summary.json},
  * {@code lung_points} (end-exhale and end-inhale instants, the period, the superior axis) and {@code organs}.
  */
@@ -57,7 +58,7 @@ public final class OrganRecorder implements RunRecorder {
         inspEnd = inspirationEndS;
         period = periodS;
         nextFrame = start;
-        nextRead = Math.min(period, start);
+        nextRead = 0;
         lastT = sim.time();
         afterStep(sim);
     }

@@ -18,9 +18,10 @@ import org.tensim.solver.SurfaceSliding;
  * diaphragm, its cage and anchors, and every figure computed on them, are unchanged), with the couplings that move
  * them in the same force pass as the diaphragm:
  * <ul>
- * <li>each lung a lattice volume ({@link LungVolumes}) whose followers (the lattice nodes within half a cell of
- * its surface) slide, bilaterally and without friction, on the parietal pleura ({@link PleuraCarriers}: the
- * lung's own rest surface carried by the diaphragm's upper surface, the ribs' frames and fixed frames);</li>
+ * <li>each lung a lattice volume ({@link LungVolumes}) whose followers (the lattice nodes within
+ * {@link Options#followerBandM} of its surface) slide, bilaterally and without friction, on the parietal pleura
+ * ({@link PleuraCarriers}: the lung's own rest surface carried by the diaphragm's upper surface, the ribs' frames
+ * and fixed frames);</li>
  * <li>the liver (optional) a lattice volume whose followers near the diaphragm (lattice nodes within the band
  * of its surface and {@link Options#liverReachM} of the diaphragm's lower surface) touch that lower surface,
  * one-sided, carried by the diaphragm's own nodes; held behind by zero-length springs to fixed anchors at its
@@ -65,14 +66,15 @@ public final class ThoraxOrgans {
         }
 
         /**
-         * The defaults: the parenchyma, the liver of {@link #LIVER}, the pleura's default rule; pleura 1e6 Pa/m
+         * The defaults: the parenchyma, no liver volume ({@link #withLiver}: its contact makes the thorax's RK2
+         * run diverge within 0.001 s, docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, followers within 4 mm of
          * their surface, 300 points.
          */
         public static Options defaults() {
-            return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), LIVER, PleuraCarriers.Rules.defaults(),
+            return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), null, PleuraCarriers.Rules.defaults(),
                     1e6, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
         }
 
@@ -89,10 +91,16 @@ public final class ThoraxOrgans {
                     liverHoldPaPerM, liverReachM, followerBandM, samples, probesM);
         }
 
+        /** The same with the liver volume of {@link #LIVER}. */
+        public Options withLiver() {
+            return new Options(lung, LIVER, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+                    followerBandM, samples, probesM);
+        }
+
         /** The same without the liver volume. */
         public Options withoutLiver() {
-            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples,
-                    probesM);
+            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+                    followerBandM, samples, probesM);
         }
 
         /** The same with other cell sizes, m (the lungs', the liver's). */
@@ -103,8 +111,8 @@ public final class ThoraxOrgans {
 
         /** The same with user probes, 3 per point, m. */
         public Options withProbes(double[] m) {
-            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples,
-                    m.clone());
+            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+                    followerBandM, samples, m.clone());
         }
     }
 
@@ -192,8 +200,9 @@ public final class ThoraxOrgans {
             VolumeBody body = lungs.get(i).body();
             double h = o.lung().cellSizeM();
             int[] f = OrganGeometry.surfaceNodes(t, body, o.followerBandM(), null, 0);
-            couplings.add(new Coupling(side[i] + " lung on the pleura", f, OrganGeometry.rebase(pleurae.get(i).mapping(), n),
-                    lungs.get(i).surface().triangles(), OrganGeometry.filled(f.length, o.pleuraPaPerM() * h * h), true));
+            couplings.add(new Coupling(side[i] + " lung on the pleura", f,
+                    OrganGeometry.rebase(pleurae.get(i).mapping(), n), lungs.get(i).surface().triangles(),
+                    OrganGeometry.filled(f.length, o.pleuraPaPerM() * h * h), true));
         }
         if (liver != null) {
             double h = o.liver().cellSizeM();
@@ -250,7 +259,8 @@ public final class ThoraxOrgans {
             c.surface().apply(x0, p);
             double[] gaps = new double[c.followers().length];
             for (int e = 0; e < gaps.length; e++) {
-                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), x0, 3 * c.followers()[e]);
+                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), x0,
+                        3 * c.followers()[e]);
             }
             SurfaceSliding term = new SurfaceSliding(c.followers(), c.surface(), c.triangles(), c.stiffness(), mode,
                     gaps, x0);

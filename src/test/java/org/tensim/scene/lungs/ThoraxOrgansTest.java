@@ -51,7 +51,7 @@ class ThoraxOrgansTest {
         TriangleMesh liver = thorax.group(Group.LIVER).get(0).mesh();
         long t0 = System.nanoTime();
         int before = scene.topology().nodeCount();
-        ThoraxOrgans organs = ThoraxOrgans.build(scene, lungs, liver, ThoraxOrgans.Options.defaults());
+        ThoraxOrgans organs = ThoraxOrgans.build(scene, lungs, liver, ThoraxOrgans.Options.defaults().withLiver());
         List<SurfaceSliding> terms = organs.install(scene);
         double build = (System.nanoTime() - t0) * 1e-9;
         for (int i = 0; i < 2; i++) {
