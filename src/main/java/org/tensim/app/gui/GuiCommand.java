@@ -203,7 +203,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
         f.setOrgans(new org.tensim.scene.tunable.DiaphragmOrgans(org.tensim.scene.lungs.OrganMeshes.load(
-                options.thorax, !noLiver), noLiver ? o.withoutLiver() : o));
+                options.thorax, !noLiver), noLiver ? o.withoutLiver() : o.withLiver()));
         return true;
     }
 

@@ -50,7 +50,7 @@ class GuiOrgansTest {
                 "--thorax", thorax.toString()));
         DiaphragmViewFactory f = DiaphragmViewScene.factory(options.spec(null, 43), null);
         f.setOrgans(new DiaphragmOrgans(OrganMeshes.load(thorax, true),
-                ThoraxOrgans.Options.defaults().withCells(0.03, 0.04)));
+                ThoraxOrgans.Options.defaults().withCells(0.03, 0.04).withLiver()));
         GuiCommand.setScripted(true);
         GuiWindow w = GuiCommand.open(f, null, null, null, false, 2, false, false, false);
         try {
