@@ -1,12 +1,11 @@
 package org.tensim.app;
 
+import org.tensim.testsupport.Commands;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,7 +19,6 @@ import org.tensim.analysis.lungs.ModelMotion;
 import org.tensim.analysis.lungs.SyntheticMotion;
 import org.tensim.io.Json;
 import org.tensim.testsupport.SharedData;
-import picocli.CommandLine;
 
 /** {@code validate-4dct} on a folder written by the lung points' writer: every output and summary key. */
 class Validate4dctCommandTest {
@@ -28,13 +26,7 @@ class Validate4dctCommandTest {
     Path tmp;
 
     private static String[] run(String... args) {
-        CommandLine cl = Main.commandLine();
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        cl.setOut(new PrintWriter(out));
-        cl.setErr(new PrintWriter(err));
-        int code = cl.execute(args);
-        return new String[] {Integer.toString(code), out.toString(), err.toString()};
+        return Commands.run(args);
     }
 
     private static ModelMotion motion() {
