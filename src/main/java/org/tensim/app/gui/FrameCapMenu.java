@@ -7,7 +7,7 @@ import javax.swing.JMenu;
 import javax.swing.JRadioButtonMenuItem;
 import org.tensim.view.SceneView;
 
-/** The View menu's frame cap: at most 15, 30 or 60 frames drawn per second, or no cap. */
+/** The View menu's frame cap: at most 15, 30, 40 (the default) or 60 frames drawn per second, or no cap. */
 final class FrameCapMenu extends JMenu {
     private static final long serialVersionUID = 1L;
 
@@ -20,7 +20,7 @@ final class FrameCapMenu extends JMenu {
         this.view = view;
         this.status = status;
         ButtonGroup caps = new ButtonGroup();
-        for (int fps : new int[] {15, 30, 60, 0}) {
+        for (int fps : new int[] {15, 30, SceneView.DEFAULT_FRAME_CAP_FPS, 60, 0}) {
             JRadioButtonMenuItem i = new JRadioButtonMenuItem(fps == 0 ? "No frame cap"
                     : "At most " + fps + " frames/s", fps == view.frameCap());
             i.setName("fps." + fps);

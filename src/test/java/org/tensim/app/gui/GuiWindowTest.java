@@ -98,13 +98,13 @@ class GuiWindowTest {
         }
     }
 
-    /** The frame cap is 30 by default, set by the window and by the View menu, and the view keeps drawing. */
+    /** The frame cap is the default one (40) at opening, set by the window and by the View menu, and the view keeps drawing. */
     @Test
     void theFrameCapIsSetByTheWindowAndTheMenu() throws Exception {
         GuiWindow w = GuiCommand.open(factory(), null, dir, null, true);
         try {
             waitFor("the first frames", () -> w.scene() != null && w.view().framesRendered() > 3);
-            assertEquals(org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS, w.view().frameCap(), "30 by default");
+            assertEquals(org.tensim.view.SceneView.DEFAULT_FRAME_CAP_FPS, w.view().frameCap(), "40 by default");
             onEdt(() -> w.setFrameCap(10));
             assertEquals(10, w.view().frameCap(), "the window sets it");
             long f0 = w.view().framesRendered();
