@@ -33,10 +33,12 @@ import org.tensim.model.LinearMapping;
  * a border edge of an open surface is off the surface and takes no force (otherwise the extended plane of the rim
  * triangle would push nodes that are nowhere near); a SLIDING follower stays held to that plane.
  *
- * <p>Stability: the term is not linearised by the implicit integrators; its stiffness counts against the followers'
- * and the surface nodes' masses, {@code dt < 2 sqrt(m / k)} for an explicit step ({@link ForceTerm}). Allocation-free
- * in {@link #addForces}; {@link #energy} and the read-outs use their own scratch under a lock, and may run on
- * another thread on a copy of the positions.
+ * <p>Stability: for an explicit step the stiffness counts against the followers' and the surface nodes' masses,
+ * {@code dt < 2 sqrt(m / k)}. {@code bdf2}'s Newton-Krylov products take the term's tangent ({@link #linearise},
+ * {@link #multiplyAdd}: the Gauss-Newton part along the normals, {@link SlidingTangent}) and its prefactored
+ * preconditioner the isotropic part at the rest pairing ({@link #addIsotropicStiffness}), so a stiff coupling is as
+ * stable under it as the body's own springs. Allocation-free in {@link #addForces} and the products; {@link #energy}
+ * and the read-outs use their own scratch under a lock, and may run on another thread on a copy of the positions.
  */
 public final class SurfaceSliding implements ForceTerm {
     /** How a follower is held: {@link #SLIDING} bilateral, {@link #CONTACT} one-sided. */
@@ -60,6 +62,10 @@ public final class SurfaceSliding implements ForceTerm {
     private final double[] readPoints; // energy and read-outs (under readLock)
     private final double[] readPlane = new double[7];
     private final Object readLock = new Object();
+    private final double[] linPoints; // linearisation: p = W x
+    private final double[] linPlane = new double[7];
+    private final SlidingTangent tangent; // the planes of the last linearisation
+    private final SlidingTangent restTangent; // every follower's plane at construction, for the preconditioner
 
     /**
      * A term with one gap for all followers.
@@ -133,6 +139,7 @@ public final class SurfaceSliding implements ForceTerm {
         this.points = new double[3 * surfacePoints.pointCount()];
         this.pointForces = new double[points.length];
         this.readPoints = new double[points.length];
+        this.linPoints = new double[points.length];
         mapping.apply(x, points);
         for (int t = 0; t < surface.triangleCount(); t++) {
             if (!surface.plane(points, t, x, 0, plane)) {
@@ -143,6 +150,12 @@ public final class SurfaceSliding implements ForceTerm {
         }
         this.pair = new int[followers.length];
         repair(x);
+        this.tangent = new SlidingTangent(this.follower, this.stiffness, mapping, surface);
+        this.restTangent = new SlidingTangent(this.follower, this.stiffness, mapping, surface);
+        for (int e = 0; e < follower.length; e++) {
+            int tri = surface.walk(points, pair[e], x, 3 * follower[e], plane);
+            restTangent.set(e, tri, plane);
+        }
     }
 
     /**
@@ -213,6 +226,35 @@ public final class SurfaceSliding implements ForceTerm {
             }
         }
         mapping.addTranspose(pointForces, f);
+    }
+
+    /**
+     * {@inheritDoc} Each follower's plane walked from its current pairing (the pairing itself is left to the force
+     * passes); a CONTACT follower off the surface or not touching takes no tangent.
+     */
+    @Override
+    public void linearise(double t, double[] x) {
+        mapping.apply(x, linPoints);
+        for (int e = 0; e < follower.length; e++) {
+            int tri = surface.walk(linPoints, pair[e], x, 3 * follower[e], linPlane);
+            if (tri >= 0 && mode == Mode.CONTACT
+                    && (gap[e] - linPlane[3] <= 0 || surface.beyondBorder(tri, linPlane))) {
+                tri = -1;
+            }
+            tangent.set(e, tri, linPlane);
+        }
+    }
+
+    /** {@inheritDoc} The Gauss-Newton tangent along the normals ({@link SlidingTangent}). */
+    @Override
+    public void multiplyAdd(double[] z, double[] y, int[] offset, double weight) {
+        tangent.multiplyAdd(z, y, offset, weight);
+    }
+
+    /** {@inheritDoc} At the pairing of construction, every follower counted as touching. */
+    @Override
+    public void addIsotropicStiffness(double[] perNode) {
+        restTangent.addIsotropicStiffness(perNode);
     }
 
     /** {@inheritDoc} The sum over followers of E above, J, for the pairing walked from the current one. */

@@ -100,4 +100,29 @@ final class SlidingCases {
         double len = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         return new double[] {n[0] / len, n[1] / len, n[2] / len, p[a], p[a + 1], p[a + 2]};
     }
+
+    /**
+     * Puts every follower over the inside of its paired triangle (barycentric coordinates at least 0.1 from its
+     * edges), 3 mm either side: there the walk keeps the pairing under any small displacement, so the energy is the
+     * one smooth function whose gradient the forces claim to be. (Across a ridge or a rim, where the projection is
+     * outside both triangles, the pairing may switch, and the energy jumps, as the class comment says.)
+     */
+    static void overPairedTriangles(Case c, SurfaceSliding s, double[] x, java.util.Random r) {
+        double[] p = new double[3 * c.mapping().pointCount()];
+        c.mapping().apply(x, p);
+        for (int e = 0; e < s.pairCount(); e++) {
+            int t = s.pairedTriangle(e);
+            double[] na = normalAndCorner(c, x, t);
+            double b1 = 0.1 + 0.4 * r.nextDouble();
+            double b2 = 0.1 + 0.4 * r.nextDouble();
+            double d = 0.003 * (2 * r.nextDouble() - 1);
+            int i = 3 * c.followers()[e];
+            for (int a = 0; a < 3; a++) {
+                double pa = p[3 * c.triangles()[3 * t] + a];
+                double pb = p[3 * c.triangles()[3 * t + 1] + a];
+                double pc = p[3 * c.triangles()[3 * t + 2] + a];
+                x[i + a] = (1 - b1 - b2) * pa + b1 * pb + b2 * pc + d * na[a];
+            }
+        }
+    }
 }

@@ -62,7 +62,7 @@ class SurfaceSlidingTest {
                 Case c = SlidingCases.random(100 + seed, 5, 8);
                 SurfaceSliding s = c.term(mode);
                 double[] x = c.x().clone();
-                overPairedTriangles(c, s, x, new java.util.Random(seed));
+                SlidingCases.overPairedTriangles(c, s, x, new java.util.Random(seed));
                 double[] f = forces(s, x);
                 double h = 1e-7; // m, against positions of 0.1 m: round-off ~1e-16 E / h, truncation ~h^2
                 double fmax = 0;
@@ -80,31 +80,6 @@ class SurfaceSlidingTest {
                 assertTrue(fmax > 1e-3, mode + " seed " + seed + ": forces " + fmax + " N");
                 assertTrue(worst < 1e-8 * fmax, mode + " seed " + seed + ": |f + dE/dx| = " + worst + " N against "
                         + fmax + " N");
-            }
-        }
-    }
-
-    /**
-     * Puts every follower over the inside of its paired triangle (barycentric coordinates at least 0.1 from its
-     * edges), 3 mm either side: there the walk keeps the pairing under any small displacement, so the energy is the
-     * one smooth function whose gradient the forces claim to be. (Across a ridge or a rim, where the projection is
-     * outside both triangles, the pairing may switch, and the energy jumps, as the class comment says.)
-     */
-    private static void overPairedTriangles(Case c, SurfaceSliding s, double[] x, java.util.Random r) {
-        double[] p = new double[3 * c.mapping().pointCount()];
-        c.mapping().apply(x, p);
-        for (int e = 0; e < s.pairCount(); e++) {
-            int t = s.pairedTriangle(e);
-            double[] na = SlidingCases.normalAndCorner(c, x, t);
-            double b1 = 0.1 + 0.4 * r.nextDouble();
-            double b2 = 0.1 + 0.4 * r.nextDouble();
-            double d = 0.003 * (2 * r.nextDouble() - 1);
-            int i = 3 * c.followers()[e];
-            for (int a = 0; a < 3; a++) {
-                double pa = p[3 * c.triangles()[3 * t] + a];
-                double pb = p[3 * c.triangles()[3 * t + 1] + a];
-                double pc = p[3 * c.triangles()[3 * t + 2] + a];
-                x[i + a] = (1 - b1 - b2) * pa + b1 * pb + b2 * pc + d * na[a];
             }
         }
     }
