@@ -98,6 +98,21 @@ class DiaphragmSceneConditionsTest {
     }
 
     @Test
+    void theProbesCsvMayNotTakeAFileTheDiaphragmWritesItself() throws Exception {
+        Path file = Files.writeString(dir.resolve("clash.yaml"), """
+                version: 1
+                bodies:
+                  d: {type: diaphragm, rings: 6, period: 100 ms}
+                probes:
+                  apex: {node: 0}
+                run: {dt: auto, duration: 0.01 s, csv: probe.csv}
+                """);
+        String[] r = Commands.run("run", file.toString(), "--out", dir.resolve("clash").toString());
+        assertEquals("2", r[0], r[2]);
+        assertTrue(r[2].contains("run.csv probe.csv is a file the diaphragm's run writes itself"), r[2]);
+    }
+
+    @Test
     void aFixedTendonDoesNotMoveWhileTheDomeBreathes() throws Exception {
         Map<String, Object> s = run("fixed", "{type: fixed, region: tendon}");
         for (String a : List.of("x", "y", "z")) {
