@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.tensim.experiment.SceneExpectations;
+import org.tensim.experiment.SceneProbeRecorder;
 import org.tensim.experiment.diaphragm.DiaphragmReport;
 import org.tensim.io.FileDigest;
 import org.tensim.io.Json;
@@ -14,6 +15,7 @@ import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneBody;
+import org.tensim.scene.file.SceneExpectation;
 import org.tensim.solver.Integrator;
 import org.tensim.solver.integrators.Integrators;
 import picocli.CommandLine.Model.CommandSpec;
@@ -24,9 +26,12 @@ import picocli.CommandLine.ParameterException;
  * {@code tensim diaphragm} runs it ({@link DiaphragmCommand#report}, the same outputs and summary figures), its
  * integrator, step and duration from the file's run block ({@code dt: auto} for the step the time-step policy
  * recommends, the command's default), with the scene file, its digest and the overrides added to the summary.
- * The diaphragm brings its own attachments, loads and outputs: the loader refuses other bodies, zones, conditions
- * and probes beside it ({@link org.tensim.scene.file.BodyType#standalone()}); its {@code expect:} checks read the
- * summary's breathing figures, and a failed one gives status expectation_failed (exit code 3), its outputs kept.
+ * The diaphragm brings its own attachments, loads and outputs: the loader refuses other bodies and zones beside it
+ * ({@link org.tensim.scene.file.BodyType#standalone()}); the file's conditions are already on its nodes, and its
+ * probes are recorded during the run into the run block's CSV ({@link SceneProbeRecorder}, as {@code tensim run}
+ * of any file), their columns' ranges in the summary. Without probes the summary is the command's to the bit. Its
+ * {@code expect:} checks read the summary's breathing figures and the probes' columns, and a failed one gives
+ * status expectation_failed (exit code 3), its outputs kept.
  */
 final class DiaphragmSceneRun {
     private DiaphragmSceneRun() {
@@ -55,8 +60,31 @@ final class DiaphragmSceneRun {
         Integrator integrator = DiaphragmSolverOptions.contactDefaults(Integrators.create(run.integrator()),
                 run.integrator(), d);
         DiaphragmReport.Options o = new DiaphragmReport.Options(run.durationS(), run.dtS(), 8, 100, 0.01, null);
-        return RunFolder.run(folder, "run", DiaphragmReport.OUTPUTS, overwrite, f -> {
-            Map<String, Object> fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null, null);
+        boolean probed = !scene.probes().isEmpty();
+        if (probed && DiaphragmReport.OUTPUTS.contains(run.csv())) {
+            throw new ParameterException(spec.commandLine(), "run.csv " + run.csv() + " is a file the diaphragm's run"
+                    + " writes itself: name the probes' CSV otherwise (default probes.csv)");
+        }
+        List<String> outputs = new java.util.ArrayList<>(DiaphragmReport.OUTPUTS);
+        if (probed) {
+            outputs.add(run.csv());
+        }
+        return RunFolder.run(folder, "run", outputs, overwrite, f -> {
+            org.tensim.scene.diaphragm.RunRecorder own = built.scene().recorder();
+            SceneProbeRecorder probes = probed ? new SceneProbeRecorder(scene, body.name(), run.every(),
+                    f.csv(run.csv(), SceneExpectation.columns(scene.probes()), 1000), own) : null;
+            Map<String, Object> fields;
+            if (probes == null) {
+                fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null, null);
+            } else {
+                // The probes are recorded beside the organs' recorder, for this run only.
+                built.scene().setRecorder(probes);
+                try {
+                    fields = DiaphragmCommand.report(f, built, o, integrator, null, 0, null, null);
+                } finally {
+                    built.scene().setRecorder(own);
+                }
+            }
             fields.put("scene", scene.file().toString());
             fields.put("scene_digest", FileDigest.of(List.of(scene.file())));
             fields.put("overrides", scene.overrides());
@@ -64,8 +92,9 @@ final class DiaphragmSceneRun {
                 DiaphragmCommand.finish(spec, f, fields);
                 return;
             }
-            // The file's checks read the summary's figures (no probe columns): evaluated as SceneRunner does.
-            List<Map<String, Object>> outcomes = SceneExpectations.evaluate(scene.expect(), null, fields);
+            // The file's checks read the summary's figures and the probes' columns, evaluated as SceneRunner does.
+            List<Map<String, Object>> outcomes = SceneExpectations.evaluate(scene.expect(),
+                    probes == null ? null : probes.columns(), fields);
             long failed = SceneExpectations.failed(outcomes);
             fields.put("expectations", outcomes);
             fields.put("expectations_failed", failed);

@@ -115,7 +115,8 @@ public final class SceneRunner {
         return folder.finish(status, s);
     }
 
-    private static Object finite(double v) {
+    /** A figure for the summary: the number, or "none" when it is not finite. */
+    static Object finite(double v) {
         return Double.isFinite(v) ? v : "none";
     }
 

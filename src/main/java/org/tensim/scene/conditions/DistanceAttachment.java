@@ -17,7 +17,9 @@ import org.tensim.model.Vec3;
  * <li>{@link #fix}: the node is held at its rest point (the spine);</li>
  * <li>{@link #tie}: springs of a given stiffness (N/m) from the node to given nodes (the ends of a cartilage or
  * sternum segment), handed to a sink, so that a builder which damps its springs once all are known collects
- * them.</li>
+ * them;</li>
+ * <li>{@link #anchored}: a zero-length spring from the node to an anchor node the target carries from the node's
+ * rest point (a scene file's {@code attachment} with {@code mode: tie}).</li>
  * </ul>
  * A scene file's {@code attachment} condition attaches a region to one rigid body this way, and the diaphragm's
  * paper-threshold attachment its nodes to the rib cage's segments. The count of attached nodes, hence the total
@@ -100,8 +102,36 @@ public final class DistanceAttachment {
     }
 
     /**
+     * A spring of stiffness k (N/m, &gt; 0), damping c (N s/m, &gt;= 0) and rest length zero from the node to its
+     * anchor: a new node of t at the node's rest point, driven by m (the point of the target that lies there at
+     * rest, carried as the target moves). The spring pulls the node towards the anchor with {@code k (a - x)}
+     * along any direction, so that a node loaded by F keeps within |F| / k of where the target carries its rest
+     * point once it has settled. The anchor takes the node's mass (it is driven: its mass moves nothing, but a
+     * node needs one).
+     */
+    public static Hold anchored(Motion m, double stiffnessNPerM, double dampingNsPerM) {
+        if (m == null) {
+            throw new IllegalArgumentException("an anchored attachment needs the motion that carries its anchors");
+        }
+        if (!(stiffnessNPerM > 0) || Double.isInfinite(stiffnessNPerM)) {
+            throw new IllegalArgumentException("attachment tie stiffness must be positive and finite (N/m), got "
+                    + stiffnessNPerM);
+        }
+        if (!(dampingNsPerM >= 0) || Double.isInfinite(dampingNsPerM)) {
+            throw new IllegalArgumentException("attachment tie damping must be >= 0 and finite (N s/m), got "
+                    + dampingNsPerM);
+        }
+        return (t, node) -> {
+            org.tensim.model.Node n = t.node(node);
+            org.tensim.model.Node anchor = t.addNode(n.position(), n.mass());
+            anchor.drive(m);
+            t.addSpring(node, anchor.id(), stiffnessNPerM, 0, dampingNsPerM);
+        };
+    }
+
+    /**
      * Attaches every candidate node of t within {@code thresholdM} of its nearest target (at the nodes' current, rest
-     * positions), in increasing node order.
+     * positions), in increasing node order. A hold may add nodes to t (an anchor): they are never candidates.
      *
      * @param thresholdM W, m (finite)
      */

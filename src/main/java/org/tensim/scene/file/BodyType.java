@@ -31,12 +31,23 @@ public interface BodyType {
 
     /**
      * Whether a body of this type is a whole experiment (the diaphragm): it brings its own supports, loads and
-     * outputs, so its file has it alone, without zones, conditions or probes (refused), its run is its type's own,
-     * its {@code expect:} checks read that run's summary ({@link #summaryKeys()}), and {@code run: {dt: auto}} leaves
-     * the step to its time-step policy. False by default (and {@code dt: auto} is refused).
+     * outputs, so its file has it alone, without rigid bodies or zones (refused), its run is its type's own, its
+     * conditions are those {@link #refusedCondition} lets through (extra loads and supports on its nodes), its
+     * probes are recorded during that run, its {@code expect:} checks read that run's summary
+     * ({@link #summaryKeys()}) and its probes' columns, and {@code run: {dt: auto}} leaves the step to its
+     * time-step policy. False by default (and {@code dt: auto} is refused).
      */
     default boolean standalone() {
         return false;
+    }
+
+    /**
+     * Why a condition of {@code type} (one of {@link SceneConditions#TYPES}) cannot act on a body of this type, or
+     * null when it can (every type, by default). The loader refuses such a condition naming its {@code type} key
+     * and this reason.
+     */
+    default String refusedCondition(String type) {
+        return null;
     }
 
     /**
@@ -50,8 +61,8 @@ public interface BodyType {
 
     /**
      * For a {@link #standalone()} type, the numbers its own run writes to summary.json that an {@code expect:}
-     * check may read ({@code summary: KEY}), each with its unit ("" for a count or a ratio); the file's checks read
-     * these only (it writes no probe columns). None by default.
+     * check may read ({@code summary: KEY}), each with its unit ("" for a count or a ratio), besides its probes'
+     * columns. None by default.
      */
     default java.util.Map<String, String> summaryKeys() {
         return java.util.Map.of();

@@ -39,11 +39,15 @@ final class ExpectBlock {
             throw SceneException.at(block, "expected a list of checks (at least one), e.g. - {column: p_dy_m, stat:"
                     + " min, between: [-9 m, -7 m]}, got " + block.describe());
         }
-        // A standalone body's run (the diaphragm's) writes its own summary and no probe columns.
+        // A standalone body's run (the diaphragm's) writes its own summary, and probe columns only when it has probes.
         boolean standalone = bodies.values().stream().anyMatch(b -> BodyTypes.get(b.type()).standalone());
-        List<String> columns = standalone ? List.of() : SceneExpectation.columns(probes);
-        Map<String, String> summary = standalone ? new java.util.LinkedHashMap<>()
+        List<String> columns = standalone && probes.isEmpty() ? List.of() : SceneExpectation.columns(probes);
+        Map<String, String> summary = standalone ? SceneExpectation.summaryKeys(List.of(), columns)
                 : SceneExpectation.summaryKeys(bodies.keySet(), columns);
+        if (standalone) {
+            // Its summary has the columns' ranges, not the generic run's step count and body sizes.
+            summary.keySet().removeIf(k -> !k.startsWith("columns."));
+        }
         for (SceneBody b : bodies.values()) {
             summary.putAll(BodyTypes.get(b.type()).summaryKeys());
         }
@@ -70,7 +74,8 @@ final class ExpectBlock {
             key = c.text();
             if (columns.isEmpty()) {
                 throw SceneException.at(c, "this scene's run writes no CSV columns: check its summary instead"
-                        + " (summary: KEY; keys: " + String.join(", ", summary.keySet()) + ")");
+                        + " (summary: KEY; keys: " + String.join(", ", summary.keySet()) + "), or give the file"
+                        + " probes, whose columns it then writes");
             }
             if (!columns.contains(key)) {
                 throw SceneException.at(c, c.describe() + " is not a column of this scene's CSV"

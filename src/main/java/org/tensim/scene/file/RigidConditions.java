@@ -18,10 +18,14 @@ import org.tensim.scene.conditions.DistanceAttachment;
  * its rest distance as its gap (it is held from going deeper, not thrown out), as the diaphragm's bones do. With
  * {@code hard: true} a node that went deeper is also put back on its gap after each step (the solver's contact
  * projection), so that penetration is a round-off, not the load over k.</li>
- * <li>{@code attachment} ({@code threshold} length): the paper's attachment, every node of the region within the
- * threshold of the rigid surface at rest ({@code d <= threshold}, inside included) moves with the body:
- * {@code x(t) = R(t) R(0)^T (x0 - c(0)) + c(t)} (the generic {@link DistanceAttachment}, as the diaphragm's
- * paper-threshold attachment).</li>
+ * <li>{@code attachment} ({@code threshold} length, {@code mode} drive): the paper's attachment, every node of the
+ * region within the threshold of the rigid surface at rest ({@code d <= threshold}, inside included) is attached
+ * (the generic {@link DistanceAttachment}, as the diaphragm's paper-threshold attachment). {@code mode: drive}: it
+ * moves with the body, {@code x(t) = a(t) = R(t) R(0)^T (x0 - c(0)) + c(t)}; {@code fix}: it is held at its rest
+ * point x0 whatever the body does (the diaphragm's spine); {@code tie} ({@code stiffness} N/m, required,
+ * {@code damping} N s/m, 0): a zero-length spring pulls it towards a(t), the point the body carries from its rest
+ * point, through an anchor node driven along a(t) ({@link DistanceAttachment#anchored}; one anchor node a tied
+ * node, added to the body's topology).</li>
  * <li>{@code sliding} ({@code stiffness}, {@code hard}): the region kept on the rigid surface, frictionless, neither
  * penetrating nor separating: each free node keeps its rest distance d0 from both sides, by one contact pair on the
  * solid (gap d0) and one on its complement (gap -d0), a bilateral normal spring {@code k (d0 - d) n} that leaves the
@@ -31,10 +35,12 @@ import org.tensim.scene.conditions.DistanceAttachment;
 final class RigidConditions {
     /** The condition types of this class. */
     static final List<String> TYPES = List.of("contact", "attachment", "sliding");
+    /** The attachment's modes: what attaching a node does. */
+    static final List<String> MODES = List.of("drive", "fix", "tie");
     /** The keys of each. */
     static final Map<String, List<String>> KEYS = Map.of(
             "contact", List.of("type", "region", "with", "stiffness", "gap", "hard"),
-            "attachment", List.of("type", "region", "with", "threshold"),
+            "attachment", List.of("type", "region", "with", "threshold", "mode", "stiffness", "damping"),
             "sliding", List.of("type", "region", "with", "stiffness", "hard"));
 
     private RigidConditions() {
@@ -102,6 +108,25 @@ final class RigidConditions {
         return t.addContactBody(complement ? rigid.complementBody(hard) : rigid.contactBody(hard));
     }
 
+    /** What the attachment's {@code mode} does to a node, {@code follow} the body's motion of its rest point. */
+    private static DistanceAttachment.Hold hold(MapReader r, Motion follow, SceneUnits u) {
+        String mode = r.choice("mode", MODES, "drive");
+        if (!mode.equals("tie")) {
+            for (String key : List.of("stiffness", "damping")) {
+                if (r.has(key)) {
+                    throw SceneException.at(r.node().get(key), key + " goes with mode: tie (a spring to the rigid"
+                            + " body); mode " + mode + " has none");
+                }
+            }
+        }
+        return switch (mode) {
+            case "fix" -> DistanceAttachment.fix();
+            case "tie" -> DistanceAttachment.anchored(follow, r.positive("stiffness", QuantityKind.STIFFNESS, u,
+                    Double.NaN), r.nonNegative("damping", QuantityKind.DAMPING, u, 0));
+            default -> DistanceAttachment.drive(follow);
+        };
+    }
+
     private static void attach(MapReader r, RigidBody rigid, SceneBody b, BitSet nodes, SceneUnits u) {
         double threshold = r.positive("threshold", QuantityKind.LENGTH, u, Double.NaN);
         double[] r0 = new double[9];
@@ -124,7 +149,7 @@ final class RigidConditions {
         };
         DistanceAttachment.Result done = DistanceAttachment.attach(b.topology(), nodes, List.of(
                 new DistanceAttachment.Target(rigid.name(), q -> rigid.restDistance(q.x(), q.y(), q.z()),
-                        DistanceAttachment.drive(follow))), threshold);
+                        hold(r, follow, u))), threshold);
         int attached = done.attached();
         double nearest = done.nearest();
         if (attached == 0) {

@@ -98,10 +98,16 @@ public final class SceneConditions {
                         on |= SceneCheck.bodyName(items.get(i), bodies).equals(b.name());
                     }
                     if (on) {
+                        refuse(c, type, b);
                         b.topology().setGravity(new Vec3(g[0], g[1], g[2]));
                     }
                 }
                 continue;
+            }
+            if (r.has("region")) {
+                for (String name : region(r.scalar("region"), regions).nodes().keySet()) {
+                    refuse(c, type, bodies.get(name)); // before the with: body is looked up
+                }
             }
             if (BodyCoupling.withDeformable(type, r, bodies)) {
                 couplings.addAll(BodyCoupling.read(type, r, bodies, region(r.scalar("region"), regions), u));
@@ -130,6 +136,15 @@ public final class SceneConditions {
             }
         }
         return couplings;
+    }
+
+    /** Refuses a condition its body's type cannot take ({@link BodyType#refusedCondition}), naming its type key. */
+    private static void refuse(SceneNode c, String type, SceneBody b) {
+        String why = BodyTypes.get(b.type()).refusedCondition(type);
+        if (why != null) {
+            throw SceneException.at(c.get("type"), "a " + type + " condition cannot act on body '" + b.name()
+                    + "' (type " + b.type() + "): " + why);
+        }
     }
 
     private static void applyTo(String type, MapReader r, SceneBody b, BitSet nodes, TimeLaw law, SceneUnits u,

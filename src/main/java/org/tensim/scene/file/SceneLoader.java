@@ -60,7 +60,7 @@ public final class SceneLoader {
         Map<String, TimeLaw> laws = TimeLaws.read(top.optional("laws"), units, folder);
         Map<String, RigidBody> rigids = new LinkedHashMap<>();
         Map<String, SceneBody> bodies = bodies(top, units, folder, laws, rigids);
-        standalone(top, bodies);
+        standalone(top, bodies, rigids);
         Map<String, SceneRegions.Region> regions = SceneRegions.read(top.optional("regions"), bodies, units, folder,
                 rigids.keySet());
         SceneZones.apply(top.optional("zones"), bodies, regions, units);
@@ -82,21 +82,24 @@ public final class SceneLoader {
                 List.copyOf(couplings));
     }
 
-    /** A {@link BodyType#standalone()} body is the file's only one, without the blocks it brings itself. */
-    private static void standalone(MapReader top, Map<String, SceneBody> bodies) {
+    /**
+     * A {@link BodyType#standalone()} body is the file's only one, rigid bodies included, without zones (its own
+     * keys give its tissues); its conditions and probes are read as any body's.
+     */
+    private static void standalone(MapReader top, Map<String, SceneBody> bodies, Map<String, RigidBody> rigids) {
         for (SceneBody b : bodies.values()) {
             if (!BodyTypes.get(b.type()).standalone()) {
                 continue;
             }
-            if (bodies.size() > 1) {
-                throw SceneException.at(top.required("bodies"), "a " + b.type() + " body brings its own supports and"
-                        + " loads and is a file's only body; got " + bodies.keySet());
+            if (bodies.size() > 1 || !rigids.isEmpty()) {
+                List<String> all = new java.util.ArrayList<>(bodies.keySet());
+                all.addAll(rigids.keySet());
+                throw SceneException.at(top.required("bodies"), "a " + b.type() + " body brings its own supports,"
+                        + " bones and loads and is a file's only body; got " + all);
             }
-            for (String key : List.of("zones", "conditions", "probes")) {
-                if (top.has(key)) {
-                    throw SceneException.at(top.required(key), "a " + b.type() + " body brings its own supports,"
-                            + " loads and outputs: its file has no " + key + " block (docs/scenes.md)");
-                }
+            if (top.has("zones")) {
+                throw SceneException.at(top.required("zones"), "a " + b.type() + " body brings its own tissues"
+                        + " (its own keys set them): its file has no zones block (docs/scenes.md)");
             }
         }
     }

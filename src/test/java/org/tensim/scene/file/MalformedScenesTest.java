@@ -149,6 +149,17 @@ class MalformedScenesTest {
             {"diaphragm-expect-column.yaml", "diaphragm-expect-column.yaml:6:14: expect[0].column",
                 "this scene's run writes no CSV columns: check its summary instead (summary: KEY; keys:"
                     + " dome_excursion_mm"},
+            {"diaphragm-zones.yaml", "diaphragm-zones.yaml:7:3: zones",
+                "a diaphragm body brings its own tissues (its own keys set them): its file has no zones block"},
+            {"diaphragm-contact-condition.yaml", "diaphragm-contact-condition.yaml:7:12: conditions[0].type",
+                "a contact condition cannot act on body 'd' (type diaphragm): the diaphragm's contacts are its own"},
+            {"diaphragm-beside-rigid.yaml", "diaphragm-beside-rigid.yaml:3:3: bodies",
+                "a diaphragm body brings its own supports, bones and loads and is a file's only body; got [d, liver]"},
+            {"attachment-bad-mode.yaml", "attachment-bad-mode.yaml:8:75: conditions[0].mode",
+                "\"tied\" is not one of drive, fix, tie; did you mean 'tie'?"},
+            {"attachment-stiffness-without-tie.yaml", "attachment-stiffness-without-tie.yaml:8:80:"
+                + " conditions[0].stiffness", "stiffness goes with mode: tie (a spring to the rigid body); mode drive"
+                + " has none"},
         });
     }
 

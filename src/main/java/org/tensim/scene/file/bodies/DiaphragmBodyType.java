@@ -34,7 +34,9 @@ import tech.units.indriya.unit.Units;
  * the double dome at that resolution.
  *
  * <p>The body carries its scene ({@link org.tensim.scene.file.SceneBody#built()}): {@code tensim run} runs it as
- * the command does and writes the diaphragm's report. Its nodes are the scene's (the mesh's vertices first).
+ * the command does and writes the diaphragm's report. Its nodes are the scene's (the mesh's vertices first), and
+ * its surface the mesh's closed shell on them. Its file's conditions add loads and supports to its nodes
+ * ({@link #refusedCondition} says which); its probes are recorded during the run.
  */
 public final class DiaphragmBodyType implements BodyType {
     /** The keys, each an option of {@code tensim diaphragm} without its dashes, {@code _} for {@code -}. */
@@ -102,11 +104,43 @@ public final class DiaphragmBodyType implements BodyType {
             throw SceneException.at(r.node(), "cannot read the diaphragm's files (" + e.getMessage() + ")");
         }
         ctx.own(built.scene().topology(), built);
+        ctx.embed(surface(built));
         if (built.meshReport() != null) {
             ctx.report(built.meshReport().describe());
         }
         ctx.report(built.source());
         return null;
+    }
+
+    /**
+     * The diaphragm's closed shell (both its surfaces, m) on its nodes, vertex v on node v: what a pressure
+     * condition loads and a {@code surface:} region selects.
+     */
+    private static org.tensim.scene.file.EmbeddedSurface surface(DiaphragmSetup.Built built) {
+        org.tensim.io.mesh.TriangleMesh mesh = built.scene().surfaces().mesh();
+        org.tensim.model.LinearMapping.Builder m = new org.tensim.model.LinearMapping.Builder(
+                built.scene().topology().nodeCount());
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            m.add(new int[] {v}, new double[] {1});
+        }
+        return new org.tensim.scene.file.EmbeddedSurface(mesh, m.build());
+    }
+
+    /**
+     * Extra loads and supports on its nodes (fixed, force, gravity, motion, pressure) act on top of its own; the
+     * conditions that bring bones or muscle are its own keys' business.
+     */
+    @Override
+    public String refusedCondition(String type) {
+        return switch (type) {
+            case "contact", "sliding" -> "the diaphragm's contacts are its own (keys contact, contact_stiffness,"
+                    + " liver_support, abdominal_support; thorax for bones), and its file has no rigid body to touch";
+            case "attachment" -> "the diaphragm's attachments to its cage are its own (keys attachment,"
+                    + " attach_threshold, band_stiffness); to hold a region, use a fixed condition";
+            case "fibres" -> "the diaphragm's muscle load is its own (keys muscle_load, muscle_action,"
+                    + " action_line); to add a load, use a force or pressure condition";
+            default -> null;
+        };
     }
 
     /** The spec the body's keys give, by the command's own rules ({@link DiaphragmChoices#spec}). */
