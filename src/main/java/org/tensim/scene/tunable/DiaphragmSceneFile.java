@@ -8,13 +8,16 @@ import org.tensim.scene.diaphragm.DiaphragmParameters;
 import org.tensim.scene.diaphragm.DiaphragmScene;
 import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
 
 /**
  * A scene file whose body is a {@code type: diaphragm} ({@code DiaphragmBodyType}) in the GUI: the view scene
  * {@code tensim gui --scene diaphragm} opens ({@link DiaphragmViewScene}), built from the spec the loader made of
  * the body's keys (the {@code --set} options applied, as {@code tensim run} reads them), run with the file's
- * integrator and step ({@code dt: auto}: the scene's recommended step). Its controls are the diaphragm's own (rib
+ * integrator ({@link #integrator}) and step ({@code dt: auto}: the scene's recommended step). Its controls are the diaphragm's own (rib
  * motion, muscle action, tissue constants, breathing period, the tendon's boundary), starting at the spec's values
  * rather than the built-in scene's defaults; the file's {@code parameters:} set values when it is loaded
  * ({@code --set NAME=VALUE}) but are not controls. The full model runs, as {@code tensim run} runs it: no mapped
@@ -29,6 +32,15 @@ final class DiaphragmSceneFile {
         DiaphragmViewFactory f = DiaphragmViewScene.factory(built.scene().spec(), null);
         f.openedFrom(loaded.run());
         return f;
+    }
+
+    /**
+     * The file's integrator as {@code tensim run} configures it: a plain {@code bdf2} among bone surfaces with
+     * contact takes the thorax's converged iterations, which the GUI names {@link Integrators#CONTACT}.
+     */
+    static String integrator(RunSettings run, DiaphragmSpec spec) {
+        boolean contact = spec.cage().boneSurfaces() && spec.cage().contact();
+        return contact && run.integrator().equals(PrefactoredBdf2.NAME) ? Integrators.CONTACT : run.integrator();
     }
 
     /**

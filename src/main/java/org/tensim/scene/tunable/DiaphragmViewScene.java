@@ -313,7 +313,7 @@ public final class DiaphragmViewScene implements ViewScene {
 
     @Override
     public String defaultIntegrator() {
-        return fileRun == null ? null : fileRun.integrator();
+        return fileRun == null ? null : DiaphragmSceneFile.integrator(fileRun, scene.spec());
     }
 
     @Override
