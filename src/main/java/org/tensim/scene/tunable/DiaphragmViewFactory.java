@@ -175,8 +175,9 @@ public final class DiaphragmViewFactory implements SceneFactory {
     public ViewScene create(boolean tensegrityTendon, BoundaryConditions.MuscleLoad muscleLoad,
             Map<String, Double> values) {
         BoundaryConditions b = muscleLoad == null ? bc : bc.withMuscleLoad(muscleLoad);
-        // A value not given is the spec's (the muscle action only with the spec's load, whose stress it is).
-        DiaphragmSpec.Breathing given = base.breathing();
+        // A value not given is a scene file's (the muscle action only with its load, whose stress it is), else quiet
+        // breathing's, where the built-in scene's controls start.
+        DiaphragmSpec.Breathing given = fileRun != null ? base.breathing() : DiaphragmSpec.Breathing.defaults();
         double period = values.getOrDefault(DiaphragmViewScene.BREATHING_PERIOD, given.periodS());
         double musclePa = given.musclePa() != null && b.muscleLoad() == bc.muscleLoad() ? given.musclePa()
                 : DiaphragmSetup.defaultMusclePa(b.muscleLoad());
