@@ -22,7 +22,6 @@ import org.tensim.solver.Simulation;
 import org.tensim.solver.SimulationDivergedException;
 import org.tensim.solver.SurfaceSliding;
 import org.tensim.solver.SystemState;
-import org.tensim.solver.integrators.Integrators;
 
 /**
  * Runs a loaded {@link Scene} headless: each deformable body is its own {@link Simulation} (bodies that touch or
@@ -44,12 +43,7 @@ public final class SceneRunner {
     public static Map<String, Object> run(Scene loaded, RunSettings run, RunFolder folder) throws IOException {
         Scene scene = CoupledBodies.merge(loaded); // bodies touching each other share one simulation
         List<SceneBody> bodies = new ArrayList<>(scene.bodies().values());
-        Map<String, Simulation> sims = new LinkedHashMap<>();
-        for (SceneBody b : bodies) {
-            Simulation sim = new Simulation(SystemState.compile(b.topology()), Integrators.create(run.integrator()));
-            CoupledBodies.addTerms(b, sim);
-            sims.put(b.name(), sim);
-        }
+        Map<String, Simulation> sims = CoupledBodies.simulations(scene, run.integrator());
         Map<SceneProbe, int[]> springs = energySprings(scene, sims);
         List<String> header = SceneExpectation.columns(scene.probes());
         double[] row = new double[header.size()];

@@ -12,7 +12,8 @@ import picocli.CommandLine.Parameters;
 /**
  * The scene-file part of {@code tensim gui}: {@code tensim gui FILE [--set NAME=VALUE ...]} opens a scene file
  * (docs/scenes.md) with its own integrator and step, its named parameters as the controls
- * ({@link FileViewScene}). Nothing last-used is restored over the file's values, nor saved.
+ * ({@link FileViewScene}; a diaphragm file opens the diaphragm's view with its own controls). Nothing last-used is
+ * restored over the file's values, nor saved.
  */
 public final class SceneFileGui {
     /** The built-in scenes' options, which a scene file leaves out. */
@@ -21,7 +22,8 @@ public final class SceneFileGui {
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
             description = "A scene file (docs/scenes.md) to open instead of a built-in scene; it runs with its own"
-                    + " integrator and step, and its named parameters are the controls.")
+                    + " integrator and step, and its named parameters are the controls (a diaphragm file has the"
+                    + " diaphragm's own; bodies touching each other run in one simulation, as in tensim run).")
     Path file;
 
     @Option(names = "--set", paramLabel = "KEY.PATH=VALUE",

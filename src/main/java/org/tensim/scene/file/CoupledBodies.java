@@ -15,6 +15,8 @@ import org.tensim.model.Vec3;
 import org.tensim.model.VolumeElement;
 import org.tensim.solver.Simulation;
 import org.tensim.solver.SurfaceSliding;
+import org.tensim.solver.SystemState;
+import org.tensim.solver.integrators.Integrators;
 
 /**
  * Deformable bodies that touch or slide on each other ({@link BodyCoupling}) must share one state, because the
@@ -41,11 +43,31 @@ public final class CoupledBodies {
     private CoupledBodies() {
     }
 
-    /** The scene with each group of coupled bodies merged into one (the scene itself when it has no coupling). */
-    public static Scene merge(Scene scene) {
-        if (scene.couplings().isEmpty()) {
-            return scene;
+    /**
+     * Where a body of a scene sits in the scene {@link #merge} makes of it: the name of the body that holds it (its
+     * own name when nothing couples it) and the id of its first node there.
+     */
+    public record Place(String into, int offset) {
+    }
+
+    /** Each body's {@link Place}, in file order. */
+    public static Map<String, Place> places(Scene scene) {
+        Map<String, Place> out = new LinkedHashMap<>();
+        for (List<String> members : groups(scene)) {
+            String name = String.join("+", members);
+            int offset = 0;
+            for (String m : members) {
+                out.put(m, new Place(name, offset));
+                offset += scene.bodies().get(m).topology().nodeCount();
+            }
         }
+        Map<String, Place> ordered = new LinkedHashMap<>();
+        scene.bodies().keySet().forEach(b -> ordered.put(b, out.get(b)));
+        return ordered;
+    }
+
+    /** The groups of bodies joined by couplings, each in file order, ordered by their first body. */
+    private static List<List<String>> groups(Scene scene) {
         List<String> names = new ArrayList<>(scene.bodies().keySet());
         int[] group = new int[names.size()];
         for (int i = 0; i < group.length; i++) {
@@ -56,27 +78,41 @@ public final class CoupledBodies {
             int b = root(group, names.indexOf(c.with()));
             group[Math.max(a, b)] = Math.min(a, b);
         }
+        List<List<String>> out = new ArrayList<>();
+        for (int i = 0; i < names.size(); i++) {
+            if (root(group, i) == i) {
+                List<String> members = new ArrayList<>();
+                for (int j = 0; j < names.size(); j++) {
+                    if (root(group, j) == i) {
+                        members.add(names.get(j));
+                    }
+                }
+                out.add(members);
+            }
+        }
+        return out;
+    }
+
+    /** The scene with each group of coupled bodies merged into one (the scene itself when it has no coupling). */
+    public static Scene merge(Scene scene) {
+        if (scene.couplings().isEmpty()) {
+            return scene;
+        }
         Map<String, String> into = new LinkedHashMap<>(); // body -> its merged body's name
         Map<String, Integer> offset = new LinkedHashMap<>();
+        Map<String, Place> places = places(scene);
+        places.forEach((b, p) -> {
+            into.put(b, p.into());
+            offset.put(b, p.offset());
+        });
         Map<String, SceneBody> bodies = new LinkedHashMap<>();
-        for (int i = 0; i < names.size(); i++) {
-            int r = root(group, i);
-            List<String> members = new ArrayList<>();
-            for (int j = 0; j < names.size(); j++) {
-                if (root(group, j) == r) {
-                    members.add(names.get(j));
-                }
-            }
+        for (List<String> members : groups(scene)) {
             if (members.size() == 1) {
-                bodies.put(names.get(i), scene.bodies().get(names.get(i)));
-                into.put(names.get(i), names.get(i));
-                offset.put(names.get(i), 0);
-            } else if (r == i) {
+                bodies.put(members.get(0), scene.bodies().get(members.get(0)));
+            } else {
                 String name = String.join("+", members);
                 Topology t = new Topology();
                 for (String m : members) {
-                    into.put(m, name);
-                    offset.put(m, t.nodeCount());
                     copy(scene.bodies().get(m), t);
                 }
                 gravityAndDamping(scene, members, offset, t);
@@ -194,18 +230,6 @@ public final class CoupledBodies {
     /** A coupling's term data in the merged ids: the surface's mapping shifted, its triangles turned outward. */
     private static Term term(BodyCoupling c, SceneBody with, Map<String, Integer> offset, int nodes) {
         EmbeddedSurface s = with.surface();
-        int off = offset.get(with.name());
-        LinearMapping.Builder b = new LinearMapping.Builder(nodes);
-        LinearMapping m = s.mapping();
-        for (int i = 0; i < m.pointCount(); i++) {
-            int[] ids = new int[m.entries(i)];
-            double[] w = new double[ids.length];
-            for (int k = 0; k < ids.length; k++) {
-                ids[k] = m.node(i, k) + off;
-                w[k] = m.weight(i, k);
-            }
-            b.add(ids, w);
-        }
         int[] tris = s.mesh().triangles().clone();
         if (s.mesh().signedVolume() < 0) { // given inside out: turn round so that the normals point outward
             for (int k = 0; k < tris.length; k += 3) {
@@ -216,8 +240,40 @@ public final class CoupledBodies {
         }
         SurfaceSliding.Mode mode = c.type().equals("contact") ? SurfaceSliding.Mode.CONTACT
                 : SurfaceSliding.Mode.SLIDING;
-        return new Term(mode, shift(c.followers(), offset.get(c.body())), b.build(), tris, c.stiffnessNPerM(),
-                c.gapM());
+        return new Term(mode, shift(c.followers(), offset.get(c.body())), shifted(s.mapping(),
+                offset.get(with.name()), nodes), tris, c.stiffnessNPerM(), c.gapM());
+    }
+
+    /**
+     * A body's surface mapping in the ids of the merged body that holds it ({@link #places}): each entry's node id
+     * moved by {@code offset}, over {@code nodes} nodes.
+     */
+    public static LinearMapping shifted(LinearMapping m, int offset, int nodes) {
+        LinearMapping.Builder b = new LinearMapping.Builder(nodes);
+        for (int i = 0; i < m.pointCount(); i++) {
+            int[] ids = new int[m.entries(i)];
+            double[] w = new double[ids.length];
+            for (int k = 0; k < ids.length; k++) {
+                ids[k] = m.node(i, k) + offset;
+                w[k] = m.weight(i, k);
+            }
+            b.add(ids, w);
+        }
+        return b.build();
+    }
+
+    /**
+     * The simulations {@code tensim run} steps for a merged scene ({@link #merge}): one per body, in file order,
+     * with a new {@code integrator} each (an {@code Integrators} name) and its couplings' terms ({@link #addTerms}).
+     */
+    public static Map<String, Simulation> simulations(Scene merged, String integrator) {
+        Map<String, Simulation> sims = new LinkedHashMap<>();
+        for (SceneBody b : merged.bodies().values()) {
+            Simulation sim = new Simulation(SystemState.compile(b.topology()), Integrators.create(integrator));
+            addTerms(b, sim);
+            sims.put(b.name(), sim);
+        }
+        return sims;
     }
 
     /**

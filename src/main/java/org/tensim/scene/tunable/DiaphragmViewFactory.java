@@ -102,6 +102,14 @@ public final class DiaphragmViewFactory implements SceneFactory {
         return fullModel;
     }
 
+    /** The run of the scene file its spec comes from ({@link DiaphragmSceneFile}), or null. */
+    private volatile org.tensim.scene.file.RunSettings fileRun;
+
+    /** From now on its scenes run as the scene file's run says, their controls starting at their values. */
+    void openedFrom(org.tensim.scene.file.RunSettings run) {
+        fileRun = run;
+    }
+
     DiaphragmViewFactory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
         this.base = base;
         this.bc = base.boundary();
@@ -167,15 +175,19 @@ public final class DiaphragmViewFactory implements SceneFactory {
     public ViewScene create(boolean tensegrityTendon, BoundaryConditions.MuscleLoad muscleLoad,
             Map<String, Double> values) {
         BoundaryConditions b = muscleLoad == null ? bc : bc.withMuscleLoad(muscleLoad);
-        double period = values.getOrDefault(DiaphragmViewScene.BREATHING_PERIOD, 4.0);
+        // A value not given is a scene file's (the muscle action only with its load, whose stress it is), else quiet
+        // breathing's, where the built-in scene's controls start.
+        DiaphragmSpec.Breathing given = fileRun != null ? base.breathing() : DiaphragmSpec.Breathing.defaults();
+        double period = values.getOrDefault(DiaphragmViewScene.BREATHING_PERIOD, given.periodS());
+        double musclePa = given.musclePa() != null && b.muscleLoad() == bc.muscleLoad() ? given.musclePa()
+                : DiaphragmSetup.defaultMusclePa(b.muscleLoad());
         Painted painting = painted;
         DiaphragmSpec spec = (painting == null ? base : base.withMesh(base.mesh().withLabels(painting.file())))
                 .withBoundary(b).withActionLines(b.muscleLoad()
                 == BoundaryConditions.MuscleLoad.FIBRES ? null : base.actionLines())
-                .withBreathing(new DiaphragmSpec.Breathing(period, DiaphragmViewScene.EXPIRATION_RATIO,
-                        values.getOrDefault(DiaphragmViewScene.RIB_AMPLITUDE, 1.0),
-                        values.getOrDefault(DiaphragmViewScene.MUSCLE_ACTION,
-                                DiaphragmSetup.defaultMusclePa(b.muscleLoad())),
+                .withBreathing(new DiaphragmSpec.Breathing(period, given.expirationRatio(),
+                        values.getOrDefault(DiaphragmViewScene.RIB_AMPLITUDE, given.ribAmplitude()),
+                        values.getOrDefault(DiaphragmViewScene.MUSCLE_ACTION, musclePa),
                         base.breathing().abdominalPressurePa()));
         try {
             DiaphragmSetup.Inputs in = inputs();
@@ -194,7 +206,8 @@ public final class DiaphragmViewFactory implements SceneFactory {
             }
             Mechanics m = mechanics;
             if (m == null || fullModel || painting != null) {
-                return new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
+                DiaphragmViewScene v = new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
+                return fileRun == null ? v : v.asFile(fileRun);
             }
             DiaphragmSpec coarse = spec.withMesh(spec.mesh().withFile(null, spec.mesh().units()).withRings(m.rings()));
             DiaphragmSetup.Inputs cin = coarseInputs(coarse);

@@ -28,7 +28,7 @@ import org.tensim.solver.SystemState;
  * tendon pale, with the ribs, sternum and cartilage as lines; the dome apex is
  * the probe. The two control parameters of the paper (rib motion, muscle action)
  * act through the scene's {@link DiaphragmControls}; the breathing period is
- * fixed when a scene is built, so changing it restarts.
+ * fixed when a scene is built, so changing it restarts; its inspiration:expiration is the spec's (1:2 by default).
  *
  * <p><b>Tissue constants</b> go through the scene's own rules, those of
  * {@code tensim diaphragm}: a new tissue stiffness (the muscle's Young's modulus,
@@ -69,9 +69,6 @@ public final class DiaphragmViewScene implements ViewScene {
     public static final double TENDON_PLANE_RANGE_MM = 40;
     /** Range of {@link #TENDON_SHARE}: a small cap to a large one (adults: 0.10-0.15). */
     public static final double[] TENDON_SHARE_RANGE = {0.03, 0.4};
-
-    /** Inspiration:expiration of quiet breathing, 1:2 (docs/physics.md). */
-    static final double EXPIRATION_RATIO = 2;
 
     private static final DiaphragmParameters P = DiaphragmParameters.defaults();
 
@@ -138,7 +135,8 @@ public final class DiaphragmViewScene implements ViewScene {
 
     private final boolean tensegrity;
     private final BoundaryConditions.MuscleLoad load;
-    private final List<TunableParameter> parameters;
+    private List<TunableParameter> parameters;
+    private org.tensim.scene.file.RunSettings fileRun; // the scene file's run when opened from one, else null
     private final Simulation sim;
     private final List<Body> bodies;
     /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
@@ -306,9 +304,21 @@ public final class DiaphragmViewScene implements ViewScene {
         return parameters;
     }
 
+    /** As a scene file opens it ({@link DiaphragmSceneFile}): its run's integrator and step, controls at its values. */
+    DiaphragmViewScene asFile(org.tensim.scene.file.RunSettings run) {
+        fileRun = run;
+        parameters = DiaphragmSceneFile.startingAt(parameters, scene, load);
+        return this;
+    }
+
     @Override
-    public double defaultTimeStep() {
-        return scene.recommendedTimeStep();
+    public String defaultIntegrator() {
+        return fileRun == null ? null : DiaphragmSceneFile.integrator(fileRun, scene.spec());
+    }
+
+    @Override
+    public double defaultTimeStep() { // the file's step unless it is dt: auto
+        return fileRun == null || fileRun.autoStep() ? scene.recommendedTimeStep() : fileRun.dtS();
     }
 
     /** The vertical axis of the BodyParts3D frame (z, superior): the dome's excursion. */

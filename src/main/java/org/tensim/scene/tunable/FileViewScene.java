@@ -9,6 +9,7 @@ import org.tensim.model.LinearMapping;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
 import org.tensim.io.mesh.TriangleMesh;
+import org.tensim.scene.file.CoupledBodies;
 import org.tensim.scene.file.EmbeddedSurface;
 import org.tensim.scene.file.RigidBody;
 import org.tensim.scene.file.Scene;
@@ -35,12 +36,20 @@ import org.tensim.solver.SystemState;
  * the next step runs with them, from the positions and velocities reached.
  * A rigid body is drawn as its surface (a plane as a square about the deformable bodies), a display-only body like
  * the carried surfaces, posed after every step of the first body at that body's time.
+ *
+ * <p>Bodies that touch or slide on each other ({@code with:} a deformable body) run as {@code tensim run} runs
+ * them: one simulation holding their nodes and their couplings' terms ({@link CoupledBodies#merge},
+ * {@link CoupledBodies#simulations}), drawn as one lattice, each body's surface carried from its own nodes in it.
+ * A rebuild makes the whole coupled scene anew. A file whose body is a diaphragm opens the diaphragm's own view
+ * scene ({@link DiaphragmSceneFile}).
  */
 public final class FileViewScene implements ViewScene {
     private final Path file;
     /** The {@code --set} options of the command line, applied before the parameters' values. */
     private final List<String> given;
     private final Scene scene;
+    /** The scene as it runs: bodies that touch each other merged into one ({@link CoupledBodies#merge}). */
+    private final Scene merged;
     private final List<Body> bodies = new ArrayList<>();
     /** The simulations of the file's bodies, in file order (the drawn surfaces left out). */
     private final List<Simulation> simulations = new ArrayList<>();
@@ -57,15 +66,22 @@ public final class FileViewScene implements ViewScene {
             values.put(p.name(), p.value());
         }
         prepared.putAll(values);
-        SceneProbe first = scene.probes().isEmpty() ? null : scene.probes().get(0);
-        for (SceneBody b : scene.bodies().values()) {
-            Simulation sim = new Simulation(SystemState.compile(b.topology()),
-                    org.tensim.solver.integrators.Integrators.create(scene.run().integrator()));
+        // Bodies that touch or slide on each other share one simulation with their couplings' terms, built as
+        // tensim run builds it.
+        merged = CoupledBodies.merge(scene);
+        Map<String, Simulation> sims = CoupledBodies.simulations(merged, scene.run().integrator());
+        Map<String, CoupledBodies.Place> places = CoupledBodies.places(scene);
+        SceneProbe first = merged.probes().isEmpty() ? null : merged.probes().get(0);
+        for (SceneBody b : merged.bodies().values()) {
+            Simulation sim = sims.get(b.name());
             simulations.add(sim);
             int probe = first != null && first.body().equals(b.name()) ? first.nodes()[0] : 0;
             bodies.add(new Body(b.name() + " (" + b.type() + ")", sim, new int[0], null, Vec3.ZERO, probe));
-            if (b.surface() != null) {
-                bodies.add(surface(b.name(), b.surface(), sim));
+            for (SceneBody member : scene.bodies().values()) {
+                CoupledBodies.Place at = places.get(member.name());
+                if (member.surface() != null && at.into().equals(b.name())) {
+                    bodies.add(surface(member.name(), member.surface(), at.offset(), sim));
+                }
             }
         }
         Simulation clock = bodies.get(0).simulation();
@@ -120,9 +136,13 @@ public final class FileViewScene implements ViewScene {
         return RigidMeshes.square(p, n, diag > 0 ? diag : 1);
     }
 
-    /** The display body of a carried surface, its positions mapped from {@code carrier} after every step. */
-    private static Body surface(String name, EmbeddedSurface s, Simulation carrier) {
-        LinearMapping map = s.mapping();
+    /**
+     * The display body of a carried surface, its positions mapped from {@code carrier} after every step; the
+     * surface's body starts at node {@code offset} of the carrier (0 unless it shares a state with others).
+     */
+    private static Body surface(String name, EmbeddedSurface s, int offset, Simulation carrier) {
+        LinearMapping map = offset == 0 ? s.mapping()
+                : CoupledBodies.shifted(s.mapping(), offset, carrier.state().nodeCount);
         double[] rest = map.restPoints(restTopology(carrier));
         Topology t = new Topology();
         for (int v = 0; v < map.pointCount(); v++) {
@@ -154,18 +174,11 @@ public final class FileViewScene implements ViewScene {
      */
     public static SceneFactory factory(Path file, List<String> sets) {
         org.tensim.scene.file.Scene loaded = SceneLoader.load(file, sets);
-        for (org.tensim.scene.file.SceneBody b : loaded.bodies().values()) {
-            if (org.tensim.scene.file.BodyTypes.get(b.type()).standalone()) {
-                throw org.tensim.scene.file.SceneException.at(b.node(), "a " + b.type() + " body runs as its own"
-                        + " experiment, which the GUI opens by name: tensim gui --scene " + b.type() + " with its"
-                        + " options (the body's keys, - for _)");
+        for (SceneBody b : loaded.bodies().values()) {
+            if (b.built() instanceof org.tensim.scene.diaphragm.DiaphragmSetup.Built d) {
+                DiaphragmSceneFile.refuseExtras(file, loaded, b);
+                return DiaphragmSceneFile.factory(loaded, d); // the diaphragm's own view scene and controls
             }
-        }
-        if (!loaded.couplings().isEmpty()) {
-            // Each body is its own simulation here, rebuilt live; coupled bodies need one state with their terms.
-            throw org.tensim.scene.file.SceneException.at(loaded.couplings().get(0).node(), "the GUI does not run"
-                    + " bodies that touch or slide on each other (with: a deformable body) yet: run the file with"
-                    + " tensim run");
         }
         FileViewScene checked = new FileViewScene(file, sets, loaded);
         // The values the file and the options give, before any control moves (the first scene's change live).
@@ -279,14 +292,14 @@ public final class FileViewScene implements ViewScene {
         }
         Map<String, Double> next = new LinkedHashMap<>(prepared);
         next.put(key, value);
-        Scene built = SceneLoader.load(file, sets(next));
+        Scene built = CoupledBodies.merge(SceneLoader.load(file, sets(next)));
         List<SystemState> fresh = new ArrayList<>();
         for (SceneBody b : built.bodies().values()) {
             fresh.add(SystemState.compile(b.topology()));
         }
         prepared.put(key, value);
         return () -> {
-            List<String> names = new ArrayList<>(scene.bodies().keySet());
+            List<String> names = new ArrayList<>(merged.bodies().keySet());
             for (int i = 0; i < simulations.size(); i++) {
                 LiveConstants.adopt(simulations.get(i).state(), fresh.get(i), "body '" + names.get(i) + "'");
             }

@@ -10,12 +10,18 @@ import java.nio.file.Path;
 import java.util.Map;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.tensim.scene.file.CoupledBodies;
 import org.tensim.scene.file.Scene;
 import org.tensim.scene.file.SceneLoader;
 import org.tensim.scene.tunable.Body;
 import org.tensim.scene.tunable.FileViewScene;
+import org.tensim.solver.Simulation;
 
-/** {@code tensim gui FILE}: a scene file opens with its own integrator and step, its volumes drawn by their surfaces. */
+/**
+ * {@code tensim gui FILE}: a scene file opens with its own integrator and step, its volumes drawn by their surfaces;
+ * bodies touching each other run in one simulation as {@code tensim run} runs them, and a diaphragm file opens the
+ * diaphragm's view.
+ */
 class GuiSceneFileTest {
     @Test
     void aVolumeIsItsLatticeThenItsSurfaceCarriedThroughTheMapping() {
@@ -80,6 +86,94 @@ class GuiSceneFileTest {
         assertTrue(((Number) m.get("steps")).longValue() > 0, "steps made: " + m);
         assertEquals(null, m.get("diverged"));
     }
+
+    /**
+     * Bodies touching each other open as one simulation (the slab and the block with the contact), each body's surface
+     * drawn: the line counts the shared lattice's nodes and both surfaces' vertices, at the file's rk2 and 0.2 ms.
+     */
+    @Test
+    @Tag("gui")
+    void runForOnBodiesTouchingEachOtherPrintsItsLine() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        Scene s = SceneLoader.load(BLOCK_ON_SLAB);
+        int nodes = 0;
+        for (org.tensim.scene.file.SceneBody b : s.bodies().values()) {
+            nodes += b.topology().nodeCount() + b.surface().mesh().vertexCount();
+        }
+        Map<String, Object> m = GuiCommandTest.scriptedSummary("gui", BLOCK_ON_SLAB.toString(), "--run-for", "2",
+                "--unpaced");
+        assertEquals("file-block-on-slab", m.get("scene"));
+        assertEquals(nodes, ((Number) m.get("nodes")).intValue(), m.toString());
+        assertEquals("rk2", m.get("integrator"));
+        assertEquals(2e-4, ((Number) m.get("dt_s")).doubleValue(), 1e-15);
+        assertTrue(((Number) m.get("steps")).longValue() > 0, "steps made: " + m);
+        assertEquals(null, m.get("diverged"));
+    }
+
+    /**
+     * The window's coupled scene, paused after some hundred steps, holds the positions the headless run's state (the
+     * same construction, {@link CoupledBodies#simulations}) reaches in as many steps of the file's step, to the bit:
+     * the block has sunk into the slab.
+     */
+    @Test
+    @Tag("gui")
+    void theWindowStepsBodiesTouchingEachOtherAsTheHeadlessRun() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        GuiWindow w = GuiCommand.open(FileViewScene.factory(BLOCK_ON_SLAB), null, null, null, true);
+        double[] x;
+        long steps;
+        try {
+            GuiTestSupport.waitFor("some hundred steps", () -> w.scene() != null && w.runner().steps() > 300);
+            GuiTestSupport.onEdt(() -> w.play(false));
+            long[] seen = {-1};
+            GuiTestSupport.waitFor("the runner to stop", () -> {
+                long n = w.runner().steps();
+                boolean still = n == seen[0];
+                seen[0] = n;
+                sleep(100);
+                return still;
+            });
+            steps = w.runner().steps();
+            x = w.scene().bodies().get(0).simulation().state().x.clone();
+        } finally {
+            GuiTestSupport.onEdt(w::close);
+        }
+        Simulation headless = CoupledBodies.simulations(CoupledBodies.merge(SceneLoader.load(BLOCK_ON_SLAB)), "rk2")
+                .get("slab+block");
+        for (long i = 0; i < steps; i++) {
+            headless.step(2e-4);
+        }
+        for (int k = 0; k < x.length; k++) {
+            assertEquals(headless.state().x[k], x[k], 0, "position value " + k + " after " + steps + " steps");
+        }
+        int last = x.length - 2; // the y of the block's last node
+        assertTrue(x[last] < headless.state().x0[last] - 1e-5, "the block sank: " + x[last] + " from "
+                + headless.state().x0[last]);
+    }
+
+    /** The diaphragm example, coarse, opens the diaphragm's view at the file's rk2 and its recommended step. */
+    @Test
+    @Tag("gui")
+    void runForOnTheDiaphragmFilePrintsItsLine() throws Exception {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display: run under Xvfb (./tensim test does)");
+        Map<String, Object> m = GuiCommandTest.scriptedSummary("gui", "docs/examples/diaphragm.yaml", "--set",
+                "bodies.diaphragm.rings=6", "--run-for", "2", "--unpaced");
+        assertEquals("diaphragm", m.get("scene"));
+        assertEquals("rk2", m.get("integrator"));
+        assertTrue(String.valueOf(m.get("window_title")).contains("Diaphragm"), m.toString());
+        assertTrue(((Number) m.get("steps")).longValue() > 0, "steps made: " + m);
+        assertEquals(null, m.get("diverged"));
+    }
+
+    private static void sleep(long ms) {
+        try {
+            Thread.sleep(ms);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static final Path BLOCK_ON_SLAB = Path.of("docs/examples/block-on-slab.yaml");
 
     /**
      * A scene file's window: one control per named parameter, labelled with its unit (a rebuild one says it

@@ -1,0 +1,92 @@
+package org.tensim.scene.tunable;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.tensim.scene.diaphragm.BoundaryConditions;
+import org.tensim.scene.diaphragm.DiaphragmParameters;
+import org.tensim.scene.diaphragm.DiaphragmScene;
+import org.tensim.scene.diaphragm.DiaphragmSetup;
+import org.tensim.scene.diaphragm.DiaphragmSpec;
+import org.tensim.scene.file.RunSettings;
+import org.tensim.scene.file.Scene;
+import org.tensim.solver.integrators.Integrators;
+import org.tensim.solver.prefactored.PrefactoredBdf2;
+
+/**
+ * A scene file whose body is a {@code type: diaphragm} ({@code DiaphragmBodyType}) in the GUI: the view scene
+ * {@code tensim gui --scene diaphragm} opens ({@link DiaphragmViewScene}), built from the spec the loader made of
+ * the body's keys (the {@code --set} options applied, as {@code tensim run} reads them), run with the file's
+ * integrator ({@link #integrator}) and step ({@code dt: auto}: the scene's recommended step). Its controls are the diaphragm's own (rib
+ * motion, muscle action, tissue constants, breathing period, the tendon's boundary), starting at the spec's values
+ * rather than the built-in scene's defaults; the file's {@code parameters:} set values when it is loaded
+ * ({@code --set NAME=VALUE}) but are not controls. The full model runs, as {@code tensim run} runs it: no mapped
+ * mechanics.
+ */
+final class DiaphragmSceneFile {
+    private DiaphragmSceneFile() {
+    }
+
+    /**
+     * Refuses a diaphragm file with extra {@code conditions}, {@code probes} or {@code regions}: the view rebuilds the
+     * diaphragm from its spec alone, so it would run without them, a different scene from the file's {@code tensim
+     * run} (nothing is dropped silently).
+     */
+    static void refuseExtras(java.nio.file.Path file, Scene loaded, org.tensim.scene.file.SceneBody body) {
+        boolean conditions;
+        try {
+            conditions = new com.fasterxml.jackson.dataformat.yaml.YAMLMapper().readTree(file.toFile())
+                    .has("conditions");
+        } catch (java.io.IOException e) {
+            conditions = false; // the loader has just read it: this cannot fail but for a race, and then run shows it
+        }
+        if (conditions || !loaded.probes().isEmpty() || !loaded.regions().isEmpty()) {
+            throw org.tensim.scene.file.SceneException.at(body.node(), "the GUI opens a diaphragm file from its body's"
+                    + " keys and does not apply its extra " + (conditions ? "conditions, " : "") + "probes or regions"
+                    + " yet: run it with tensim run " + file + ", or open a copy without them");
+        }
+    }
+
+    /** The factory of the loaded file's diaphragm ({@code built}, the body's scene). */
+    static DiaphragmViewFactory factory(Scene loaded, DiaphragmSetup.Built built) {
+        DiaphragmViewFactory f = DiaphragmViewScene.factory(built.scene().spec(), null);
+        f.openedFrom(loaded.run());
+        return f;
+    }
+
+    /**
+     * The file's integrator as {@code tensim run} configures it: a plain {@code bdf2} among bone surfaces with
+     * contact takes the thorax's converged iterations, which the GUI names {@link Integrators#CONTACT}.
+     */
+    static String integrator(RunSettings run, DiaphragmSpec spec) {
+        boolean contact = spec.cage().boneSurfaces() && spec.cage().contact();
+        return contact && run.integrator().equals(PrefactoredBdf2.NAME) ? Integrators.CONTACT : run.integrator();
+    }
+
+    /**
+     * The controls with their defaults at the scene's values (its breathing, its tissue constants, its tendon's area
+     * share), each range widened to hold its value when the spec's lies outside it (a 0.1 s period, say).
+     */
+    static List<TunableParameter> startingAt(List<TunableParameter> controls, DiaphragmScene scene,
+            BoundaryConditions.MuscleLoad load) {
+        DiaphragmSpec.Breathing b = scene.spec().breathing();
+        DiaphragmParameters p = scene.parameters();
+        Map<String, Double> at = Map.of(
+                DiaphragmViewScene.RIB_AMPLITUDE, b.ribAmplitude(),
+                DiaphragmViewScene.MUSCLE_ACTION, b.musclePa() != null ? b.musclePa()
+                        : DiaphragmSetup.defaultMusclePa(load),
+                DiaphragmViewScene.TISSUE_STIFFNESS, p.muscleYoungPa(),
+                DiaphragmViewScene.TISSUE_DAMPING, p.highDampingRatio(),
+                DiaphragmViewScene.SURROUNDING_DAMPING, p.viscousPerS(),
+                DiaphragmViewScene.BREATHING_PERIOD, b.periodS(),
+                DiaphragmViewScene.TENDON_SHARE, p.tendonAreaFraction());
+        List<TunableParameter> out = new ArrayList<>();
+        for (TunableParameter c : controls) {
+            Double v = at.get(c.key());
+            out.add(v == null || (c.logarithmic() && !(v > 0)) ? c : new TunableParameter(c.key(), c.label(),
+                    c.unit(), Math.min(c.min(), v), Math.max(c.max(), v), v, c.logarithmic(), c.description(),
+                    c.restarts()));
+        }
+        return List.copyOf(out);
+    }
+}
