@@ -10,6 +10,10 @@ import org.tensim.scene.diaphragm.DiaphragmSetup;
 import org.tensim.scene.diaphragm.DiaphragmSpec;
 import org.tensim.scene.file.RunSettings;
 import org.tensim.scene.file.Scene;
+import org.tensim.scene.file.SceneBody;
+import org.tensim.scene.file.SceneProbe;
+import org.tensim.scene.file.SceneRebuild;
+import org.tensim.scene.file.bodies.DiaphragmBodyType;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
@@ -20,38 +24,39 @@ import org.tensim.solver.prefactored.PrefactoredBdf2;
  * integrator ({@link #integrator}) and step ({@code dt: auto}: the scene's recommended step). Its controls are the diaphragm's own (rib
  * motion, muscle action, tissue constants, breathing period, the tendon's boundary), starting at the spec's values
  * rather than the built-in scene's defaults; the file's {@code parameters:} set values when it is loaded
- * ({@code --set NAME=VALUE}) but are not controls. The full model runs, as {@code tensim run} runs it: no mapped
- * mechanics.
+ * ({@code --set NAME=VALUE}) but are not controls. The file's regions, conditions and probes are applied to every
+ * diaphragm the view builds (the first, and each rebuild a restarting control makes), and the chart follows its
+ * first probe. The full model runs, as {@code tensim run} runs it: no mapped mechanics.
  */
 final class DiaphragmSceneFile {
     private DiaphragmSceneFile() {
     }
 
     /**
-     * Refuses a diaphragm file with extra {@code conditions}, {@code probes} or {@code regions}: the view rebuilds the
-     * diaphragm from its spec alone, so it would run without them, a different scene from the file's {@code tensim
-     * run} (nothing is dropped silently).
+     * The factory of the loaded file's diaphragm ({@code body}, whose scene {@code built} is): every diaphragm it
+     * builds takes the file's regions, conditions and probes anew ({@link SceneRebuild}).
      */
-    static void refuseExtras(java.nio.file.Path file, Scene loaded, org.tensim.scene.file.SceneBody body) {
-        boolean conditions;
-        try {
-            conditions = new com.fasterxml.jackson.dataformat.yaml.YAMLMapper().readTree(file.toFile())
-                    .has("conditions");
-        } catch (java.io.IOException e) {
-            conditions = false; // the loader has just read it: this cannot fail but for a race, and then run shows it
-        }
-        if (conditions || !loaded.probes().isEmpty() || !loaded.regions().isEmpty()) {
-            throw org.tensim.scene.file.SceneException.at(body.node(), "the GUI opens a diaphragm file from its body's"
-                    + " keys and does not apply its extra " + (conditions ? "conditions, " : "") + "probes or regions"
-                    + " yet: run it with tensim run " + file + ", or open a copy without them");
-        }
+    static DiaphragmViewFactory factory(Scene loaded, SceneBody body, DiaphragmSetup.Built built) {
+        DiaphragmViewFactory f = DiaphragmViewScene.factory(built.scene().spec(), null);
+        SceneRebuild rebuild = SceneRebuild.of(loaded);
+        f.openedFrom(loaded.run(), !rebuild.hasExtras() ? null
+                : b -> rebuild.apply(DiaphragmBodyType.body(body.name(), body.node(), b)));
+        return f;
     }
 
-    /** The factory of the loaded file's diaphragm ({@code built}, the body's scene). */
-    static DiaphragmViewFactory factory(Scene loaded, DiaphragmSetup.Built built) {
-        DiaphragmViewFactory f = DiaphragmViewScene.factory(built.scene().spec(), null);
-        f.openedFrom(loaded.run());
-        return f;
+    /**
+     * The bodies with the chart on the file's first probe (its first node: the node a node probe names, the first
+     * of a region's), as the chart of any other scene file; unchanged without probes.
+     */
+    static List<Body> charting(List<Body> bodies, List<SceneProbe> probes) {
+        if (probes.isEmpty() || probes.get(0).nodes().length == 0) {
+            return bodies;
+        }
+        Body d = bodies.get(0);
+        List<Body> out = new ArrayList<>(bodies);
+        out.set(0, new Body(d.name().replace("apex", "probe " + probes.get(0).name()), d.simulation(), d.triangles(),
+                d.vertexColours(), d.offset(), probes.get(0).nodes()[0], d.visibleNodes(), d.structureEdges()));
+        return List.copyOf(out);
     }
 
     /**

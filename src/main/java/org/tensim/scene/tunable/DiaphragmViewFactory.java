@@ -105,9 +105,18 @@ public final class DiaphragmViewFactory implements SceneFactory {
     /** The run of the scene file its spec comes from ({@link DiaphragmSceneFile}), or null. */
     private volatile org.tensim.scene.file.RunSettings fileRun;
 
-    /** From now on its scenes run as the scene file's run says, their controls starting at their values. */
-    void openedFrom(org.tensim.scene.file.RunSettings run) {
+    /** What the scene file applies to each diaphragm built (its regions, conditions), giving its probes; or null. */
+    private volatile java.util.function.Function<DiaphragmSetup.Built, List<org.tensim.scene.file.SceneProbe>> extras;
+
+    /**
+     * From now on its scenes run as the scene file's run says, their controls starting at their values, and each
+     * diaphragm built takes the file's regions and conditions ({@code extras}, null for none) before it runs: the
+     * scene {@code tensim run} runs. With them the scenes run unmapped.
+     */
+    void openedFrom(org.tensim.scene.file.RunSettings run,
+            java.util.function.Function<DiaphragmSetup.Built, List<org.tensim.scene.file.SceneProbe>> extras) {
         fileRun = run;
+        this.extras = extras;
     }
 
     DiaphragmViewFactory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
@@ -197,7 +206,10 @@ public final class DiaphragmViewFactory implements SceneFactory {
             }
             DiaphragmSpec fineSpec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
             DiaphragmControls controls = fineSpec.newControls();
-            DiaphragmScene s = DiaphragmSetup.build(in, fineSpec, controls).scene();
+            DiaphragmSetup.Built fine = DiaphragmSetup.build(in, fineSpec, controls);
+            DiaphragmScene s = fine.scene();
+            var fileExtras = extras;
+            List<org.tensim.scene.file.SceneProbe> probes = fileExtras == null ? List.of() : fileExtras.apply(fine);
             DiaphragmOrgans o = organs;
             if (o != null) {
                 DiaphragmOrgans.Built built = o.install(s);
@@ -205,9 +217,9 @@ public final class DiaphragmViewFactory implements SceneFactory {
                         built), built);
             }
             Mechanics m = mechanics;
-            if (m == null || fullModel || painting != null) {
+            if (m == null || fullModel || painting != null || fileExtras != null) {
                 DiaphragmViewScene v = new DiaphragmViewScene(s, tensegrityTendon, b.muscleLoad());
-                return fileRun == null ? v : v.asFile(fileRun);
+                return fileRun == null ? v : v.asFile(fileRun, probes);
             }
             DiaphragmSpec coarse = spec.withMesh(spec.mesh().withFile(null, spec.mesh().units()).withRings(m.rings()));
             DiaphragmSetup.Inputs cin = coarseInputs(coarse);

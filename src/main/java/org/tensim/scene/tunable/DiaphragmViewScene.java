@@ -138,7 +138,7 @@ public final class DiaphragmViewScene implements ViewScene {
     private List<TunableParameter> parameters;
     private org.tensim.scene.file.RunSettings fileRun; // the scene file's run when opened from one, else null
     private final Simulation sim;
-    private final List<Body> bodies;
+    private List<Body> bodies;
     /** The scene whose constants the simulation runs with: the built one, or its latest rebuild. */
     private volatile DiaphragmScene scene;
     /** The scene with every change prepared so far, handed over or not (the preparing thread's). */
@@ -304,10 +304,12 @@ public final class DiaphragmViewScene implements ViewScene {
         return parameters;
     }
 
-    /** As a scene file opens it ({@link DiaphragmSceneFile}): its run's integrator and step, controls at its values. */
-    DiaphragmViewScene asFile(org.tensim.scene.file.RunSettings run) {
+    /** As a scene file opens it ({@link DiaphragmSceneFile}): its run's integrator and step, controls at its values,
+     * the chart on its first probe. */
+    DiaphragmViewScene asFile(org.tensim.scene.file.RunSettings run, List<org.tensim.scene.file.SceneProbe> probes) {
         fileRun = run;
         parameters = DiaphragmSceneFile.startingAt(parameters, scene, load);
+        bodies = DiaphragmSceneFile.charting(bodies, probes);
         return this;
     }
 

@@ -176,8 +176,7 @@ public final class FileViewScene implements ViewScene {
         org.tensim.scene.file.Scene loaded = SceneLoader.load(file, sets);
         for (SceneBody b : loaded.bodies().values()) {
             if (b.built() instanceof org.tensim.scene.diaphragm.DiaphragmSetup.Built d) {
-                DiaphragmSceneFile.refuseExtras(file, loaded, b);
-                return DiaphragmSceneFile.factory(loaded, d); // the diaphragm's own view scene and controls
+                return DiaphragmSceneFile.factory(loaded, b, d); // the diaphragm's own view scene and controls
             }
         }
         FileViewScene checked = new FileViewScene(file, sets, loaded);

@@ -8,7 +8,7 @@ import org.tensim.model.Topology.NodalForce;
 /**
  * The mass-spring variant of a tensegrity topology, for comparing the two models
  * of the same tissue: a copy in which every rigid link becomes a spring of the
- * same rest length. Nodes (positions, masses, fixed or driven), springs, forces,
+ * same rest length. Nodes (positions, masses, fixed, held on some axes or driven), springs, forces,
  * gravity and viscous damping are copied as they are; motions and force laws are
  * shared with the original (they are read-only functions of time and controls).
  *
@@ -30,6 +30,8 @@ public final class RigidLinksAsSprings {
                 m.fix();
             } else if (n.isDriven()) {
                 m.drive(n.motion());
+            } else if (n.heldAxes() != 0) {
+                m.hold(n.heldAxes());
             }
         }
         int nodes = t.nodeCount();

@@ -2,6 +2,7 @@ package org.tensim.scene.tunable;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -60,19 +61,74 @@ class FileViewSceneDiaphragmTest {
         assertEquals("bdf2", view.defaultIntegrator());
     }
 
-    /** The view builds the diaphragm from its spec alone: a file's extra blocks are refused rather than dropped. */
+    /**
+     * A diaphragm file's regions, conditions and probes reach the view as {@code tensim run} applies them: the
+     * fixed tendon's nodes are fixed in the view's scene (in both tendon models), the force is on the same nodes,
+     * the chart follows the first probe, and a rebuild with a larger tendon share fixes the larger tendon. Stepped,
+     * the fixed nodes stay where they are while the dome moves.
+     */
     @Test
-    void aDiaphragmFileWithExtraConditionsOrProbesIsRefusedNamingTensimRun(@org.junit.jupiter.api.io.TempDir Path dir)
+    void aDiaphragmFilesRegionsConditionsAndProbesRunInTheView(@org.junit.jupiter.api.io.TempDir Path dir)
             throws Exception {
-        String[] extras = {"conditions:\n  - {type: gravity, acceleration: [0, 0, -9.81]}\n",
-            "regions:\n  tendon: {body: d, part: tendon}\nprobes:\n  t: {region: tendon, quantity: mean}\n"};
-        for (String extra : extras) {
-            Path file = java.nio.file.Files.writeString(dir.resolve("d.yaml"),
-                    "version: 1\nbodies:\n  d: {type: diaphragm, rings: 6}\n" + extra + "run: {dt: auto, duration: 0.1 s}\n");
-            var e = org.junit.jupiter.api.Assertions.assertThrows(org.tensim.scene.file.SceneException.class,
-                    () -> FileViewScene.factory(file, List.of()));
-            org.junit.jupiter.api.Assertions.assertTrue(e.getMessage().contains("tensim run " + file)
-                    && e.getMessage().contains("d.yaml"), e.getMessage());
+        Path file = java.nio.file.Files.writeString(dir.resolve("d.yaml"), """
+                version: 1
+                bodies:
+                  d: {type: diaphragm, rings: 6, period: 100 ms}
+                regions:
+                  tendon: {body: d, part: tendon}
+                  lower: {body: d, part: lower}
+                conditions:
+                  - {type: fixed, region: tendon}
+                  - {type: force, region: lower, direction: [0, 0, -1], total: 2 N}
+                probes:
+                  l: {region: lower, quantity: mean}
+                run: {dt: auto, duration: 0.05 s}
+                """);
+        org.tensim.scene.file.Scene loaded = SceneLoader.load(file);
+        org.tensim.model.Topology run = loaded.bodies().get("d").topology();
+        java.util.BitSet tendon = loaded.regions().get("tendon").in("d");
+        assertTrue(tendon.cardinality() > 0, "the tendon region selects nodes");
+        SceneFactory f = FileViewScene.factory(file, List.of());
+        for (boolean tensegrity : new boolean[] {true, false}) {
+            DiaphragmViewScene view = assertInstanceOf(DiaphragmViewScene.class, f.create(tensegrity));
+            org.tensim.model.Topology shown = view.scene().topology();
+            assertEquals(run.nodeCount(), shown.nodeCount());
+            for (int i = 0; i < run.nodeCount(); i++) {
+                assertEquals(run.node(i).isFixed(), shown.node(i).isFixed(), "node " + i + " fixed as in tensim run");
+            }
+            assertEquals(run.forces().size(), shown.forces().size(), "the force on the lower surface's nodes");
+            Body body = view.bodies().get(0);
+            assertEquals(loaded.probes().get(0).nodes()[0], body.probeNode(), "the chart on the file's first probe");
+            double[] x0 = body.simulation().state().x.clone();
+            for (int k = 0; k < 20; k++) {
+                body.simulation().step(view.defaultTimeStep());
+            }
+            double[] x = body.simulation().state().x;
+            double fixedMoved = 0;
+            double freeMoved = 0;
+            for (int i = 0; i < view.scene().diaphragmNodes(); i++) {
+                double d = Math.abs(x[3 * i + 2] - x0[3 * i + 2]);
+                if (tendon.get(i)) {
+                    fixedMoved = Math.max(fixedMoved, d);
+                } else {
+                    freeMoved = Math.max(freeMoved, d);
+                }
+            }
+            assertEquals(0, fixedMoved, 0, "the fixed tendon does not move (tensegrity " + tensegrity + ")");
+            assertTrue(freeMoved > 1e-5, "the rest of the dome moves: " + freeMoved + " m");
         }
+        // A restarting control rebuilds the diaphragm; the file's regions are resolved on the rebuilt one.
+        java.util.BitSet larger = SceneLoader.load(file, List.of("bodies.d.tendon_fraction=0.25")).regions()
+                .get("tendon").in("d");
+        assertTrue(larger.cardinality() > tendon.cardinality(), "a larger share, a larger tendon");
+        DiaphragmViewScene rebuilt = (DiaphragmViewScene) f.create(true,
+                Map.of(DiaphragmViewScene.TENDON_SHARE, 0.25));
+        java.util.BitSet fixed = new java.util.BitSet();
+        for (int i = 0; i < rebuilt.scene().diaphragmNodes(); i++) {
+            fixed.set(i, rebuilt.scene().topology().node(i).isFixed());
+        }
+        java.util.BitSet fixedTendon = (java.util.BitSet) fixed.clone();
+        fixedTendon.and(larger);
+        assertEquals(larger, fixedTendon, "the rebuilt scene fixes the larger tendon's every node");
     }
 }

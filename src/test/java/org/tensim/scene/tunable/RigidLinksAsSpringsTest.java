@@ -17,7 +17,15 @@ class RigidLinksAsSpringsTest {
         Topology t = CubeScene.tensegrity(CubeParameters.paper()).topology;
         t.setViscousDamping(0.5);
         t.setGravity(new Vec3(0, -1, 0));
+        int held = -1;
+        for (int i = 0; i < t.nodeCount() && held < 0; i++) {
+            if (!t.node(i).isFixed() && !t.node(i).isDriven()) {
+                held = i;
+            }
+        }
+        t.node(held).hold(5); // x and z, as a scene file's {type: fixed, axes: [x, z]}
         Topology c = RigidLinksAsSprings.of(t);
+        assertEquals(5, c.node(held).heldAxes(), "a node held on some axes stays held on them");
         assertEquals(t.nodeCount(), c.nodeCount());
         assertEquals(0, c.rigidLinks().size());
         assertEquals(t.springs().size() + t.rigidLinks().size(), c.springs().size());
@@ -30,6 +38,7 @@ class RigidLinksAsSpringsTest {
         }
         for (int i = 0; i < t.nodeCount(); i++) {
             assertEquals(t.node(i).isFixed(), c.node(i).isFixed());
+            assertEquals(t.node(i).heldAxes(), c.node(i).heldAxes());
             assertEquals(t.node(i).position(), c.node(i).position());
         }
         assertSame(t.forces().get(0).law(), c.forces().get(0).law());

@@ -48,9 +48,12 @@ public final class DiaphragmBodyType implements BodyType {
     private static final Unit<?> MM = MetricPrefix.MILLI(Units.METRE);
     private static final Unit<?> PA = Units.PASCAL;
 
+    /** The type's name in a scene file. */
+    public static final String NAME = "diaphragm";
+
     @Override
     public String name() {
-        return "diaphragm";
+        return NAME;
     }
 
     @Override
@@ -110,6 +113,16 @@ public final class DiaphragmBodyType implements BodyType {
         }
         ctx.report(built.source());
         return null;
+    }
+
+    /**
+     * The body a diaphragm rebuilt from its spec makes (the GUI's rebuilds), as {@link #build} makes it from a
+     * file: its scene's topology, its closed shell, {@code built} as what it built; {@code node} is the body's
+     * place in the file, for messages.
+     */
+    public static org.tensim.scene.file.SceneBody body(String name, SceneNode node, DiaphragmSetup.Built built) {
+        return new org.tensim.scene.file.SceneBody(name, NAME, built.scene().topology(), null, node, surface(built),
+                List.of(), built);
     }
 
     /**
