@@ -1,12 +1,16 @@
 package org.tensim.scene.diaphragm;
 
+import java.util.BitSet;
 import java.util.List;
 import org.tensim.model.Node;
 import org.tensim.model.Vec3;
+import org.tensim.scene.conditions.BandAttachment;
 
 /**
  * The diaphragm's origins as a band with a stiffness per unit area
- * ({@link BoundaryConditions.Attachment#BAND}; package-private, called by the scene builder).
+ * ({@link BoundaryConditions.Attachment#BAND}; package-private, called by the scene builder): the generic
+ * {@link BandAttachment} with the cage's segments as its targets, and the diaphragm's own two rules, the origins
+ * among the segments ({@link #origins}) and the crura where no node lies near the spine segment.
  *
  * <p>Each diaphragm node i within the attachment threshold W of the cage (distance d_i to its
  * nearest segment) is tied with
@@ -41,35 +45,20 @@ final class AttachmentBand {
                     + " attachment threshold (" + w * 1e3 + " mm)");
         }
         List<RibCage.Segment> segs = bc.costalOriginsOnly() ? origins(b.cage.segments()) : b.cage.segments();
+        List<BandAttachment.Target> targets = new java.util.ArrayList<>();
+        for (RibCage.Segment s : segs) {
+            targets.add(new BandAttachment.Target(s.name(), q -> RibCage.distance(b.t, s, q),
+                    (t, v, k) -> tie(b, v, s, k)));
+        }
+        BitSet diaphragm = new BitSet();
+        diaphragm.set(0, b.nv);
+        BandAttachment.Weights wts = BandAttachment.weigh(b.t, diaphragm, targets, w, taper);
+        double[] weight = wts.weight();
+        int[] nearest = wts.nearest();
+        b.originDistance = java.util.Arrays.copyOf(wts.distance(), b.nv);
         boolean spineFound = false;
-        double[] weight = new double[b.nv];
-        RibCage.Segment[] nearest = new RibCage.Segment[b.nv];
-        double[][] share = new double[b.nv][];
-        b.originDistance = new double[b.nv];
         for (int v = 0; v < b.nv; v++) {
-            Vec3 q = b.t.node(v).position();
-            double bestD = Double.POSITIVE_INFINITY;
-            double[] own = new double[segs.size()];
-            double sum = 0;
-            for (int i = 0; i < segs.size(); i++) {
-                RibCage.Segment s = segs.get(i);
-                double d = RibCage.distance(b.t, s, q);
-                own[i] = taper(d, w, taper);
-                sum += own[i];
-                if (d < bestD) {
-                    bestD = d;
-                    nearest[v] = s;
-                }
-            }
-            weight[v] = taper(bestD, w, taper);
-            b.originDistance[v] = bestD;
-            if (sum > 0) {
-                for (int i = 0; i < own.length; i++) {
-                    own[i] /= sum;
-                }
-                share[v] = own;
-            }
-            spineFound |= weight[v] > 0 && nearest[v].kind() == RibCage.Kind.SPINE;
+            spineFound |= weight[v] > 0 && segs.get(nearest[v]).kind() == RibCage.Kind.SPINE;
         }
         if (!spineFound) {
             crura(b, weight, nearest, w, taper);
@@ -81,7 +70,7 @@ final class AttachmentBand {
             }
             b.attached[v] = true;
             double k = bc.bandStiffnessPaPerM() * b.area[v] / 2 * weight[v];
-            RibCage.Segment s = nearest[v];
+            RibCage.Segment s = nearest[v] < 0 ? null : segs.get(nearest[v]);
             if (s == null || s.kind() == RibCage.Kind.SPINE) {
                 b.attachedSpine++;
             } else if (s.kind() == RibCage.Kind.RIB) {
@@ -93,12 +82,7 @@ final class AttachmentBand {
                 b.tie(v, b.t.addNode(b.t.node(v).position(), b.t.node(v).mass()).fix().id(), k);
                 continue;
             }
-            double[] sh = share[v];
-            for (int i = 0; i < sh.length; i++) {
-                if (sh[i] > 0) {
-                    tie(b, v, segs.get(i), k * sh[i]);
-                }
-            }
+            BandAttachment.tie(b.t, wts, v, k, targets);
         }
     }
 
@@ -125,8 +109,7 @@ final class AttachmentBand {
      * forward than the segment placed from the rib boxes), the crura are the diaphragm's lowest
      * insertion: the nodes within the threshold above the mesh's lowest point, tapered the same way.
      */
-    private static void crura(DiaphragmSceneBuilder b, double[] weight, RibCage.Segment[] nearest, double w,
-            double taper) {
+    private static void crura(DiaphragmSceneBuilder b, double[] weight, int[] nearest, double w, double taper) {
         double low = Double.POSITIVE_INFINITY;
         for (int v = 0; v < b.nv; v++) {
             low = Math.min(low, b.mesh.coord(v, 2));
@@ -135,7 +118,7 @@ final class AttachmentBand {
             double c = taper(b.mesh.coord(v, 2) - low, w, taper);
             if (c > weight[v]) {
                 weight[v] = c;
-                nearest[v] = null;
+                nearest[v] = -1;
             }
         }
     }
@@ -182,14 +165,7 @@ final class AttachmentBand {
 
     /** 1 inside the band, falling as cos^2 over the last {@code taper} metres to 0 at {@code w}. */
     static double taper(double d, double w, double taper) {
-        if (d >= w) {
-            return 0;
-        }
-        if (d <= w - taper) {
-            return 1;
-        }
-        double c = Math.cos(0.5 * Math.PI * (d - (w - taper)) / taper);
-        return c * c;
+        return BandAttachment.taper(d, w, taper);
     }
 
     /** Parameter in [0, 1] of the point of segment s nearest to q. */

@@ -25,7 +25,9 @@ import org.tensim.scene.conditions.DistanceAttachment;
  * point x0 whatever the body does (the diaphragm's spine); {@code tie} ({@code stiffness} N/m, required,
  * {@code damping} N s/m, 0): a zero-length spring pulls it towards a(t), the point the body carries from its rest
  * point, through an anchor node driven along a(t) ({@link DistanceAttachment#anchored}; one anchor node a tied
- * node, added to the body's topology).</li>
+ * node, added to the body's topology); {@code band} ({@code stiffness} Pa/m, required, {@code taper} length, 0):
+ * the same springs, each of stiffness {@code k_b A_i taper(d_i)} by the node's share A_i of the body's surface area,
+ * so that the total converges with the mesh ({@link AttachmentBands}, the diaphragm's default attachment).</li>
  * <li>{@code sliding} ({@code stiffness}, {@code hard}): the region kept on the rigid surface, frictionless, neither
  * penetrating nor separating: each free node keeps its rest distance d0 from both sides, by one contact pair on the
  * solid (gap d0) and one on its complement (gap -d0), a bilateral normal spring {@code k (d0 - d) n} that leaves the
@@ -36,11 +38,11 @@ final class RigidConditions {
     /** The condition types of this class. */
     static final List<String> TYPES = List.of("contact", "attachment", "sliding");
     /** The attachment's modes: what attaching a node does. */
-    static final List<String> MODES = List.of("drive", "fix", "tie");
+    static final List<String> MODES = List.of("drive", "fix", "tie", "band");
     /** The keys of each. */
     static final Map<String, List<String>> KEYS = Map.of(
             "contact", List.of("type", "region", "with", "stiffness", "gap", "hard"),
-            "attachment", List.of("type", "region", "with", "threshold", "mode", "stiffness", "damping"),
+            "attachment", List.of("type", "region", "with", "threshold", "mode", "stiffness", "damping", "taper"),
             "sliding", List.of("type", "region", "with", "stiffness", "hard"));
 
     private RigidConditions() {
@@ -113,11 +115,15 @@ final class RigidConditions {
         String mode = r.choice("mode", MODES, "drive");
         if (!mode.equals("tie")) {
             for (String key : List.of("stiffness", "damping")) {
-                if (r.has(key)) {
+                if (r.has(key) && !(mode.equals("band") && key.equals("stiffness"))) {
                     throw SceneException.at(r.node().get(key), key + " goes with mode: tie (a spring to the rigid"
                             + " body); mode " + mode + " has none");
                 }
             }
+        }
+        if (r.has("taper")) {
+            throw SceneException.at(r.node().get("taper"), "taper goes with mode: band (ties fading to 0 at the"
+                    + " threshold); mode " + mode + " has none");
         }
         return switch (mode) {
             case "fix" -> DistanceAttachment.fix();
@@ -129,13 +135,35 @@ final class RigidConditions {
 
     private static void attach(MapReader r, RigidBody rigid, SceneBody b, BitSet nodes, SceneUnits u) {
         double threshold = r.positive("threshold", QuantityKind.LENGTH, u, Double.NaN);
+        Motion follow = follow(rigid);
+        if (r.choice("mode", MODES, "drive").equals("band")) {
+            AttachmentBands.attach(r, rigid, b, nodes, u, follow, threshold);
+            return;
+        }
+        DistanceAttachment.Result done = DistanceAttachment.attach(b.topology(), nodes, List.of(
+                new DistanceAttachment.Target(rigid.name(), q -> rigid.restDistance(q.x(), q.y(), q.z()),
+                        hold(r, follow, u))), threshold);
+        int attached = done.attached();
+        double nearest = done.nearest();
+        if (attached == 0) {
+            throw SceneException.at(r.node().get("threshold"), String.format(java.util.Locale.ROOT, "no node of the"
+                    + " region on body '%s' lies within %.6g m of rigid body '%s' (the nearest is %.6g m from it):"
+                    + " widen the threshold or the region", b.name(), threshold, rigid.name(), nearest));
+        }
+    }
+
+    /**
+     * The rigid body's motion of a point by its rest position: {@code a(t) = R(t) R(0)^T (x0 - c(0)) + c(t)}, the
+     * point of the body that lies at x0 at rest.
+     */
+    static Motion follow(RigidBody rigid) {
         double[] r0 = new double[9];
         double[] c0 = new double[3];
         rigid.motion().pose(0, r0, 0, c0, 0);
         // Per attachment, one scratch pose: the nodes of a body are driven one after the other on its thread.
         double[] rt = new double[9];
         double[] ct = new double[3];
-        Motion follow = (time, rest, out, o) -> {
+        return (time, rest, out, o) -> {
             double dx = rest.x() - c0[0];
             double dy = rest.y() - c0[1];
             double dz = rest.z() - c0[2];
@@ -147,15 +175,5 @@ final class RigidConditions {
             out[o + 1] = rt[3] * yx + rt[4] * yy + rt[5] * yz + ct[1];
             out[o + 2] = rt[6] * yx + rt[7] * yy + rt[8] * yz + ct[2];
         };
-        DistanceAttachment.Result done = DistanceAttachment.attach(b.topology(), nodes, List.of(
-                new DistanceAttachment.Target(rigid.name(), q -> rigid.restDistance(q.x(), q.y(), q.z()),
-                        hold(r, follow, u))), threshold);
-        int attached = done.attached();
-        double nearest = done.nearest();
-        if (attached == 0) {
-            throw SceneException.at(r.node().get("threshold"), String.format(java.util.Locale.ROOT, "no node of the"
-                    + " region on body '%s' lies within %.6g m of rigid body '%s' (the nearest is %.6g m from it):"
-                    + " widen the threshold or the region", b.name(), threshold, rigid.name(), nearest));
-        }
     }
 }

@@ -76,6 +76,29 @@ public final class SurfaceFaces {
     }
 
     /**
+     * Each node's share of the surface's area, m^2: a third of each face's area to each of its corner vertices, and
+     * each vertex's share to the nodes carrying it by their weights (the mapping's transpose, as a pressure's
+     * forces); the shares sum to the surface's area. A node that carries no surface vertex has none.
+     */
+    public static double[] nodeAreas(EmbeddedSurface s) {
+        TriangleMesh m = s.mesh();
+        double[] vertex = new double[3 * m.vertexCount()];
+        for (int t = 0; t < m.triangleCount(); t++) {
+            double a = m.area(t) / 3;
+            for (int c = 0; c < 3; c++) {
+                vertex[3 * m.corner(t, c)] += a;
+            }
+        }
+        double[] node = new double[3 * s.mapping().nodeCount()];
+        s.mapping().addTranspose(vertex, node);
+        double[] out = new double[s.mapping().nodeCount()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = node[3 * i];
+        }
+        return out;
+    }
+
+    /**
      * The nodal forces of a unit pressure (1 Pa) on some faces: {@code 3 * nodeCount} values, N per Pa.
      */
     public static double[] unitPressureForces(EmbeddedSurface s, BitSet faces) {

@@ -131,7 +131,7 @@ class AttachmentModesTest {
     @Test
     void anUnknownModeIsRefusedWithTheModes() {
         SceneException e = assertThrows(SceneException.class, () -> block("mode: tied"));
-        assertTrue(e.getMessage().contains("\"tied\" is not one of drive, fix, tie; did you mean 'tie'?"),
+        assertTrue(e.getMessage().contains("\"tied\" is not one of drive, fix, tie, band; did you mean 'tie'?"),
                 e.getMessage());
         e = assertThrows(SceneException.class, () -> block("mode: tie"));
         assertTrue(e.getMessage().contains("conditions[1].stiffness: missing: the key is required"), e.getMessage());

@@ -156,7 +156,7 @@ class MalformedScenesTest {
             {"diaphragm-beside-rigid.yaml", "diaphragm-beside-rigid.yaml:3:3: bodies",
                 "a diaphragm body brings its own supports, bones and loads and is a file's only body; got [d, liver]"},
             {"attachment-bad-mode.yaml", "attachment-bad-mode.yaml:8:75: conditions[0].mode",
-                "\"tied\" is not one of drive, fix, tie; did you mean 'tie'?"},
+                "\"tied\" is not one of drive, fix, tie, band; did you mean 'tie'?"},
             {"attachment-stiffness-without-tie.yaml", "attachment-stiffness-without-tie.yaml:8:80:"
                 + " conditions[0].stiffness", "stiffness goes with mode: tie (a spring to the rigid body); mode drive"
                 + " has none"},
