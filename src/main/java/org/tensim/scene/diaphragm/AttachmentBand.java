@@ -115,7 +115,7 @@ final class AttachmentBand {
             low = Math.min(low, b.mesh.coord(v, 2));
         }
         for (int v = 0; v < b.nv; v++) {
-            double c = taper(b.mesh.coord(v, 2) - low, w, taper);
+            double c = BandAttachment.taper(b.mesh.coord(v, 2) - low, w, taper);
             if (c > weight[v]) {
                 weight[v] = c;
                 nearest[v] = -1;
@@ -161,11 +161,6 @@ final class AttachmentBand {
             throw new IllegalStateException("cage segment '" + name + "' has no rib number");
         }
         return Integer.parseInt(name.substring(i));
-    }
-
-    /** 1 inside the band, falling as cos^2 over the last {@code taper} metres to 0 at {@code w}. */
-    static double taper(double d, double w, double taper) {
-        return BandAttachment.taper(d, w, taper);
     }
 
     /** Parameter in [0, 1] of the point of segment s nearest to q. */

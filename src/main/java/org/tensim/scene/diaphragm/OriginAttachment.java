@@ -8,6 +8,7 @@ import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.Node;
 import org.tensim.model.RigidMotion;
 import org.tensim.model.SignedDistance;
+import org.tensim.scene.conditions.BandAttachment;
 
 /**
  * The paper's attachment rule on bone surfaces, at the diaphragm's origins only (package-private,
@@ -25,7 +26,8 @@ import org.tensim.model.SignedDistance;
  * the rule: its origin labels, widened by the same width along the surface (geodesic distance over the
  * mesh's edges), are attached.
  *
- * <p>Each attached node is tied, as by the attachment band, with {@code k_b A_i / 2} (Pa/m times its
+ * <p>Each attached node is tied, as by the attachment band ({@link BandAttachment}: its taper, its zero-length
+ * ties to carried anchors), with {@code k_b A_i / 2} (Pa/m times its
  * share of its face's area) to an anchor at its rest point carried by its nearest origin bone's motion
  * (a rib's helical axis, the sternum's, fixed for a vertebra).
  */
@@ -92,7 +94,7 @@ final class OriginAttachment {
                 // The crura's region is left to their own rule below: it hangs below the costal margin.
                 height[v] = crural[v] || Double.isInfinite(height[v]) ? Double.POSITIVE_INFINITY
                         : m.coord(v, 2) - height[v];
-                boneFactor[v] = AttachmentBand.taper(distance[v], w, Math.min(TAPER_M, w));
+                boneFactor[v] = BandAttachment.taper(distance[v], w, Math.min(TAPER_M, w));
             } else {
                 boneFactor[v] = 1;
             }
@@ -102,7 +104,7 @@ final class OriginAttachment {
         double[] crus = new double[b.nv];
         for (int v = 0; v < b.nv && seeds == null; v++) {
             if (nearestBone[v] >= 0 && bones.all().get(nearestBone[v]).kind() == Bones.Kind.VERTEBRA) {
-                crus[v] = AttachmentBand.taper(distance[v], CRUS_DISTANCE_M, TAPER_M / 2);
+                crus[v] = BandAttachment.taper(distance[v], CRUS_DISTANCE_M, TAPER_M / 2);
             }
         }
         double[] weightedArea = consistentArea(m, height, boneFactor, crus);
@@ -173,7 +175,7 @@ final class OriginAttachment {
                         double l2 = up == 0 ? (j + 1.0 / 3) / n : (j + 2.0 / 3) / n;
                         double l0 = 1 - l1 - l2;
                         double h = l0 * height[a] + l1 * height[b] + l2 * height[c];
-                        double wq = Math.max(AttachmentBand.taper(h, INSERTION_WIDTH_M, TAPER_M)
+                        double wq = Math.max(BandAttachment.taper(h, INSERTION_WIDTH_M, TAPER_M)
                                 * (l0 * boneFactor[a] + l1 * boneFactor[b] + l2 * boneFactor[c]),
                                 l0 * crus[a] + l1 * crus[b] + l2 * crus[c]);
                         out[a] += wq * l0 * sub;
