@@ -117,6 +117,28 @@ class DiaphragmSceneFileTest {
         assertEquals(DEFAULT.toString(), Json.readMap(b.resolve("summary.json")).get("scene"));
     }
 
+    /** {@code check} of a {@code dt: auto} diaphragm file prints the step and step count {@code run} takes. */
+    @Test
+    void checkPrintsTheStepRunTakesForDtAuto() throws Exception {
+        Path out = dir.resolve("run");
+        List<String> sets = List.of("--set", "bodies.diaphragm.rings=6", "--set", "bodies.diaphragm.period=100 ms",
+                "--set", "run.duration=0.01 s");
+        List<String> runArgs = new ArrayList<>(List.of("run", DEFAULT.toString(), "--out", out.toString()));
+        runArgs.addAll(sets);
+        String[] r = run(runArgs.toArray(String[]::new));
+        List<String> checkArgs = new ArrayList<>(List.of("check", DEFAULT.toString()));
+        checkArgs.addAll(sets);
+        String[] c = run(checkArgs.toArray(String[]::new));
+        assertEquals("0", c[0], c[2]);
+        Map<String, Object> s = Json.readMap(out.resolve("summary.json"));
+        double dt = ((Number) s.get("dt_s")).doubleValue();
+        long steps = ((Number) s.get("steps")).longValue();
+        String line = c[1].lines().filter(l -> l.startsWith("run: ")).findFirst().orElseThrow();
+        assertTrue(line.contains(String.format(java.util.Locale.ROOT, "dt auto: %.6g s", dt))
+                && line.contains("(" + steps + " steps)"), line + " against run's dt " + dt + " s, " + steps
+                + " steps (" + r[0] + ")");
+    }
+
     /**
      * The thorax file for two bdf2 steps of 2.5 ms, against the command's --thorax run: minutes on two cores (the
      * full BodyParts3D mesh among the thorax's bones), so tagged slow, out of the default run.

@@ -42,6 +42,14 @@ public interface BodyType {
     }
 
     /**
+     * The step {@code dt: auto} gives a {@link #standalone()} body under an integrator, s, and the rule that chose
+     * it (for {@code tensim check}); null when the type does not choose one.
+     */
+    default org.tensim.solver.stability.TimeStep autoStep(SceneBody body, String integratorName) {
+        return null;
+    }
+
+    /**
      * Why a condition of {@code type} (one of {@link SceneConditions#TYPES}) cannot act on a body of this type, or
      * null when it can (every type, by default). The loader refuses such a condition naming its {@code type} key
      * and this reason.

@@ -71,9 +71,19 @@ public final class SceneCheck {
         for (SceneExpectation e : s.expect()) {
             out.add("expect " + e.label() + " " + e.range());
         }
-        out.add(String.format(Locale.ROOT, "run: %s, dt %s s, %s s (%d steps), CSV %s every %d step(s)",
-                s.run().integrator(), s.run().dtS(), s.run().durationS(), s.run().steps(), s.run().csv(),
-                s.run().every()));
+        RunSettings run = s.run();
+        org.tensim.solver.stability.TimeStep auto = null;
+        for (SceneBody b : run.autoStep() ? s.bodies().values() : List.<SceneBody>of()) {
+            auto = BodyTypes.get(b.type()).autoStep(b, run.integrator());
+        }
+        if (auto != null) {
+            out.add(String.format(Locale.ROOT, "run: %s, dt auto: %.6g s (%s), %s s (%d steps), CSV %s every %d"
+                    + " step(s)", run.integrator(), auto.seconds(), auto.reason(), run.durationS(),
+                    Math.round(run.durationS() / auto.seconds()), run.csv(), run.every()));
+        } else {
+            out.add(String.format(Locale.ROOT, "run: %s, dt %s s, %s s (%d steps), CSV %s every %d step(s)",
+                    run.integrator(), run.dtS(), run.durationS(), run.steps(), run.csv(), run.every()));
+        }
         return out;
     }
 

@@ -70,6 +70,13 @@ public final class DiaphragmBodyType implements BodyType {
         return true;
     }
 
+    /** The time-step policy's step for the integrator on the built scene, as {@code tensim run} takes it. */
+    @Override
+    public org.tensim.solver.stability.TimeStep autoStep(org.tensim.scene.file.SceneBody body, String integrator) {
+        return ((DiaphragmSetup.Built) body.built()).scene().timeStep(
+                org.tensim.solver.integrators.Integrators.create(integrator), 0);
+    }
+
     /** The breathing figures of the run's summary an {@code expect:} check may read (BreathingMetrics#fields). */
     public static final List<String> SUMMARY_KEYS = List.of("dome_excursion_mm", "apex_descent_mm",
             "right_dome_descent_mm", "left_dome_descent_mm", "largest_descent_mm", "ap_extent_change_mm",
