@@ -370,10 +370,7 @@ public final class Simulation {
         double limit = criticalStepOfIntegrator();
         if (dt > limit) {
             stepLimitWarnings++;
-            CriticalTimeStep c = state.criticalTimeStep();
-            String msg = "time step " + dt + " s is beyond the critical step estimate " + limit + " s of "
-                    + integrator.name() + " on this scene (w_max = " + c.omegaMaxPower() + " rad/s by power iteration, "
-                    + "Gershgorin bound " + c.omegaMaxGershgorin() + " rad/s); expect the run to blow up";
+            String msg = StepWarnings.stepLimit(dt, limit, integrator.name(), state.criticalTimeStep());
             if (stepLimitSeverity == Severity.ERROR) {
                 throw new IllegalArgumentException(msg);
             }
@@ -386,19 +383,11 @@ public final class Simulation {
         if (projectionSeverity == Severity.IGNORE) {
             return;
         }
-        String msg = "rigid-link projection at step " + (steps + 1) + " (t = " + (time + dt) + " s) stopped after "
-                + projection.iterations() + " sweeps with a relative length error of "
-                + projection.maxRelativeError() + " on link " + projection.worstLink() + " (tolerance "
-                + settings.projectionTolerance() + "): the links contradict each other, or need more sweeps than the"
-                + " cap (SolverSettings.withProjection) or a looser tolerance";
+        String msg = StepWarnings.projection(steps + 1, time + dt, projection, settings.projectionTolerance());
         if (projectionSeverity == Severity.ERROR) {
             throw new ProjectionFailedException(steps + 1, projection.worstLink(), projection.maxRelativeError(),
                     msg);
         }
-        long n = unconvergedProjections;
-        // The first failure and then every power of ten: enough to be seen, not a flood.
-        if (n == 1 || (n % 10 == 0 && Long.toString(n).matches("10*"))) {
-            warningSink.accept(msg + (n > 1 ? " (" + n + " such steps so far)" : ""));
-        }
+        StepWarnings.everyPowerOfTen(unconvergedProjections, msg, warningSink);
     }
 }

@@ -344,4 +344,26 @@ public final class DiaphragmOptions {
     public boolean paperModel() {
         return choices().paperModel();
     }
+
+    /**
+     * The GUI's controls these options set, by control key ({@code --period}, {@code --rib-amplitude},
+     * {@code --muscle-action}; in the controls' units: s, times quiet breathing, Pa), each with the option that set
+     * it; empty when none is given. The window starts its controls at them, over the last-used values.
+     */
+    public java.util.Map<String, java.util.Map.Entry<String, Double>> controlValues() {
+        java.util.Map<String, java.util.Map.Entry<String, Double>> m = new java.util.LinkedHashMap<>();
+        if (periodS != null) {
+            m.put(org.tensim.scene.tunable.DiaphragmViewScene.BREATHING_PERIOD, java.util.Map.entry("--period",
+                    periodS));
+        }
+        if (ribAmplitude != null) {
+            m.put(org.tensim.scene.tunable.DiaphragmViewScene.RIB_AMPLITUDE, java.util.Map.entry("--rib-amplitude",
+                    ribAmplitude));
+        }
+        if (musclePa != null) {
+            m.put(org.tensim.scene.tunable.DiaphragmViewScene.MUSCLE_ACTION, java.util.Map.entry("--muscle-action",
+                    musclePa));
+        }
+        return m;
+    }
 }

@@ -1,6 +1,7 @@
 package org.tensim.app.gui;
 
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
@@ -151,7 +152,8 @@ public final class GuiCommand implements Callable<Integer> {
         GuiWindow w = open(factory, fresh || !keep ? null : dir, script || !keep ? null : dir, preset,
                 !paused && !script, threadCount,
                 keep && !organs && TunableScenes.opensInRealTime(scene) && !options.paperModel(),
-                options.muscleLoad != null, options.thorax != null && !organs);
+                options.muscleLoad != null, options.thorax != null && !organs,
+                sceneFile.given() ? Map.of() : options.controlValues());
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
             String note = "mechanics at " + picked.describe();
@@ -242,29 +244,23 @@ public final class GuiCommand implements Callable<Integer> {
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
             boolean realTime) throws Exception {
-        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, false);
+        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, false, false, Map.of());
     }
 
     /**
      * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean)}; with {@code loadGiven} (the muscle
      * load named on the command line) the last-used parameters are restored only when they were tuned with that
-     * load (a preset given with {@code --preset} still applies its own, rebuilding the scene).
+     * load (a preset given with {@code --preset} still applies its own, rebuilding the scene); with {@code contact}
+     * (a thorax of bone surfaces) starting from the thorax's real-time setting ({@link Integrators#CONTACT_REAL_TIME}
+     * at {@link Integrators#REAL_TIME_STEP_S}, within 5 % of the step converged for contact, docs/thorax.md), whether
+     * or not realTime is asked: the double dome's real-time step lags far there (the swept cage, {@code --cage
+     * surfaces}, opens at the double dome's real-time step, which holds there with the contact projection). The
+     * controls {@code given} on the command line (control key to the option and its value) are set over the
+     * last-used values and the preset's: what a user types wins.
      */
     static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
-            boolean realTime, boolean loadGiven) throws Exception {
-        return open(factory, restoreDir, saveDir, preset, play, threads, realTime, loadGiven, false);
-    }
-
-    /**
-     * As {@link #open(SceneFactory, Path, Path, Path, boolean, int, boolean, boolean)}; with {@code contact} (a
-     * thorax of bone surfaces) starting from the thorax's real-time setting ({@link Integrators#CONTACT_REAL_TIME} at
-     * {@link Integrators#REAL_TIME_STEP_S}, within 5 % of the step converged for contact, docs/thorax.md), whether
-     * or not realTime is asked: the double dome's real-time step lags far there. The swept cage
-     * ({@code --cage surfaces}) opens at the double dome's real-time step, which holds there with the contact
-     * projection.
-     */
-    static GuiWindow open(SceneFactory factory, Path restoreDir, Path saveDir, Path preset, boolean play, int threads,
-            boolean realTime, boolean loadGiven, boolean contact) throws Exception {
+            boolean realTime, boolean loadGiven, boolean contact, Map<String, Map.Entry<String, Double>> given)
+            throws Exception {
         ViewScene first = factory.create(true);
         Tuning tuning = factory.muscleLoad() == null
                 ? new Tuning(first.name(), first.parameters(), first.defaultTimeStep(), factory.hasTendonChoice(),
@@ -287,6 +283,14 @@ public final class GuiCommand implements Callable<Integer> {
                 tuning.apply(PresetFile.read(preset, tuning), preset.toString());
             } catch (PresetFile.PresetException e) {
                 throw new IllegalArgumentException("--preset: " + e.getMessage(), e);
+            }
+        }
+        for (Map.Entry<String, Map.Entry<String, Double>> g : given.entrySet()) {
+            try {
+                tuning.set(g.getKey(), g.getValue().getValue());
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(g.getValue().getKey() + " " + g.getValue().getValue() + ": "
+                        + e.getMessage(), e);
             }
         }
         // The first scene was made with the defaults: make it again if what was restored needs a new one.

@@ -304,8 +304,7 @@ public final class DiaphragmViewScene implements ViewScene {
         return parameters;
     }
 
-    /** As a scene file opens it ({@link DiaphragmSceneFile}): its run's integrator and step, controls at its values,
-     * the chart on its first probe. */
+    /** As a scene file opens it ({@link DiaphragmSceneFile}): its run's step, its values, the chart on its probe. */
     DiaphragmViewScene asFile(org.tensim.scene.file.RunSettings run, List<org.tensim.scene.file.SceneProbe> probes) {
         fileRun = run;
         parameters = DiaphragmSceneFile.startingAt(parameters, scene, load);

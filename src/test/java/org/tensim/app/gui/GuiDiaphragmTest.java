@@ -73,6 +73,38 @@ class GuiDiaphragmTest {
         }
     }
 
+    /**
+     * --period, --rib-amplitude and --muscle-action start the controls at their values, over what was used last
+     * (saved here with other values first): the first scene breathes at the period typed.
+     */
+    @Test
+    void breathingOptionsOnTheCommandLineWinOverTheLastUsedControls() throws Exception {
+        java.util.Map<String, java.util.Map.Entry<String, Double>> given = java.util.Map.of(
+                DiaphragmViewScene.BREATHING_PERIOD, java.util.Map.entry("--period", 6.0),
+                DiaphragmViewScene.RIB_AMPLITUDE, java.util.Map.entry("--rib-amplitude", 0.5));
+        org.tensim.tuning.Tuning last = new org.tensim.tuning.Tuning("diaphragm", DiaphragmViewScene.PARAMETERS,
+                1e-4, true, org.tensim.solver.integrators.Integrators.choices());
+        last.set(DiaphragmViewScene.BREATHING_PERIOD, 8);
+        last.set(DiaphragmViewScene.RIB_AMPLITUDE, 2);
+        org.tensim.tuning.PresetFile.write(org.tensim.tuning.ConfigDir.lastUsed(dir, "diaphragm"), last.snapshot());
+        GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), dir, null, null, false, 1, false, false,
+                false, given);
+        try {
+            waitFor("the diaphragm on screen", () -> w.scene() != null);
+            assertEquals(6.0, w.tuning().get(DiaphragmViewScene.BREATHING_PERIOD));
+            assertEquals(0.5, w.tuning().get(DiaphragmViewScene.RIB_AMPLITUDE));
+            org.tensim.scene.diaphragm.DiaphragmScene s = ((DiaphragmViewScene) w.scene()).scene();
+            assertEquals(6.0, s.spec().breathing().periodS(), "the scene breathes at the period typed");
+            assertEquals(6.0, s.cycle().periodS());
+        } finally {
+            onEdt(w::close);
+        }
+        var e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> GuiCommand.open(
+                ParameterBindingTest.coarseDiaphragm(), null, null, null, false, 1, false, false, false,
+                java.util.Map.of(DiaphragmViewScene.BREATHING_PERIOD, java.util.Map.entry("--period", 40.0))));
+        assertTrue(e.getMessage().startsWith("--period 40.0: "), e.getMessage());
+    }
+
     @Test
     void saveLabelsWritesTheDiaphragmOnScreenNeverOverAFileUnaskedAndTheReadoutsShow() throws Exception {
         GuiWindow w = GuiCommand.open(ParameterBindingTest.coarseDiaphragm(), null, dir, null, false);

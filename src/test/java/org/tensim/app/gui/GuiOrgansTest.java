@@ -52,7 +52,7 @@ class GuiOrgansTest {
         f.setOrgans(new DiaphragmOrgans(OrganMeshes.load(thorax, true),
                 ThoraxOrgans.Options.defaults().withCells(0.03, 0.04).withLiver()));
         GuiCommand.setScripted(true);
-        GuiWindow w = GuiCommand.open(f, null, null, null, false, 2, false, false, false);
+        GuiWindow w = GuiCommand.open(f, null, null, null, false, 2, false, false, false, java.util.Map.of());
         try {
             waitFor("the organs on screen", () -> w.scene() != null && w.view().framesRendered() > 3);
             DiaphragmOrgansViewScene s = (DiaphragmOrgansViewScene) w.scene();
