@@ -84,6 +84,12 @@ public final class SceneProbeRecorder implements RunRecorder {
         }
     }
 
+    /** The files of the recorder it wraps (its own CSV is the run folder's already). */
+    @Override
+    public java.util.List<String> files() {
+        return inner == null ? java.util.List.of() : inner.files();
+    }
+
     /** Closes the CSV and puts each column's minimum and maximum under {@code columns}, as SceneRunner's summary. */
     @Override
     public void finish(Map<String, Object> summary, Path folder) throws IOException {

@@ -68,7 +68,7 @@ public final class DiaphragmReport {
 
     /** The files and folders the diaphragm command writes into its folder (docs/outputs.md). */
     public static final List<String> OUTPUTS = List.of("sagittal.png", "axial.png", "sagittal-cycle.png",
-            "axial-cycle.png", "breathing.png", "displacements.csv", "probe.csv", "vtk");
+            "axial-cycle.png", "breathing.png", "displacements.csv", "probe.csv", "vtk", "lung-points.csv");
 
     /**
      * Runs and writes everything to {@code out}, a run folder of its own; returns the summary
@@ -128,7 +128,7 @@ public final class DiaphragmReport {
                 scene.allTriangles(), java.util.Arrays.copyOf(scene.labels(), scene.simulatedNodes()), "tissue") : null;
         Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out, workers);
         Map<String, Object> summary = new LinkedHashMap<>();
-        describeScene(summary, built);
+        SceneMakeUp.describe(summary, built);
         if (metrics.complete()) {
             describeBreathing(summary, metrics);
         } else {
@@ -137,6 +137,9 @@ public final class DiaphragmReport {
         }
         describeRun(summary, built, o, sim, threads, step, metrics.measuredCycleStart(), stepping);
         if (scene.recorder() != null) {
+            for (String f : scene.recorder().files()) {
+                out.file(f); // listed before it is written
+            }
             scene.recorder().finish(summary, out.dir());
         }
         writeDisplacements(out.file("displacements.csv"), snapshots, scene, sim.state().contacts);
@@ -222,43 +225,6 @@ public final class DiaphragmReport {
             cpuNanos += Math.max(0, cpu.getThreadCpuTime(workers[w]));
         }
         return new Stepping(stepNanos / 1e9, cpuTimed ? cpuNanos / 1e9 : Double.NaN, diverged, divergedAt);
-    }
-
-    /** The scene's make-up: source, sizes, attachments, tendon, thickness. */
-    private static void describeScene(Map<String, Object> summary, DiaphragmSetup.Built built) {
-        DiaphragmScene scene = built.scene();
-        summary.put("source", built.source());
-        summary.put("surfaces", built.mode().name().toLowerCase(java.util.Locale.ROOT));
-        summary.put("nodes", scene.topology().nodeCount());
-        summary.put("diaphragm_nodes", scene.diaphragmNodes());
-        summary.put("anchor_nodes", scene.anchorNodes());
-        summary.put("springs", scene.topology().springs().size());
-        summary.put("membrane_triangles", scene.topology().triangles().size());
-        summary.put("shear_elements", scene.topology().shears().size());
-        summary.put("rigid_links", scene.topology().rigidLinks().size());
-        summary.put("attached_nodes", scene.attachedNodes());
-        summary.put("attached_to_ribs", scene.attachedToRibs());
-        summary.put("attached_to_cartilage_or_sternum", scene.attachedToCartilage());
-        summary.put("attached_to_spine", scene.attachedToSpine());
-        summary.put("tendon_area_fraction", round(scene.tendonAreaFraction(), 4));
-        if (scene.bones() != null) {
-            Map<String, Object> attached = new LinkedHashMap<>();
-            double total = 0;
-            for (Map.Entry<String, double[]> e : scene.attachedPerBone().entrySet()) {
-                attached.put(e.getKey(), Map.of("area_mm2", round(1e6 * e.getValue()[0], 1), "nodes",
-                        (int) e.getValue()[1], "node_share", round(e.getValue()[1] / scene.diaphragmNodes(), 4)));
-                total += e.getValue()[0];
-            }
-            summary.put("attached_area_mm2", round(1e6 * total, 1));
-            summary.put("attached_per_bone", attached);
-            summary.put("diaphragm_area_mm2", round(1e6 * scene.surfaces().mesh().totalArea() / 2, 1));
-            summary.put("contact_pairs", scene.topology().contacts().size());
-            summary.put("contact_pairs_per_bone", scene.contactPairsPerBone());
-            summary.put("apposition_pressure_pa", scene.appositionAreaM2() > 0
-                    ? scene.spec().cage().appositionPressurePa() : 0.0);
-            summary.put("apposition_area_mm2", round(1e6 * scene.appositionAreaM2(), 1));
-        }
-        summary.put("thickness_mm", round(1e3 * scene.surfaces().thicknessM(), 3));
     }
 
     /** The physiological figures of the measured cycle (docs/diaphragm.md says how they are measured). */

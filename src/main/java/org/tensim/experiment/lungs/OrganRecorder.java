@@ -24,6 +24,8 @@ import org.tensim.solver.SurfaceSliding;
 public final class OrganRecorder implements RunRecorder {
     /** Interval of the lung points' instants, s. */
     public static final double EVERY_S = 0.05;
+    /** The file of the points' trajectories, in the run's folder. */
+    public static final String FILE = "lung-points.csv";
     /** Interval of the couplings' and the liver's read-outs, s. */
     static final double READ_S = 0.01;
 
@@ -97,9 +99,14 @@ public final class OrganRecorder implements RunRecorder {
     }
 
     @Override
+    public List<String> files() {
+        return List.of(FILE);
+    }
+
+    @Override
     public void finish(Map<String, Object> summary, Path folder) throws IOException {
         int[] lung = organs.pointLung();
-        try (CsvWriter w = new CsvWriter(folder.resolve("lung-points.csv"), List.of("t_s", "point", "lung", "x_mm",
+        try (CsvWriter w = new CsvWriter(folder.resolve(FILE), List.of("t_s", "point", "lung", "x_mm",
                 "y_mm", "z_mm"), 1000)) {
             for (int f = 0; f < frames.size(); f++) {
                 double[] p = frames.get(f);

@@ -25,4 +25,13 @@ public interface RunRecorder {
 
     /** Adds its figures to the run's summary and writes its files into {@code folder}. */
     void finish(Map<String, Object> summary, Path folder) throws IOException;
+
+    /**
+     * The names of the files {@link #finish} writes into the run's folder, which the run lists in its manifest
+     * before they are written (so that a later run in the folder removes them, and the summary lists them); none
+     * by default.
+     */
+    default java.util.List<String> files() {
+        return java.util.List.of();
+    }
 }

@@ -24,7 +24,8 @@ import org.tensim.scene.shell.TwoSurfaces;
 
 /**
  * A headless diaphragm run with two small lungs, a 1 s breath: lung-points.csv has the header, one row per point
- * every 0.05 s over the measured cycle, and summary.json's lung_points and organs.
+ * every 0.05 s over the measured cycle, listed in the run's files and manifest, and summary.json's lung_points and
+ * organs.
  */
 class OrganRecorderTest {
     @Test
@@ -56,6 +57,9 @@ class OrganRecorderTest {
         assertEquals(1.0 / 3, ((Number) lp.get("end_inhale_s")).doubleValue(), 1e-9, "Ti = T / (1 + E/I)");
         assertEquals(List.of(0, 0, 1), lp.get("superior"));
         assertTrue(summary.containsKey("organs"), "the organs' figures");
+        assertTrue(((List<?>) summary.get("files")).contains("lung-points.csv"), "listed: " + summary.get("files"));
+        assertTrue(Files.readAllLines(out.resolve(org.tensim.io.RunFolder.MANIFEST)).contains("lung-points.csv"),
+                "in the manifest, so that the next run in the folder removes it");
         System.out.println("organs: " + summary.get("organs"));
     }
 
