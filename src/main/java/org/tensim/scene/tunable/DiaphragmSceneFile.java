@@ -34,13 +34,15 @@ final class DiaphragmSceneFile {
 
     /**
      * The factory of the loaded file's diaphragm ({@code body}, whose scene {@code built} is): every diaphragm it
-     * builds takes the file's regions, conditions and probes anew ({@link SceneRebuild}).
+     * builds takes the file's regions, conditions and probes anew ({@link SceneRebuild}); the first is the loader's
+     * own diaphragm when the window asks for the file's values (the diaphragm is not built twice).
      */
     static DiaphragmViewFactory factory(Scene loaded, SceneBody body, DiaphragmSetup.Built built) {
         DiaphragmViewFactory f = DiaphragmViewScene.factory(built.scene().spec(), null);
         SceneRebuild rebuild = SceneRebuild.of(loaded);
         f.openedFrom(loaded.run(), !rebuild.hasExtras() ? null
                 : b -> rebuild.apply(DiaphragmBodyType.body(body.name(), body.node(), b)));
+        f.firstIs(built, loaded.probes());
         return f;
     }
 

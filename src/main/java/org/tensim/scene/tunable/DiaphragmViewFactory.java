@@ -119,6 +119,42 @@ public final class DiaphragmViewFactory implements SceneFactory {
         this.extras = extras;
     }
 
+    /** The diaphragm the file's loader built, its conditions on it, with its probes: the first scene's, or null. */
+    private DiaphragmSetup.Built loaded;
+    private List<org.tensim.scene.file.SceneProbe> loadedProbes = List.of();
+
+    /**
+     * The next scene of the loaded file's own spec is {@code built} itself (with {@code probes}), once, instead of
+     * the same diaphragm built a second time.
+     */
+    synchronized void firstIs(DiaphragmSetup.Built built, List<org.tensim.scene.file.SceneProbe> probes) {
+        loaded = built;
+        loadedProbes = List.copyOf(probes);
+    }
+
+    /** How many diaphragms this factory has built for its scenes (the loader's, when taken, not counted). */
+    private final java.util.concurrent.atomic.AtomicInteger builds = new java.util.concurrent.atomic.AtomicInteger();
+
+    int builds() {
+        return builds.get();
+    }
+
+    /** The loaded diaphragm when its spec is {@code spec} and nothing was painted (then never again), else null. */
+    private synchronized DiaphragmSetup.Built loadedFor(DiaphragmSpec spec, Painted painting) {
+        DiaphragmSetup.Built b = loaded;
+        loaded = null;
+        if (b == null || painting != null || organs != null) {
+            return null;
+        }
+        DiaphragmSpec own = b.scene().spec();
+        DiaphragmSpec.Breathing br = own.breathing();
+        if (br.musclePa() == null) { // the load's default, which the view names
+            own = own.withBreathing(new DiaphragmSpec.Breathing(br.periodS(), br.expirationRatio(), br.ribAmplitude(),
+                    DiaphragmSetup.defaultMusclePa(own.boundary().muscleLoad()), br.abdominalPressurePa()));
+        }
+        return own.equals(spec) ? b : null;
+    }
+
     DiaphragmViewFactory(DiaphragmSpec base, DiaphragmSetup.Inputs read) {
         this.base = base;
         this.bc = base.boundary();
@@ -206,10 +242,15 @@ public final class DiaphragmViewFactory implements SceneFactory {
             }
             DiaphragmSpec fineSpec = withTendonBoundary(spec, in.surfaces().surfaces(), values);
             DiaphragmControls controls = fineSpec.newControls();
-            DiaphragmSetup.Built fine = DiaphragmSetup.build(in, fineSpec, controls);
-            DiaphragmScene s = fine.scene();
             var fileExtras = extras;
-            List<org.tensim.scene.file.SceneProbe> probes = fileExtras == null ? List.of() : fileExtras.apply(fine);
+            DiaphragmSetup.Built fine = loadedFor(fineSpec, painting);
+            List<org.tensim.scene.file.SceneProbe> probes = fine != null ? loadedProbes : List.of();
+            if (fine == null) {
+                fine = DiaphragmSetup.build(in, fineSpec, controls);
+                builds.incrementAndGet();
+                probes = fileExtras == null ? List.of() : fileExtras.apply(fine);
+            }
+            DiaphragmScene s = fine.scene();
             DiaphragmOrgans o = organs;
             if (o != null) {
                 DiaphragmOrgans.Built built = o.install(s);

@@ -30,6 +30,7 @@ class FileViewSceneDiaphragmTest {
         SceneFactory f = FileViewScene.factory(FILE, sets);
         assertInstanceOf(DiaphragmViewFactory.class, f, "the diaphragm's factory, as gui --scene diaphragm");
         DiaphragmViewScene view = assertInstanceOf(DiaphragmViewScene.class, f.create(true));
+        assertEquals(0, ((DiaphragmViewFactory) f).builds(), "the first scene is the loader's diaphragm, not built again");
         DiaphragmScene shown = view.scene();
         assertEquals(run.diaphragmNodes(), shown.diaphragmNodes());
         assertEquals(run.topology().nodeCount(), shown.topology().nodeCount());
@@ -49,6 +50,7 @@ class FileViewSceneDiaphragmTest {
         Map<String, Double> values = view.parameters().stream()
                 .collect(Collectors.toMap(TunableParameter::key, TunableParameter::defaultValue));
         DiaphragmScene again = ((DiaphragmViewScene) f.create(true, values)).scene();
+        assertEquals(1, ((DiaphragmViewFactory) f).builds(), "a new scene is built anew");
         assertEquals(1.5, again.spec().breathing().periodS());
         assertEquals(0.2, again.parameters().tendonAreaFraction(), 1e-15);
     }
