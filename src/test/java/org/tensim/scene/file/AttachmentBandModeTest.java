@@ -31,29 +31,9 @@ class AttachmentBandModeTest {
     @TempDir
     Path dir;
 
+    /** The block of {@link AttachmentModesTest} on its sliding plate, attached by {@code mode}. */
     private Scene block(double cellMm, String mode) {
-        return SceneFiles.load(dir, "band.yaml", """
-                version: 1
-                units: {length: mm}
-                bodies:
-                  block:
-                    type: volume
-                    box: [10, 10, 10]
-                    cell: %s
-                    material: {E: 2 kPa, nu: 0.25, density: 1000 kg/m^3, damping_time: 20 ms}
-                  plate:
-                    type: rigid
-                    box: {min: [-5, -2, -5], max: [15, 0, 15]}
-                    motion: {type: translation, displacement: [3, -1, 2], law: go}
-                laws:
-                  go: {type: ramp, start: 0 s, duration: 0.5 s, from: 0, to: 1}
-                regions:
-                  base: {box: {min: [0, 0, 0], max: [1, 0.2, 1], frame: relative}}
-                conditions:
-                  - {type: gravity, acceleration: [0, -9.81, 0]}
-                  - {type: attachment, region: base, with: plate, threshold: 0.1, %s}
-                run: {integrator: implicit-euler, dt: 0.01 s, duration: 3 s}
-                """.formatted(cellMm, mode));
+        return AttachmentModesTest.block(dir, cellMm, mode);
     }
 
     /** The springs from the block's nodes to the driven anchors: their total stiffness, N/m. */
@@ -144,7 +124,7 @@ class AttachmentBandModeTest {
         SceneException e = assertThrows(SceneException.class, () -> block(5, "mode: band"));
         assertTrue(e.getMessage().contains("stiffness"), e.getMessage());
         e = assertThrows(SceneException.class, () -> block(5, "mode: band, stiffness: 1e5 Pa/m, taper: 0.2"));
-        assertTrue(e.getMessage().contains("taper") && e.getMessage().contains("band.yaml"), e.getMessage());
+        assertTrue(e.getMessage().contains("taper") && e.getMessage().contains("attach.yaml"), e.getMessage());
         e = assertThrows(SceneException.class, () -> block(5, "mode: band, stiffness: 10 N/m"));
         assertTrue(e.getMessage().contains("Pa/m") || e.getMessage().contains("dimension"), e.getMessage());
         e = assertThrows(SceneException.class, () -> block(5, "mode: drive, taper: 0.05"));

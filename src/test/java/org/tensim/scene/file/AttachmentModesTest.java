@@ -28,6 +28,11 @@ class AttachmentModesTest {
 
     /** The block under gravity, its base attached to the sliding plate by {@code mode} (and its keys). */
     private Scene block(String mode) {
+        return block(dir, 5, mode);
+    }
+
+    /** As {@link #block(String)}, the block's lattice of {@code cellMm} cells, the file written in {@code dir}. */
+    static Scene block(Path dir, double cellMm, String mode) {
         return SceneFiles.load(dir, "attach.yaml", """
                 version: 1
                 units: {length: mm}
@@ -35,7 +40,7 @@ class AttachmentModesTest {
                   block:
                     type: volume
                     box: [10, 10, 10]
-                    cell: 5
+                    cell: %s
                     material: {E: 2 kPa, nu: 0.25, density: 1000 kg/m^3, damping_time: 20 ms}
                   plate:
                     type: rigid
@@ -49,7 +54,7 @@ class AttachmentModesTest {
                   - {type: gravity, acceleration: [0, -9.81, 0]}
                   - {type: attachment, region: base, with: plate, threshold: 0.1, %s}
                 run: {integrator: implicit-euler, dt: 0.01 s, duration: 3 s}
-                """.formatted(mode));
+                """.formatted(cellMm, mode));
     }
 
     private static SystemState run(Scene s, SceneBody b) {
