@@ -29,6 +29,8 @@ import org.tensim.scene.thorax.TriangleTree;
  * each rib's own motion at its own vertices);</li>
  * <li><b>Fixed</b> otherwise (mediastinal, spinal and apical parts, farther than wallM from any rib).</li>
  * </ul>
+ * These are each vertex's own carrier; its row is their blend over the neighbours within {@link Rules#blendM}
+ * ({@link PleuraBlend}, which says why: by its own carrier alone, the pleura folds where the kinds meet).
  *
  * <p><b>Driven frames, not a node per vertex.</b> A rigid motion is affine, {@code x -> R x + c}, so the motion of
  * any point equals the affine combination {@code sum_k lambda_k X_k(t)} of four driven nodes X_k of that rib placed
@@ -36,7 +38,8 @@ import org.tensim.scene.thorax.TriangleTree;
  * fixed affine coordinates {@code lambda = (1 - sum a_i, a_x, a_y, a_z)}, {@code a = (p - o) / L}: exact, to
  * rounding, for every vertex of the rib. So each rib adds four driven nodes (its {@link RigidMotion}, a tiny mass
  * that is never integrated) instead of one per vertex, and the fixed parts four fixed nodes; the diaphragmatic
- * offset p - q is carried by the fixed frame with weights summing to 0. Rows hold 3 + 4, 4 or 8 entries.
+ * offset p - q is carried by the fixed frame with weights summing to 0. Unblended rows hold 3 + 4, 4 or 8 entries;
+ * blended ones the frames' and diaphragm nodes' of the neighbourhood.
  */
 public final class PleuraCarriers {
     /** Edge of the carrier frames, m: about the ribs' size, so that the affine weights stay of order 1. */
@@ -56,9 +59,15 @@ public final class PleuraCarriers {
      *                   about 6 mm, plus the chest wall's soft tissue between rib and pleura)
      * @param wallM      nearest-rib distance within which a vertex is on the chest wall (intercostal spaces are
      *                   about 20-30 mm between rib centrelines); beyond it the vertex is fixed
+     * @param blendM     radius over which the vertices' carriers are blended ({@link PleuraBlend}); 0 for each
+     *                   vertex by its own carrier alone
      */
-    public record Rules(double diaphragmM, double ribM, double wallM) {
+    public record Rules(double diaphragmM, double ribM, double wallM, double blendM) {
         public Rules {
+            if (!(blendM >= 0) || Double.isInfinite(blendM)) {
+                throw new IllegalArgumentException("the pleura's blend radius " + blendM
+                        + " m: expected 0 (each vertex by its own carrier) or a positive length");
+            }
             Check.positive("pleura's diaphragm distance", "m", diaphragmM);
             Check.positive("pleura's rib distance", "m", ribM);
             Check.positive("pleura's chest-wall distance", "m", wallM);
@@ -68,9 +77,18 @@ public final class PleuraCarriers {
             }
         }
 
-        /** 15 mm to the diaphragm, 12 mm to a rib alone, 40 mm to the chest wall. */
+        /**
+         * 15 mm to the diaphragm, 12 mm to a rib alone, 40 mm to the chest wall, the carriers blended over 25 mm
+         * ({@link PleuraBlend}: about 2.5 times the dome's descent, so that the pleura shears by about 0.4 where the
+         * diaphragm's part meets the wall's, instead of folding over one edge).
+         */
         public static Rules defaults() {
-            return new Rules(0.015, 0.012, 0.040);
+            return new Rules(0.015, 0.012, 0.040, 0.025);
+        }
+
+        /** The same with another blend radius, m (0: each vertex moved by its own carrier alone). */
+        public Rules withBlend(double m) {
+            return new Rules(diaphragmM, ribM, wallM, m);
         }
     }
 
@@ -90,10 +108,13 @@ public final class PleuraCarriers {
      * @param surface   the pleura's rest surface, m (the mapping's point i is its vertex i)
      * @param mapping   the vertices on the state's nodes (nodeCount: the topology's when built)
      * @param carrier   per vertex, how it is carried
+     * @param ownRule   per vertex, true when it moves exactly by its own carrier (every neighbour within the blend
+     *                  radius carried the same way by the same ribs; never for a diaphragmatic vertex)
      * @param firstNode the first frame node added ({@code 4 (ribs + 1)} nodes from there: ribs' frames, then the
      *                  fixed frame)
      */
-    public record Built(TriangleMesh surface, LinearMapping mapping, Carrier[] carrier, int firstNode) {
+    public record Built(TriangleMesh surface, LinearMapping mapping, Carrier[] carrier, boolean[] ownRule,
+            int firstNode) {
         /** Number of vertices carried a given way. */
         public int count(Carrier c) {
             int n = 0;
@@ -149,6 +170,7 @@ public final class PleuraCarriers {
         LinearMapping.Builder b = new LinearMapping.Builder(nodeCount == 0 ? t.nodeCount()
                 : Check.atLeast("pleura mapping's node count", nodeCount, t.nodeCount()));
         Carrier[] carrier = new Carrier[pleura.vertexCount()];
+        PleuraBlend.Rule[] rule = new PleuraBlend.Rule[pleura.vertexCount()];
         double[] w = new double[4];
         for (int v = 0; v < pleura.vertexCount(); v++) {
             double px = pleura.coord(v, 0);
@@ -172,57 +194,29 @@ public final class PleuraCarriers {
             }
             int tri = upper == null ? -1 : upper.nearest(px, py, pz, stack, w);
             double dD = tri < 0 ? Double.POSITIVE_INFINITY : Math.sqrt(w[3]);
-            double[] p = {px, py, pz};
             if (dD <= rules.diaphragmM() && dD <= d1) {
-                carrier[v] = Carrier.DIAPHRAGM;
-                int[] nodes = new int[7];
-                double[] weights = new double[7];
+                int[] nodes = new int[3];
                 double[] q = new double[3];
                 for (int k = 0; k < 3; k++) {
                     nodes[k] = upperTriangles[3 * tri + k];
-                    weights[k] = w[k];
                     for (int a = 0; a < 3; a++) {
                         q[a] += w[k] * xyz[3 * nodes[k] + a];
                     }
                 }
-                // The rest offset p - q on the fixed frame: affine weights of (origin + p - q) minus those of origin.
-                double[] lam = frameWeights(origin[fixedFrame], new double[] {origin[fixedFrame][0] + px - q[0],
-                        origin[fixedFrame][1] + py - q[1], origin[fixedFrame][2] + pz - q[2]});
-                for (int k = 0; k < 4; k++) {
-                    nodes[3 + k] = first + 4 * fixedFrame + k;
-                    weights[3 + k] = lam[k] - (k == 0 ? 1 : 0);
-                }
-                b.add(nodes, weights);
+                rule[v] = new PleuraBlend.Rule(Carrier.DIAPHRAGM, fixedFrame, -1, 1, nodes,
+                        new double[] {w[0], w[1], w[2]}, q);
             } else if (r1 >= 0 && (d1 <= rules.ribM() || d1 <= rules.wallM() && d2 > rules.wallM())) {
-                carrier[v] = Carrier.RIB;
-                b.add(frameNodes(first, r1), frameWeights(origin[r1], p));
+                rule[v] = new PleuraBlend.Rule(Carrier.RIB, r1, -1, 1, null, null, null);
             } else if (r1 >= 0 && d1 <= rules.wallM()) {
-                carrier[v] = Carrier.INTERCOSTAL;
-                double a1 = d2 / (d1 + d2);
-                double[] l1 = frameWeights(origin[r1], p);
-                double[] l2 = frameWeights(origin[r2], p);
-                int[] nodes = new int[8];
-                double[] weights = new double[8];
-                int[] f1 = frameNodes(first, r1);
-                int[] f2 = frameNodes(first, r2);
-                for (int k = 0; k < 4; k++) {
-                    nodes[k] = f1[k];
-                    weights[k] = a1 * l1[k];
-                    nodes[4 + k] = f2[k];
-                    weights[4 + k] = (1 - a1) * l2[k];
-                }
-                b.add(nodes, weights);
+                rule[v] = new PleuraBlend.Rule(Carrier.INTERCOSTAL, r1, r2, d2 / (d1 + d2), null, null, null);
             } else {
-                carrier[v] = Carrier.FIXED;
-                b.add(frameNodes(first, fixedFrame), frameWeights(origin[fixedFrame], p));
+                rule[v] = new PleuraBlend.Rule(Carrier.FIXED, fixedFrame, -1, 1, null, null, null);
             }
+            carrier[v] = rule[v].kind();
         }
-        return new Built(pleura, b.build(), carrier, first);
-    }
-
-    private static int[] frameNodes(int first, int frame) {
-        int o = first + 4 * frame;
-        return new int[] {o, o + 1, o + 2, o + 3};
+        boolean[] own = new boolean[pleura.vertexCount()];
+        PleuraBlend.rows(pleura, rule, origin, first, fixedFrame, rules.blendM(), b, own);
+        return new Built(pleura, b.build(), carrier, own, first);
     }
 
     /** A point's affine coordinates on the frame at {@code o} (corners o, o + L e_x, o + L e_y, o + L e_z). */
