@@ -115,7 +115,7 @@ public final class DiaphragmOptions {
     Double ribAmplitude;
 
     @Option(names = {"--muscle-action", "--muscle-force"}, paramLabel = "PA",
-            description = "Peak muscle action, Pa, 0..30000: active fibre stress (--muscle-load fibres, the default;"
+            description = "Peak muscle action, Pa, 0..60000: active fibre stress (--muscle-load fibres, the default;"
                     + " default 19000) or force per unit area of diaphragm (pressure, paper-nodes; default 2600).")
     Double musclePa;
 
@@ -125,6 +125,11 @@ public final class DiaphragmOptions {
     @Option(names = "--ie-ratio", paramLabel = "R",
             description = "Expiration time over inspiration time, I:E = 1:R (default: 2).")
     Double ieRatio;
+
+    @Option(names = "--expiratory-pause", paramLabel = "SHARE",
+            description = "End-expiratory pause, the share of the expiration spent at rest, 0 to below 1 (default:"
+                    + " 0.25, fitted to the DIR-Lab 4D-CT time course; 0: the expiration's cosine takes all of it).")
+    Double pauseShare;
 
     @Option(names = "--attach-threshold", paramLabel = "MM",
             description = "Attach diaphragm nodes closer than this to ribs, cartilage or sternum, mm (default: 20).")
@@ -225,6 +230,7 @@ public final class DiaphragmOptions {
         c.musclePa = musclePa;
         c.periodS = periodS;
         c.ieRatio = ieRatio;
+        c.pauseShare = pauseShare;
         c.attachMm = attachMm;
         c.attachment = attachment;
         c.bandPaPerM = bandPaPerM;

@@ -33,6 +33,7 @@ final class ReferenceCache {
     static Path file(Path out, int rings, DiaphragmScene scene, DiaphragmParameters p,
             org.tensim.scene.diaphragm.BoundaryConditions bc, BreathingCycle cycle, DiaphragmControls controls) {
         int key = java.util.Objects.hash(p.toString(), bc.toString(), cycle.periodS(), cycle.expirationRatio(),
+                cycle.pauseShare(),
                 controls.ribAmplitude(), controls.muscleAmplitudePa(), org.tensim.io.Provenance.codeVersion());
         return out.resolve(String.format(Locale.ROOT, "rk2-reference-%drings-%dnodes-%dsprings-dt%.6e-every%.3fs-%08x.bin",
                 rings, scene.topology().nodeCount(), scene.topology().springs().size(), scene.recommendedTimeStep(),

@@ -35,6 +35,7 @@ public final class DiaphragmChoices {
     public Double musclePa;
     public Double periodS;
     public Double ieRatio;
+    public Double pauseShare;
     public Double attachMm;
     public BoundaryConditions.Attachment attachment;
     public Double bandPaPerM;
@@ -136,7 +137,15 @@ public final class DiaphragmChoices {
         }
         br = new DiaphragmSpec.Breathing(periodS == null ? br.periodS() : periodS,
                 ieRatio == null ? br.expirationRatio() : ieRatio,
-                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa, br.abdominalPressurePa());
+                ribAmplitude == null ? br.ribAmplitude() : ribAmplitude, musclePa, br.abdominalPressurePa(),
+                br.pauseShare());
+        if (pauseShare != null) {
+            try {
+                br = br.withPauseShare(pauseShare);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("--expiratory-pause: " + e.getMessage(), e);
+            }
+        }
         DiaphragmSpec.Cage cageSpec;
         try {
             cageSpec = new DiaphragmSpec.Cage(boxes, thorax, contact == null ? base.cage().contact() : contact,

@@ -111,7 +111,7 @@ public final class DiaphragmScene {
         DiaphragmSpec spec = DiaphragmSpec.defaults().withTissue(p).withBoundary(bc)
                 .withActionLines(bc.muscleLoad() == BoundaryConditions.MuscleLoad.FIBRES ? null : lines)
                 .withBreathing(new DiaphragmSpec.Breathing(cycle.periodS(), cycle.expirationRatio(),
-                        controls.ribAmplitude(), controls.muscleAmplitudePa()));
+                        controls.ribAmplitude(), controls.muscleAmplitudePa(), 0, cycle.pauseShare()));
         return build(surfaces, spec, boxes, null, null, cycle, controls);
     }
 

@@ -120,14 +120,16 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
      * @param abdominalPressurePa rise of the abdominal pressure on the diaphragm's lower face at end-inspiration, Pa
      *                        (&gt;= 0; 0: none, the default): it follows the breathing level and presses the zone of
      *                        apposition on the chest wall ({@link AbdominalPressure}; docs/thorax.md)
+     * @param pauseShare      the end-expiratory pause, a share of the expiration in [0, 1) ({@link BreathingCycle};
+     *                        default {@link BreathingCycle#QUIET_PAUSE_SHARE})
      */
     public record Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa,
-            double abdominalPressurePa) {
+            double abdominalPressurePa, double pauseShare) {
         /** Most abdominal pressure rise accepted, Pa (about 50 cmH2O, a maximal expulsive effort's order). */
         public static final double MAX_ABDOMINAL_PRESSURE_PA = 5000;
 
         public Breathing {
-            new BreathingCycle(periodS, expirationRatio); // validates
+            new BreathingCycle(periodS, expirationRatio, pauseShare); // validates
             new DiaphragmControls(ribAmplitude, musclePa == null ? 0 : musclePa); // validates
             if (!(abdominalPressurePa >= 0 && abdominalPressurePa <= MAX_ABDOMINAL_PRESSURE_PA)) {
                 throw new IllegalArgumentException("abdominal pressure rise must be 0.." + MAX_ABDOMINAL_PRESSURE_PA
@@ -135,38 +137,52 @@ public record DiaphragmSpec(Mesh mesh, DiaphragmParameters tissue, BoundaryCondi
             }
         }
 
-        /** Without an abdominal pressure rise. */
+        /** With the quiet law's end-expiratory pause ({@link BreathingCycle#QUIET_PAUSE_SHARE}). */
+        public Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa,
+                double abdominalPressurePa) {
+            this(periodS, expirationRatio, ribAmplitude, musclePa, abdominalPressurePa,
+                    BreathingCycle.QUIET_PAUSE_SHARE);
+        }
+
+        /** Without an abdominal pressure rise, with the quiet law's end-expiratory pause. */
         public Breathing(double periodS, double expirationRatio, double ribAmplitude, Double musclePa) {
             this(periodS, expirationRatio, ribAmplitude, musclePa, 0);
         }
 
-        /** Quiet breathing: 4 s, I:E 1:2, the quiet rib motion and the load's default muscle action. */
+        /**
+         * Quiet breathing: 4 s, I:E 1:2 with the end-expiratory pause, the quiet rib motion and the load's default
+         * muscle action.
+         */
         public static Breathing defaults() {
             return new Breathing(4, 2, 1, null);
         }
 
         public BreathingCycle cycle() {
-            return new BreathingCycle(periodS, expirationRatio);
+            return new BreathingCycle(periodS, expirationRatio, pauseShare);
         }
 
         public Breathing withPeriod(double s) {
-            return new Breathing(s, expirationRatio, ribAmplitude, musclePa, abdominalPressurePa);
+            return new Breathing(s, expirationRatio, ribAmplitude, musclePa, abdominalPressurePa, pauseShare);
         }
 
         public Breathing withExpirationRatio(double r) {
-            return new Breathing(periodS, r, ribAmplitude, musclePa, abdominalPressurePa);
+            return new Breathing(periodS, r, ribAmplitude, musclePa, abdominalPressurePa, pauseShare);
         }
 
         public Breathing withRibAmplitude(double a) {
-            return new Breathing(periodS, expirationRatio, a, musclePa, abdominalPressurePa);
+            return new Breathing(periodS, expirationRatio, a, musclePa, abdominalPressurePa, pauseShare);
         }
 
         public Breathing withMusclePa(Double pa) {
-            return new Breathing(periodS, expirationRatio, ribAmplitude, pa, abdominalPressurePa);
+            return new Breathing(periodS, expirationRatio, ribAmplitude, pa, abdominalPressurePa, pauseShare);
         }
 
         public Breathing withAbdominalPressure(double pa) {
-            return new Breathing(periodS, expirationRatio, ribAmplitude, musclePa, pa);
+            return new Breathing(periodS, expirationRatio, ribAmplitude, musclePa, pa, pauseShare);
+        }
+
+        public Breathing withPauseShare(double p) {
+            return new Breathing(periodS, expirationRatio, ribAmplitude, musclePa, abdominalPressurePa, p);
         }
     }
 

@@ -20,10 +20,12 @@ import org.tensim.scene.conditions.TimeLaw;
  *   start: {type: ramp, start: 0 s, duration: 1 s, from: 0, to: 1}
  *   steps: {type: table, points: [[0 s, 0], [1 s, 1], [2 s, 0.5]], extend: constant}
  *   trace: {type: csv, file: breath.csv, extend: extrapolate}
- *   breath: {type: breathing, period: 4 s, inspiration: 0.333, amplitude: 1}
+ *   breath: {type: breathing, period: 4 s, inspiration: 0.333, pause: 0.25, amplitude: 1}
  * </pre>
  * A breathing law is the diaphragm's cycle ({@link BreathingLaw}): inspiration (a share of the period, 1/3 by
- * default: I:E = 1:2) then expiration, each a half cosine, from 0 to the amplitude (1) and back.
+ * default: I:E = 1:2) then expiration, each a half cosine, from 0 to the amplitude (1) and back, the expiration
+ * ending in a pause at 0 ({@code pause}, a share of the expiration, {@code BreathingCycle.QUIET_PAUSE_SHARE} by
+ * default).
  * A csv file has a header line, then one {@code time,value} row a line (times in the file's time unit, or with
  * units); times must increase, in tables and files alike.
  */
@@ -36,7 +38,7 @@ public final class TimeLaws {
             "ramp", List.of("type", "start", "duration", "from", "to"),
             "table", List.of("type", "points", "extend"),
             "csv", List.of("type", "file", "extend"),
-            "breathing", List.of("type", "period", "inspiration", "amplitude"));
+            "breathing", List.of("type", "period", "inspiration", "pause", "amplitude"));
     /** A breathing law's default period, s: 15 breaths a minute ({@code BreathingCycle.quiet()}). */
     static final double DEFAULT_PERIOD_S = 4;
     private static final List<String> EXTENSIONS = List.of("constant", "extrapolate");
@@ -101,11 +103,14 @@ public final class TimeLaws {
     private static TimeLaw breathing(MapReader r, SceneUnits u) {
         double period = r.positive("period", QuantityKind.TIME, u, DEFAULT_PERIOD_S);
         double share = r.quantity("inspiration", QuantityKind.NUMBER, u, 1.0 / 3);
+        double pause = r.quantity("pause", QuantityKind.NUMBER, u,
+                org.tensim.scene.diaphragm.BreathingCycle.QUIET_PAUSE_SHARE);
         double amplitude = r.quantity("amplitude", QuantityKind.NUMBER, u, 1);
         try {
-            return new BreathingLaw(period, share, amplitude);
+            return new BreathingLaw(period, share, pause, amplitude);
         } catch (IllegalArgumentException e) {
-            throw SceneException.at(r.has("inspiration") ? r.node().get("inspiration") : r.node(), e.getMessage());
+            String at = e.getMessage().contains("pause") ? "pause" : "inspiration";
+            throw SceneException.at(r.has(at) ? r.node().get(at) : r.node(), e.getMessage());
         }
     }
 

@@ -150,7 +150,8 @@ public final class DiaphragmViewFactory implements SceneFactory {
         DiaphragmSpec.Breathing br = own.breathing();
         if (br.musclePa() == null) { // the load's default, which the view names
             own = own.withBreathing(new DiaphragmSpec.Breathing(br.periodS(), br.expirationRatio(), br.ribAmplitude(),
-                    DiaphragmSetup.defaultMusclePa(own.boundary().muscleLoad()), br.abdominalPressurePa()));
+                    DiaphragmSetup.defaultMusclePa(own.boundary().muscleLoad()), br.abdominalPressurePa(),
+                    br.pauseShare()));
         }
         return own.equals(spec) ? b : null;
     }
@@ -233,7 +234,7 @@ public final class DiaphragmViewFactory implements SceneFactory {
                 .withBreathing(new DiaphragmSpec.Breathing(period, given.expirationRatio(),
                         values.getOrDefault(DiaphragmViewScene.RIB_AMPLITUDE, given.ribAmplitude()),
                         values.getOrDefault(DiaphragmViewScene.MUSCLE_ACTION, musclePa),
-                        base.breathing().abdominalPressurePa()));
+                        base.breathing().abdominalPressurePa(), base.breathing().pauseShare()));
         try {
             DiaphragmSetup.Inputs in = inputs();
             if (painting != null) {

@@ -44,7 +44,8 @@ public final class DiaphragmBodyType implements BodyType {
             "min_piece_fraction", "boxes", "thorax", "cage", "contact", "contact_stiffness", "liver_support",
             "abdominal_support", "abdominal_pressure", "apposition_pressure", "model", "tissue_model", "tendon_rule",
             "tendon_normal", "tendon_point", "tendon_fraction", "attach_threshold", "attachment", "band_stiffness",
-            "band_all_segments", "muscle_load", "muscle_action", "action_line", "rib_amplitude", "period", "ie_ratio");
+            "band_all_segments", "muscle_load", "muscle_action", "action_line", "rib_amplitude", "period", "ie_ratio",
+            "expiratory_pause");
     private static final Unit<?> MM = MetricPrefix.MILLI(Units.METRE);
     private static final Unit<?> PA = Units.PASCAL;
 
@@ -216,6 +217,7 @@ public final class DiaphragmBodyType implements BodyType {
         c.ribAmplitude = in(ctx, "rib_amplitude", QuantityKind.NUMBER, null);
         c.periodS = in(ctx, "period", QuantityKind.TIME, Units.SECOND);
         c.ieRatio = in(ctx, "ie_ratio", QuantityKind.NUMBER, null);
+        c.pauseShare = in(ctx, "expiratory_pause", QuantityKind.NUMBER, null);
         return c;
     }
 
