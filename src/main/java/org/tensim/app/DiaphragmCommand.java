@@ -76,7 +76,8 @@ public final class DiaphragmCommand implements Callable<Integer> {
     double[] csvTimes;
 
     @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs into the run, sliding on the"
-            + " pleura carried by the diaphragm and the ribs (docs/lungs.md); writes lung-points.csv.")
+            + " pleura carried by the diaphragm and the ribs (docs/lungs.md); writes lung-points.csv. The muscle's"
+            + " default fibre stress is then 36000 Pa (it carries the lungs' recoil); --muscle-action overrides it.")
     boolean lungs;
 
     @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm (the"
@@ -108,11 +109,13 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         // Options are checked before the mesh is read, which takes seconds.
-        final DiaphragmSpec sceneSpec = CommandChecks.scene(spec, scene,
+        final DiaphragmSpec given = CommandChecks.scene(spec, scene,
                 // --rings (or the pick's) asks for the generated dome at those rings, not the committed 43-ring mesh.
                 !scene.ringsGiven() && Files.isRegularFile(DiaphragmSetup.DEFAULT_MESH) ? DiaphragmSetup.DEFAULT_MESH
                         : null,
                 DiaphragmSpec.PAPER_RINGS);
+        // With the lungs the muscle also carries their recoil: its default stress is the one measured with them.
+        final DiaphragmSpec sceneSpec = lungs ? org.tensim.scene.lungs.LungsMuscle.applyTo(given) : given;
         solver.check(spec, sceneSpec, seconds);
         // --pick, or --realtime on the default scene: the mechanics at the pick's rings, the 43-ring mesh carried
         org.tensim.experiment.diaphragm.ResolutionPick picked = null;

@@ -15,9 +15,10 @@ public final class DiaphragmControls {
     /**
      * Largest accepted muscle action amplitude, Pa: covers both readings of the amplitude, a pressure (a forced
      * inspiration reaches about 10 kPa) and an active fibre stress (19 kPa at quiet breathing on the default
-     * mesh, about twice that for a deep breath).
+     * mesh, 30 kPa in the thorax with the lungs' recoil to carry, about twice that for a deep breath; the human
+     * diaphragm's maximal active stress is of the order of 200 kPa).
      */
-    public static final double MAX_MUSCLE_PA = 30_000;
+    public static final double MAX_MUSCLE_PA = 60_000;
 
     private volatile double ribAmplitude;
     private volatile double musclePa;
