@@ -18,8 +18,11 @@ import org.tensim.solver.SurfaceSliding;
  * ({@code lung-points.csv}: {@code t_s,point,lung,x_mm,y_mm,z_mm}, lung "right" or "left"), the couplings' largest
  * departure from their rest relation over the run (penetration and separation, mm, read every
  * {@link #READ_S}), the liver's
- * superior-inferior motion (its nodes' mean z, peak to peak over the measured cycle) and, in {@code summary.json},
- * {@code lung_points} (end-exhale and end-inhale instants, the period, the superior axis) and {@code organs}.
+ * superior-inferior motion (its nodes' mean z, peak to peak over the measured cycle), each lung's own surface against
+ * its pleura ({@link LungSurfaceGap}, every {@link #EVERY_S}), the lung points at every end-inspiration of the run
+ * (each breath's mean 3D and basal SI displacement from the start, and the largest change from one breath to the
+ * next) and, in {@code summary.json}, {@code lung_points} (end-exhale and end-inhale instants, the period, the
+ * superior axis) and {@code organs}.
  */
 public final class OrganRecorder implements RunRecorder {
     /** Interval of the lung points' instants, s. */
@@ -45,6 +48,11 @@ public final class OrganRecorder implements RunRecorder {
     private double liverMax = Double.NEGATIVE_INFINITY;
     private double[] eePoints;
     private double[] eiPoints;
+    private final List<LungSurfaceGap> gaps = new ArrayList<>();
+    private double nextGap;
+    private double[] startPoints;
+    private double nextInhale;
+    private final List<double[]> inhales = new ArrayList<>(); // {t, mean 3D m, basal SI m}
 
     /** @param terms the organs' installed terms ({@link ThoraxOrgans#install}), in the order of its couplings */
     public OrganRecorder(ThoraxOrgans organs, List<SurfaceSliding> terms) {
@@ -52,6 +60,10 @@ public final class OrganRecorder implements RunRecorder {
         this.terms = terms;
         this.worstPen = new double[terms.size()];
         this.worstSep = new double[terms.size()];
+        for (int i = 0; i < organs.lungs().size(); i++) {
+            ThoraxOrgans.Coupling c = organs.couplings().get(i);
+            gaps.add(new LungSurfaceGap(organs.lungs().get(i).body().surfaceMapping(), c.surface(), c.triangles()));
+        }
     }
 
     @Override
@@ -61,6 +73,9 @@ public final class OrganRecorder implements RunRecorder {
         period = periodS;
         nextFrame = start;
         nextRead = 0;
+        nextGap = 0;
+        nextInhale = inspirationEndS - periodS * Math.floor(inspirationEndS / periodS);
+        startPoints = null;
         lastT = sim.time();
         afterStep(sim);
     }
@@ -83,6 +98,20 @@ public final class OrganRecorder implements RunRecorder {
                 liverMax = Math.max(liverMax, z);
             }
         }
+        if (t >= nextGap - half) {
+            nextGap += EVERY_S;
+            for (LungSurfaceGap g : gaps) {
+                g.read(x, t);
+            }
+        }
+        if (startPoints == null) {
+            startPoints = new double[3 * organs.points().pointCount()];
+            organs.points().apply(x, startPoints);
+        }
+        if (t >= nextInhale - half) {
+            nextInhale += period;
+            inhales.add(breath(t, x));
+        }
         if (t >= nextFrame - half && nextFrame <= start + period + 1e-9) {
             double[] p = new double[3 * organs.points().pointCount()];
             organs.points().apply(x, p);
@@ -95,6 +124,26 @@ public final class OrganRecorder implements RunRecorder {
                 eiPoints = p;
             }
             nextFrame = start + EVERY_S * times.size();
+        }
+    }
+
+    /** The points' mean 3D and basal SI displacement from the run's start at an end-inspiration. */
+    private double[] breath(double t, double[] x) {
+        double[] p = new double[startPoints.length];
+        organs.points().apply(x, p);
+        double[] d = new double[p.length];
+        for (int k = 0; k < d.length; k++) {
+            d[k] = p[k] - startPoints[k];
+        }
+        int[] all = new int[p.length / 3];
+        for (int i = 0; i < all.length; i++) {
+            all[i] = i;
+        }
+        try {
+            SiProfile s = SiProfile.of(startPoints, d, new double[] {0, 0, 1}, all);
+            return new double[] {t, s.mean3dM(), s.basalSiM()};
+        } catch (IllegalArgumentException e) {
+            return new double[] {t, Double.NaN, Double.NaN};
         }
     }
 
@@ -131,6 +180,13 @@ public final class OrganRecorder implements RunRecorder {
             c.put("followers", terms.get(i).pairCount());
             c.put("max_penetration_mm", round(1e3 * worstPen[i], 3));
             c.put("max_separation_mm", round(1e3 * worstSep[i], 3));
+            if (i < gaps.size()) {
+                LungSurfaceGap g = gaps.get(i);
+                c.put("lung_surface_max_penetration_mm", round(1e3 * g.maxPenetrationM(), 3));
+                c.put("lung_surface_max_penetration_at", where(g.penetrationTimeS(), g.penetrationAtM()));
+                c.put("lung_surface_max_separation_mm", round(1e3 * g.maxSeparationM(), 3));
+                c.put("lung_surface_max_separation_at", where(g.separationTimeS(), g.separationAtM()));
+            }
             o.put(organs.couplings().get(i).name(), c);
         }
         if (organs.liver() != null && liverMax >= liverMin) {
@@ -168,7 +224,35 @@ public final class OrganRecorder implements RunRecorder {
                 o.put(which < 0 ? "lungs" : which == 0 ? "right_lung" : "left_lung", m);
             }
         }
+        List<Map<String, Object>> breaths = new ArrayList<>();
+        double change = 0;
+        for (int k = 0; k < inhales.size(); k++) {
+            double[] b = inhales.get(k);
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("end_inhale_s", round(b[0], 4));
+            m.put("mean_3d_mm", round(1e3 * b[1], 3));
+            m.put("basal_si_mm", round(1e3 * b[2], 3));
+            breaths.add(m);
+            if (k > 0) {
+                double[] a = inhales.get(k - 1);
+                change = Math.max(change, Math.max(Math.abs(b[1] - a[1]) / Math.abs(b[1]),
+                        Math.abs(b[2] - a[2]) / Math.abs(b[2])));
+            }
+        }
+        o.put("breaths", breaths);
+        if (inhales.size() > 1) {
+            // The largest relative change of a breath's figures from the breath before.
+            o.put("breath_to_breath_change", round(change, 4));
+        }
         summary.put("organs", o);
+    }
+
+    private static Map<String, Object> where(double t, double[] at) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("t_s", Double.isNaN(t) ? null : round(t, 3));
+        m.put("point_mm", Double.isNaN(t) ? null : List.of(round(1e3 * at[0], 1), round(1e3 * at[1], 1),
+                round(1e3 * at[2], 1)));
+        return m;
     }
 
     private static String fmt(double v) {

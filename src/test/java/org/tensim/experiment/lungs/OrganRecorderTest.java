@@ -57,6 +57,21 @@ class OrganRecorderTest {
         assertEquals(1.0 / 3, ((Number) lp.get("end_inhale_s")).doubleValue(), 1e-9, "Ti = T / (1 + E/I)");
         assertEquals(List.of(0, 0, 1), lp.get("superior"));
         assertTrue(summary.containsKey("organs"), "the organs' figures");
+        @SuppressWarnings("unchecked")
+        Map<String, Object> organFigures = (Map<String, Object>) summary.get("organs");
+        List<?> breaths = (List<?>) organFigures.get("breaths");
+        assertEquals(1, breaths.size(), "one end-inspiration in a 1 s run of a 1 s breath: " + breaths);
+        Map<?, ?> breath = (Map<?, ?>) breaths.get(0);
+        assertEquals(1.0 / 3, ((Number) breath.get("end_inhale_s")).doubleValue(), 1e-3);
+        assertTrue(((Number) breath.get("mean_3d_mm")).doubleValue() > 0, "the points moved: " + breath);
+        assertTrue(!organFigures.containsKey("breath_to_breath_change"), "no change between breaths of one breath");
+        for (String lung : new String[] {"right lung on the pleura", "left lung on the pleura"}) {
+            Map<?, ?> c = (Map<?, ?>) organFigures.get(lung);
+            double pen = ((Number) c.get("lung_surface_max_penetration_mm")).doubleValue();
+            double sep = ((Number) c.get("lung_surface_max_separation_mm")).doubleValue();
+            assertTrue(pen >= 0 && pen < 5 && sep >= 0 && sep < 5, lung + ": the lung's surface within mm of its"
+                    + " pleura: " + c);
+        }
         assertTrue(((List<?>) summary.get("files")).contains("lung-points.csv"), "listed: " + summary.get("files"));
         assertTrue(Files.readAllLines(out.resolve(org.tensim.io.RunFolder.MANIFEST)).contains("lung-points.csv"),
                 "in the manifest, so that the next run in the folder removes it");
