@@ -139,8 +139,13 @@ public final class LinearMapping {
         return weight[entry(point, k)];
     }
 
+    /** Point i's entry k's index in the flat arrays; the refusal's message built only on a refusal (no allocation). */
     private int entry(int point, int k) {
-        Check.index("entry of mapped point " + point, k, entries(point));
+        int n = entries(point);
+        if (k < 0 || k >= n) {
+            throw new IndexOutOfBoundsException("entry of mapped point " + point + " " + k
+                    + " is out of range: expected 0 <= index < " + n);
+        }
         return start[point] + k;
     }
 

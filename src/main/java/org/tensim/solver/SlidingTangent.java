@@ -17,7 +17,16 @@ import org.tensim.model.LinearMapping;
  * (terms of order k pen / size, small against k while the followers stay near their gaps). It is symmetric and
  * positive semi-definite, so Newton-Krylov keeps a positive-definite system; the residual it solves is the exact
  * force, so leaving these terms out changes the iterations' count, not the answer. A CONTACT follower counts only
- * where it touches at the linearisation (pen &gt; 0, on the surface). Allocation-free after construction.
+ * where it touches at the linearisation (pen &gt; 0, on the surface).
+ *
+ * <p>Merged rows: the three corners of a triangle are rows of W over neighbouring nodes (48 entries each on
+ * average where the pleura's carriers are blended, docs/lungs.md), and most of their nodes are shared. At each
+ * {@link #set} the follower's three rows are merged into one sparse row {@code a_j = sum_c beta_c W_cj} (one entry
+ * per node, in the order the nodes first appear), so that {@code u = z_i - sum_j a_j z_j} and the products walk one
+ * row once for the gather and once for the scatter rather than three rows twice. The merged rows live in arrays
+ * sized once at construction to the largest sum of three corners' row lengths over the triangles, so any triangle
+ * a follower walks to fits; a node-to-slot scratch (one int per node of the mapping) finds a node's entry and is
+ * reset after each merge. Allocation-free after construction.
  */
 final class SlidingTangent {
     private final int[] follower;
@@ -26,7 +35,11 @@ final class SlidingTangent {
     private final SurfacePairing surface;
     private final int[] tri; // per follower: its triangle at the linearisation, -1 when it takes no force
     private final double[] normal; // 3 per follower
-    private final double[] beta; // 3 per follower
+    private final int capacity; // entries of a merged row: the largest sum of a triangle's three row lengths
+    private final int[] rowLength; // per follower: entries of its merged row
+    private final int[] rowNode; // capacity per follower: node of each merged entry
+    private final double[] rowCoef; // capacity per follower: a_j = sum_c beta_c W_cj (dimensionless)
+    private final int[] slot; // per node of the mapping: its entry in the row being merged, -1 when none
 
     SlidingTangent(int[] follower, double[] stiffness, LinearMapping mapping, SurfacePairing surface) {
         this.follower = follower;
@@ -36,45 +49,79 @@ final class SlidingTangent {
         this.tri = new int[follower.length];
         java.util.Arrays.fill(tri, -1);
         this.normal = new double[3 * follower.length];
-        this.beta = new double[3 * follower.length];
+        int widest = 0;
+        for (int t = 0; t < surface.triangleCount(); t++) {
+            int sum = 0;
+            for (int c = 0; c < 3; c++) {
+                sum += mapping.entries(surface.corner(t, c));
+            }
+            widest = Math.max(widest, sum);
+        }
+        this.capacity = widest;
+        this.rowLength = new int[follower.length];
+        this.rowNode = new int[follower.length * widest];
+        this.rowCoef = new double[follower.length * widest];
+        this.slot = new int[mapping.nodeCount()];
+        java.util.Arrays.fill(slot, -1);
     }
 
     /**
      * Records follower e's plane for the products: its triangle {@code t} (or -1: no force at the linearisation) and
-     * {@code plane} = (n, d, beta) as {@link SurfacePairing#plane} writes it.
+     * {@code plane} = (n, d, beta) as {@link SurfacePairing#plane} writes it; merges the triangle's three corner rows
+     * weighted by beta into the follower's row.
      */
     void set(int e, int t, double[] plane) {
         tri[e] = t;
         if (t < 0) {
+            rowLength[e] = 0;
             return;
         }
         for (int a = 0; a < 3; a++) {
             normal[3 * e + a] = plane[a];
-            beta[3 * e + a] = plane[4 + a];
         }
+        final int base = e * capacity;
+        int length = 0;
+        for (int c = 0; c < 3; c++) {
+            final int p = surface.corner(t, c);
+            final double b = plane[4 + c];
+            for (int k = 0, m = mapping.entries(p); k < m; k++) {
+                final int n = mapping.node(p, k);
+                final double bw = b * mapping.weight(p, k);
+                final int s = slot[n];
+                if (s < 0) {
+                    slot[n] = length;
+                    rowNode[base + length] = n;
+                    rowCoef[base + length] = bw;
+                    length++;
+                } else {
+                    rowCoef[base + s] += bw;
+                }
+            }
+        }
+        for (int k = 0; k < length; k++) {
+            slot[rowNode[base + k]] = -1;
+        }
+        rowLength[e] = length;
     }
 
     /** {@code y += w K z}, layouts as {@link ForceTerm#multiplyAdd}. */
     void multiplyAdd(double[] z, double[] y, int[] offset, double w) {
         for (int e = 0; e < follower.length; e++) {
-            final int t = tri[e];
-            if (t < 0) {
+            if (tri[e] < 0) {
                 continue;
             }
             final double nx = normal[3 * e];
             final double ny = normal[3 * e + 1];
             final double nz = normal[3 * e + 2];
             final int of = offset == null ? 3 * follower[e] : offset[follower[e]];
+            final int base = e * capacity;
+            final int end = base + rowLength[e];
             double nu = of >= 0 ? nx * z[of] + ny * z[of + 1] + nz * z[of + 2] : 0;
-            for (int c = 0; c < 3; c++) {
-                final int p = surface.corner(t, c);
-                final double b = beta[3 * e + c];
-                for (int k = 0, m = mapping.entries(p); k < m; k++) {
-                    final int n = mapping.node(p, k);
-                    final int o = offset == null ? 3 * n : offset[n];
-                    if (o >= 0) {
-                        nu -= b * mapping.weight(p, k) * (nx * z[o] + ny * z[o + 1] + nz * z[o + 2]);
-                    }
+            for (int k = base; k < end; k++) {
+                final int n = rowNode[k];
+                final int o = offset == null ? 3 * n : offset[n];
+                if (o >= 0) {
+                    nu -= rowCoef[k] * (nx * z[o] + ny * z[o + 1] + nz * z[o + 2]);
                 }
             }
             final double s = w * stiffness[e] * nu;
@@ -86,43 +133,36 @@ final class SlidingTangent {
                 y[of + 1] += s * ny;
                 y[of + 2] += s * nz;
             }
-            for (int c = 0; c < 3; c++) {
-                final int p = surface.corner(t, c);
-                final double b = beta[3 * e + c];
-                for (int k = 0, m = mapping.entries(p); k < m; k++) {
-                    final int n = mapping.node(p, k);
-                    final int o = offset == null ? 3 * n : offset[n];
-                    if (o >= 0) {
-                        final double q = -b * mapping.weight(p, k) * s;
-                        y[o] += q * nx;
-                        y[o + 1] += q * ny;
-                        y[o + 2] += q * nz;
-                    }
+            for (int k = base; k < end; k++) {
+                final int n = rowNode[k];
+                final int o = offset == null ? 3 * n : offset[n];
+                if (o >= 0) {
+                    final double q = -rowCoef[k] * s;
+                    y[o] += q * nx;
+                    y[o + 1] += q * ny;
+                    y[o + 2] += q * nz;
                 }
             }
         }
     }
 
     /**
-     * Adds each node's isotropic part, the trace of its diagonal block over 3: k / 3 on a follower, and
-     * {@code (beta_c w)^2 k / 3} on a node carrying corner c of its triangle by weight w, at the planes recorded
-     * (every follower counted as touching).
+     * Adds each node's isotropic part, the trace of its diagonal block over 3, at the planes recorded (every follower
+     * counted as touching). Follower e contributes {@code K_e = k a a^T (x) n n^T} with {@code a} = +1 on the
+     * follower and {@code -a_j} on node j of its merged row, so node j's diagonal block is {@code k a_j^2 n n^T},
+     * trace / 3 = {@code k a_j^2 / 3} (N/m): k / 3 on the follower, and the square of the node's merged coefficient
+     * {@code a_j = sum_c beta_c W_cj}, not the sum of the corners' squares, on a node that carries several corners.
      */
     void addIsotropicStiffness(double[] perNode) {
         for (int e = 0; e < follower.length; e++) {
             final double k = stiffness[e];
             perNode[follower[e]] += k / 3;
-            final int t = tri[e];
-            if (t < 0) {
+            if (tri[e] < 0) {
                 continue;
             }
-            for (int c = 0; c < 3; c++) {
-                final int p = surface.corner(t, c);
-                final double b = beta[3 * e + c];
-                for (int q = 0, m = mapping.entries(p); q < m; q++) {
-                    final double bw = b * mapping.weight(p, q);
-                    perNode[mapping.node(p, q)] += bw * bw * k / 3;
-                }
+            for (int q = e * capacity, end = q + rowLength[e]; q < end; q++) {
+                final double a = rowCoef[q];
+                perNode[rowNode[q]] += a * a * k / 3;
             }
         }
     }
