@@ -252,15 +252,31 @@ class RigidScenesTest {
                 laws:
                   quiet: {type: breathing}
                   deep: {type: breathing, period: 5 s, inspiration: 0.4, amplitude: 2}
+                  plain: {type: breathing, pause: 0}
                 run: {dt: 1 ms, duration: 0.01 s}
                 """);
         org.tensim.scene.diaphragm.BreathingCycle quiet = org.tensim.scene.diaphragm.BreathingCycle.quiet();
-        org.tensim.scene.diaphragm.BreathingCycle deep = new org.tensim.scene.diaphragm.BreathingCycle(5, 1.5);
+        // A file's breathing law ends its expiration in the quiet law's pause unless it says otherwise.
+        org.tensim.scene.diaphragm.BreathingCycle deep = new org.tensim.scene.diaphragm.BreathingCycle(5, 1.5,
+                org.tensim.scene.diaphragm.BreathingCycle.QUIET_PAUSE_SHARE);
+        org.tensim.scene.diaphragm.BreathingCycle plain = new org.tensim.scene.diaphragm.BreathingCycle(4, 2);
         for (int i = 0; i <= 200; i++) {
             double t = i * 0.0731;
             assertEquals(quiet.level(t), s.laws().get("quiet").value(t), 1e-15, "t = " + t);
             assertEquals(2 * deep.level(t), s.laws().get("deep").value(t), 1e-15, "t = " + t);
+            assertEquals(plain.level(t), s.laws().get("plain").value(t), 1e-15, "t = " + t);
         }
         assertEquals(2, s.laws().get("deep").value(2), 1e-12, "end-inspiration at 0.4 T");
+        SceneException e = org.junit.jupiter.api.Assertions.assertThrows(SceneException.class, () -> SceneFiles.load(
+                dir, "pause.yaml", """
+                version: 1
+                bodies:
+                  c: {type: cube}
+                laws:
+                  held: {type: breathing, pause: 1}
+                run: {dt: 1 ms, duration: 0.01 s}
+                """));
+        assertTrue(e.getMessage().contains("pause.yaml:5:34: laws.held.pause") && e.getMessage().contains("end-expiratory pause")
+                && e.getMessage().contains("[0, 1)"), e.getMessage());
     }
 }
