@@ -63,6 +63,14 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     + " assumed: docs/thorax.md, \"Mapped mechanics\".")
     Double coarseEdgeMm;
 
+    @Option(names = "--cluster-cell", paramLabel = "MM",
+            description = "Run the mesh simplified by vertex clustering in cubes of this size, mm, as the scene itself"
+                    + " (drawn, measured and exported as it is: no mapping back to the mesh given); needs --mesh, not"
+                    + " with --coarse-edge, --pick, --realtime or --labels. A cheaper stand-in for a long run, such"
+                    + " as the thorax with the lungs (docs/lungs.md); its error against the full mesh is the user's"
+                    + " to measure.")
+    Double clusterCellMm;
+
     @Option(names = "--vtk-per-cycle", paramLabel = "N",
             description = "VTK frames per breathing cycle, 0 for none (default: ${DEFAULT-VALUE}).")
     int vtkPerCycle = 8;
@@ -130,6 +138,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
         if (coarseEdgeMm != null && (scene.mesh == null || pick.file() != null || !(coarseEdgeMm > 0))) {
             throw usage("--coarse-edge " + coarseEdgeMm + ": expected a positive edge length in mm with --mesh, and"
                     + " without --pick (a pick is a resolution of the generated double dome)");
+        }
+        if (clusterCellMm != null && (scene.mesh == null || coarseEdgeMm != null || picked != null
+                || sceneSpec.mesh().labels() != null || !(clusterCellMm > 0 && Double.isFinite(clusterCellMm)))) {
+            throw usage("--cluster-cell " + clusterCellMm + ": expected a positive cube size in mm with --mesh, and"
+                    + " without --coarse-edge, --pick, --realtime or --labels");
         }
         if (lungs && (sceneSpec.cage().thorax() == null || picked != null || coarseEdgeMm != null)) {
             throw usage("--lungs needs --thorax DIR (the organs' meshes) and runs the built mesh itself: leave out"
@@ -218,6 +231,14 @@ public final class DiaphragmCommand implements Callable<Integer> {
             System.out.println("mechanics on " + decimated.coarse().spec().mesh().describe() + " decimated to "
                     + coarseEdgeMm + " mm edges (" + decimated.mechanicalNodes() + " nodes), carrying the "
                     + decimated.drawnNodes() + " nodes of " + built.source());
+        } else if (clusterCellMm != null) {
+            DiaphragmSetup.Inputs in = DiaphragmSetup.read(sceneSpec);
+            org.tensim.scene.shell.TwoSurfaces s = in.surfaces().surfaces().decimated(1e-3 * clusterCellMm);
+            built = new DiaphragmSetup.Built(org.tensim.scene.diaphragm.DiaphragmScene.build(s, sceneSpec, in.boxes(),
+                    in.bones(), null, sceneSpec.newControls()), in.report(), in.surfaces().mode(), in.source()
+                    + ", clustered in " + clusterCellMm + " mm cubes");
+            System.out.println("mechanics on " + built.source() + ": " + s.mesh().vertexCount() + " vertices of "
+                    + in.surfaces().surfaces().mesh().vertexCount());
         } else {
             built = DiaphragmSetup.build(sceneSpec);
         }
@@ -228,6 +249,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
         Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked, decimated);
         if (decimated != null) {
             fields.put("coarse_edge_mm", coarseEdgeMm);
+        }
+        if (clusterCellMm != null) {
+            fields.put("cluster_cell_mm", clusterCellMm);
         }
         if (pick.file() != null) {
             fields.put("resolution_pick_file", pick.file().toString());
