@@ -34,7 +34,8 @@ class DiaphragmClusterCellTest {
         assertTrue(clusteredNodes < fullNodes / 2, clusteredNodes + " clustered nodes against " + fullNodes);
         assertEquals(20.0, ((Number) c.get("cluster_cell_mm")).doubleValue());
         assertTrue(!c.containsKey("drawn_nodes"), "no mapping back to the mesh given");
-        assertTrue(String.valueOf(c.get("source")).contains("clustered in 20.0 mm cubes"), "source: " + c.get("source"));
+        assertTrue(String.valueOf(c.get("source")).contains("clustered in 20.0 mm cubes"),
+                "source: " + c.get("source"));
     }
 
     @Test
