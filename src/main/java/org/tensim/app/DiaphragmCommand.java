@@ -139,7 +139,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
             throw usage("--coarse-edge " + coarseEdgeMm + ": expected a positive edge length in mm with --mesh, and"
                     + " without --pick (a pick is a resolution of the generated double dome)");
         }
-        if (clusterCellMm != null && (scene.mesh == null || coarseEdgeMm != null || picked != null
+        if (clusterCellMm != null && (scene.mesh == null || coarseEdgeMm != null || picked != null || realtime
                 || sceneSpec.mesh().labels() != null || !(clusterCellMm > 0 && Double.isFinite(clusterCellMm)))) {
             throw usage("--cluster-cell " + clusterCellMm + ": expected a positive cube size in mm with --mesh, and"
                     + " without --coarse-edge, --pick, --realtime or --labels");

@@ -230,10 +230,11 @@ public final class OrganRecorder implements RunRecorder {
             double[] b = inhales.get(k);
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("end_inhale_s", round(b[0], 4));
-            m.put("mean_3d_mm", round(1e3 * b[1], 3));
-            m.put("basal_si_mm", round(1e3 * b[2], 3));
+            // Not measured (a cloud SiProfile refuses) is null in the JSON, not NaN.
+            m.put("mean_3d_mm", Double.isNaN(b[1]) ? null : round(1e3 * b[1], 3));
+            m.put("basal_si_mm", Double.isNaN(b[2]) ? null : round(1e3 * b[2], 3));
             breaths.add(m);
-            if (k > 0) {
+            if (k > 0 && !Double.isNaN(b[1]) && !Double.isNaN(inhales.get(k - 1)[1])) {
                 double[] a = inhales.get(k - 1);
                 change = Math.max(change, Math.max(Math.abs(b[1] - a[1]) / Math.abs(b[1]),
                         Math.abs(b[2] - a[2]) / Math.abs(b[2])));
