@@ -372,4 +372,20 @@ public final class DiaphragmOptions {
         }
         return m;
     }
+
+    /**
+     * As {@link #controlValues()}, and with the lungs in the state ({@code lungs}) the muscle action starts at the
+     * lungs' default ({@link org.tensim.scene.lungs.LungsMuscle#startingPa}, as {@code tensim diaphragm --lungs}
+     * runs) unless {@code --muscle-action} gives one.
+     */
+    public java.util.Map<String, java.util.Map.Entry<String, Double>> controlValues(boolean lungs) {
+        java.util.Map<String, java.util.Map.Entry<String, Double>> m = controlValues();
+        Double pa = lungs ? org.tensim.scene.lungs.LungsMuscle.startingPa(muscleLoad == null
+                ? org.tensim.scene.diaphragm.BoundaryConditions.defaults().muscleLoad() : muscleLoad) : null;
+        if (pa != null) {
+            m.putIfAbsent(org.tensim.scene.tunable.DiaphragmViewScene.MUSCLE_ACTION,
+                    java.util.Map.entry("--lungs", pa));
+        }
+        return m;
+    }
 }

@@ -153,7 +153,7 @@ public final class GuiCommand implements Callable<Integer> {
                 !paused && !script, threadCount,
                 keep && !organs && TunableScenes.opensInRealTime(scene) && !options.paperModel(),
                 options.muscleLoad != null, options.thorax != null && !organs,
-                sceneFile.given() ? Map.of() : options.controlValues());
+                sceneFile.given() ? Map.of() : options.controlValues(organs));
         w.tuning().setSceneOptions(sceneArgs);
         if (picked != null) {
             String note = "mechanics at " + picked.describe();

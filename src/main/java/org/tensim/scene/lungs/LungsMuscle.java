@@ -29,15 +29,21 @@ public final class LungsMuscle {
     }
 
     /**
+     * The muscle action a view's controls start at with the lungs in place, Pa: {@link #FIBRE_STRESS_PA} under the
+     * fibres' active tension, null under the pressure loads (their own default: not measured with the lungs).
+     */
+    public static Double startingPa(BoundaryConditions.MuscleLoad load) {
+        return load == BoundaryConditions.MuscleLoad.FIBRES ? FIBRE_STRESS_PA : null;
+    }
+
+    /**
      * The spec with the lungs' default muscle action where the spec leaves the muscle action to its load's default
      * and the load is the fibres' active tension; any other spec unchanged (a muscle action given is the user's, and
      * the pressure loads were not measured with the lungs).
      */
     public static DiaphragmSpec applyTo(DiaphragmSpec spec) {
-        if (spec.breathing().musclePa() != null
-                || spec.boundary().muscleLoad() != BoundaryConditions.MuscleLoad.FIBRES) {
-            return spec;
-        }
-        return spec.withBreathing(spec.breathing().withMusclePa(FIBRE_STRESS_PA));
+        Double pa = startingPa(spec.boundary().muscleLoad());
+        return spec.breathing().musclePa() != null || pa == null ? spec
+                : spec.withBreathing(spec.breathing().withMusclePa(pa));
     }
 }
