@@ -67,7 +67,9 @@ public final class ThoraxOrgans {
 
         /**
          * The defaults: the parenchyma, no liver volume ({@link #withLiver}: its contact makes the thorax's RK2
-         * run diverge within 0.001 s, and bdf2's at 2.5 ms at 1.5 s, docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
+         * run diverge within 0.001 s, and with the blended pleura bdf2's at 2.5 ms completes the cycle on the
+         * clustered diaphragm with the liver moving 1.25 times the right dome and its contact not holding,
+         * docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, followers within 4 mm of
