@@ -58,6 +58,7 @@ class DiaphragmOptionsTest {
         v.put("muscle-action", 2000.0);
         v.put("period", 5.0);
         v.put("ie-ratio", 1.5);
+        v.put("expiratory-pause", 0.1);
         v.put("attach-threshold", 15.0);
         v.put("attachment", "paper-threshold");
         v.put("band-stiffness", 3e7);

@@ -46,7 +46,8 @@ class PresetSceneTest {
         Path thorax = Files.createDirectories(dir.resolve("thorax"));
         List<String> ribs = List.of("--units", "m", "--thickness", "3", "--rings", "12", "--boxes", boxes.toString(),
                 "--tendon-rule", "geodesic", "--model", "default", "--rib-amplitude", "1.5", "--muscle-action", "2000",
-                "--period", "5", "--ie-ratio", "1.5", "--attach-threshold", "15", "--attachment", "band",
+                "--period", "5", "--ie-ratio", "1.5", "--expiratory-pause", "0.1", "--attach-threshold", "15",
+                "--attachment", "band",
                 "--band-stiffness", "3e5", "--band-all-segments", "--muscle-load", "pressure", "--weld-tolerance",
                 "0.002", "--min-piece-fraction", "0.02", "--tendon-normal", "0,0.1,1", "--tendon-point", "1,2,3",
                 "--tendon-fraction", "0.2", "--tissue-model", "springs", "--action-line", "0,10,40",
