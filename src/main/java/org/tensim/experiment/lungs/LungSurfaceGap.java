@@ -69,26 +69,24 @@ final class LungSurfaceGap {
         }
     }
 
-    /** The signed distance of a point to the pleura at its last read, m (+ outside). */
+    /**
+     * The signed distance of a point to the pleura at its last read, m (+ outside): the closest point's distance, with
+     * the side of the nearest triangle's plane, which holds the closest point, so any corner of it gives the side.
+     */
     private double signedDistance(TriangleTree tree, int[] stack, double px, double py, double pz) {
         int t = tree.nearest(px, py, pz, stack, out);
         int a = 3 * triangles[3 * t];
         int b = 3 * triangles[3 * t + 1];
         int c = 3 * triangles[3 * t + 2];
         double[] p = pleuraXyz;
-        double cx = out[0] * p[a] + out[1] * p[b] + out[2] * p[c];
-        double cy = out[0] * p[a + 1] + out[1] * p[b + 1] + out[2] * p[c + 1];
-        double cz = out[0] * p[a + 2] + out[1] * p[b + 2] + out[2] * p[c + 2];
         double ux = p[b] - p[a];
         double uy = p[b + 1] - p[a + 1];
         double uz = p[b + 2] - p[a + 2];
         double wx = p[c] - p[a];
         double wy = p[c + 1] - p[a + 1];
         double wz = p[c + 2] - p[a + 2];
-        double nx = uy * wz - uz * wy;
-        double ny = uz * wx - ux * wz;
-        double nz = ux * wy - uy * wx;
-        double side = (px - cx) * nx + (py - cy) * ny + (pz - cz) * nz;
+        double side = (px - p[a]) * (uy * wz - uz * wy) + (py - p[a + 1]) * (uz * wx - ux * wz)
+                + (pz - p[a + 2]) * (ux * wy - uy * wx);
         double dist = Math.sqrt(out[3]);
         return side >= 0 ? dist : -dist;
     }
