@@ -237,15 +237,18 @@ public final class SceneRunner {
         out[o + 1] = sep;
     }
 
-    /** True when every follower of s is among the nodes. */
+    /** True when every follower of s (every node of a mapped follower) is among the nodes. */
     private static boolean covers(int[] nodes, SurfaceSliding s) {
         java.util.BitSet in = new java.util.BitSet();
         for (int n : nodes) {
             in.set(n);
         }
+        org.tensim.model.LinearMapping f = s.followers();
         for (int e = 0; e < s.pairCount(); e++) {
-            if (!in.get(s.follower(e))) {
-                return false;
+            for (int k = 0; k < f.entries(e); k++) {
+                if (!in.get(f.node(e, k))) {
+                    return false;
+                }
             }
         }
         return true;

@@ -10,6 +10,10 @@ import org.tensim.model.LinearMapping;
  * of the state's nodes (driven and fixed nodes may carry points: the forces they receive are ignored by their zero
  * inverse mass); its triangles join the points, outward normal by the right-hand rule on the winding.
  *
+ * <p>The followers are nodes of the state or points mapped from its nodes, {@code y = V x} (a lung's surface
+ * vertices carried by its lattice, {@link #mapped}); a mapped follower's force reaches its nodes by {@code V^T}, as
+ * the surface's does by {@code W^T}, so the pair's total force and moment still vanish at the nodes.
+ *
  * <p>Follower i (position y, stiffness k_i in N/m, gap g_i in m) is paired with a triangle (a, b, c) of unit normal
  * n; with {@code d = n . (y - a)} its signed distance to the triangle's plane (m, + outside) and {@code pen = g - d}:
  * <pre>
@@ -17,7 +21,7 @@ import org.tensim.model.LinearMapping;
  *   CONTACT (one-sided):  E = k max(0, pen)^2 / 2    (pushed out to the gap along +n, free to leave)
  *   f_follower = -dE/dd n = k pen n                  (along n only: frictionless)
  *   f_corner_j = -k pen beta_j n,  j = a, b, c        (beta: barycentric coordinates of the projection y - d n)
- *   F_nodes   += W^T f_corners                        ({@link LinearMapping#addTranspose})
+ *   F_nodes   += W^T f_corners + V^T f_followers      ({@link LinearMapping#addTranspose})
  * </pre>
  * These are exactly minus the gradient of E for the pairing held: moving a corner along the plane leaves the plane,
  * so d, unchanged, and moving corner j by e along n raises the plane under the projection by beta_j e, so
@@ -49,7 +53,8 @@ public final class SurfaceSliding implements ForceTerm {
         CONTACT
     }
 
-    private final int[] follower; // node ids
+    private final LinearMapping followers; // y = V x: a node per row for node followers
+    private final int[] follower; // node ids for node followers, -1 per mapped follower
     private final double[] stiffness; // N/m per follower
     private final double[] gap; // m per follower
     private final Mode mode;
@@ -58,6 +63,10 @@ public final class SurfaceSliding implements ForceTerm {
     private final int[] pair; // triangle per follower
     private final double[] points; // force pass: p = W x, 3 per point
     private final double[] pointForces; // force pass: 3 per point, N
+    private final double[] ys; // force pass: follower positions, 3 per follower, m
+    private final double[] followerForces; // force pass: 3 per follower, N
+    private final double[] readYs; // energy and read-outs (under readLock)
+    private final double[] linYs; // linearisation
     private final double[] plane = new double[7]; // force pass: n, d, beta
     private final double[] readPoints; // energy and read-outs (under readLock)
     private final double[] readPlane = new double[7];
@@ -90,47 +99,29 @@ public final class SurfaceSliding implements ForceTerm {
      */
     public SurfaceSliding(int[] followers, LinearMapping surfacePoints, int[] triangles, double[] stiffness, Mode mode,
             double[] gapsM, double[] x) {
-        int nodes = x.length / 3;
-        if (surfacePoints.nodeCount() > nodes) {
-            throw new IllegalArgumentException("the sliding surface's mapping refers to " + surfacePoints.nodeCount()
-                    + " nodes but the positions have " + nodes);
-        }
-        if (followers.length == 0 || stiffness.length != followers.length || gapsM.length != followers.length) {
-            throw new IllegalArgumentException("a sliding term needs followers and one stiffness and gap each: got "
-                    + followers.length + " followers, " + stiffness.length + " stiffnesses, " + gapsM.length
-                    + " gaps");
-        }
-        if (mode == null) {
-            throw new IllegalArgumentException("a sliding term needs a mode: SLIDING or CONTACT");
-        }
-        boolean[] carries = new boolean[nodes];
-        for (int i = 0; i < surfacePoints.pointCount(); i++) {
-            for (int k = 0; k < surfacePoints.entries(i); k++) {
-                carries[surfacePoints.node(i, k)] = true;
-            }
-        }
-        boolean[] seen = new boolean[nodes];
-        for (int e = 0; e < followers.length; e++) {
-            int j = followers[e];
-            if (j < 0 || j >= nodes) {
-                throw new IllegalArgumentException("follower " + e + " is node " + j + ": expected a node id in [0, "
-                        + nodes + ")");
-            }
-            if (seen[j] || carries[j]) {
-                throw new IllegalArgumentException("follower " + e + " (node " + j + ") "
-                        + (seen[j] ? "is listed twice" : "carries a point of the surface it slides on"));
-            }
-            seen[j] = true;
-            if (!(stiffness[e] > 0) || Double.isInfinite(stiffness[e])) {
-                throw new IllegalArgumentException("follower " + e + " (node " + j + ") has stiffness " + stiffness[e]
-                        + " N/m: expected a positive finite value");
-            }
-            if (!Double.isFinite(gapsM[e])) {
-                throw new IllegalArgumentException("follower " + e + " (node " + j + ") has gap " + gapsM[e]
-                        + " m: expected a finite length");
-            }
-        }
-        this.follower = followers.clone();
+        this(SlidingChecks.nodeFollowers(followers, x.length / 3), followers.clone(), surfacePoints, triangles,
+                stiffness, mode, gapsM, x);
+    }
+
+    /**
+     * A term whose followers are points mapped from the state's nodes, {@code y = V x} (a lung's surface vertices
+     * carried by its lattice): each follower's force reaches its nodes by V's transpose.
+     *
+     * @param followers the followers' points on the state's nodes, none of whose nodes carries a surface point
+     * @see #SurfaceSliding(int[], LinearMapping, int[], double[], Mode, double[], double[]) the other arguments
+     */
+    public static SurfaceSliding mapped(LinearMapping followers, LinearMapping surfacePoints, int[] triangles,
+            double[] stiffness, Mode mode, double[] gapsM, double[] x) {
+        int[] none = new int[followers.pointCount()];
+        Arrays.fill(none, -1);
+        return new SurfaceSliding(followers, none, surfacePoints, triangles, stiffness, mode, gapsM, x);
+    }
+
+    private SurfaceSliding(LinearMapping followers, int[] nodeIds, LinearMapping surfacePoints, int[] triangles,
+            double[] stiffness, Mode mode, double[] gapsM, double[] x) {
+        SlidingChecks.refuse(followers, surfacePoints, stiffness, gapsM, mode, x.length / 3);
+        this.followers = followers;
+        this.follower = nodeIds;
         this.stiffness = stiffness.clone();
         this.gap = gapsM.clone();
         this.mode = mode;
@@ -140,6 +131,11 @@ public final class SurfaceSliding implements ForceTerm {
         this.pointForces = new double[points.length];
         this.readPoints = new double[points.length];
         this.linPoints = new double[points.length];
+        int n = followers.pointCount();
+        this.ys = new double[3 * n];
+        this.followerForces = new double[3 * n];
+        this.readYs = new double[3 * n];
+        this.linYs = new double[3 * n];
         mapping.apply(x, points);
         for (int t = 0; t < surface.triangleCount(); t++) {
             if (!surface.plane(points, t, x, 0, plane)) {
@@ -148,12 +144,13 @@ public final class SurfaceSliding implements ForceTerm {
                         + ") has zero area: expected a triangle with three distinct corners");
             }
         }
-        this.pair = new int[followers.length];
+        this.pair = new int[n];
         repair(x);
-        this.tangent = new SlidingTangent(this.follower, this.stiffness, mapping, surface);
-        this.restTangent = new SlidingTangent(this.follower, this.stiffness, mapping, surface);
-        for (int e = 0; e < follower.length; e++) {
-            int tri = surface.walk(points, pair[e], x, 3 * follower[e], plane);
+        this.tangent = new SlidingTangent(followers, this.stiffness, mapping, surface);
+        this.restTangent = new SlidingTangent(followers, this.stiffness, mapping, surface);
+        followers.apply(x, ys);
+        for (int e = 0; e < n; e++) {
+            int tri = surface.walk(points, pair[e], ys, 3 * e, plane);
             restTangent.set(e, tri, plane);
         }
     }
@@ -167,13 +164,26 @@ public final class SurfaceSliding implements ForceTerm {
     public static SurfaceSliding heldAtRest(int[] followers, LinearMapping surfacePoints, int[] triangles,
             double[] stiffness, Mode mode, double gapM, double[] x) {
         SurfaceSliding s = new SurfaceSliding(followers, surfacePoints, triangles, stiffness, mode, 0, x);
-        double[] d0 = new double[followers.length];
-        s.distancesM(x, d0);
+        s.holdAtRest(gapM, x);
+        return s;
+    }
+
+    /** {@link #heldAtRest} for followers mapped from the state's nodes ({@link #mapped}). */
+    public static SurfaceSliding mappedHeldAtRest(LinearMapping followers, LinearMapping surfacePoints,
+            int[] triangles, double[] stiffness, Mode mode, double gapM, double[] x) {
+        SurfaceSliding s = mapped(followers, surfacePoints, triangles, stiffness, mode,
+                filled(followers.pointCount(), 0), x);
+        s.holdAtRest(gapM, x);
+        return s;
+    }
+
+    private void holdAtRest(double gapM, double[] x) {
+        double[] d0 = new double[gap.length];
+        distancesM(x, d0);
         for (int e = 0; e < d0.length; e++) {
             double d = Double.isNaN(d0[e]) ? gapM : d0[e];
-            s.gap[e] = mode == Mode.SLIDING ? d : Math.min(gapM, d);
+            gap[e] = mode == Mode.SLIDING ? d : Math.min(gapM, d);
         }
-        return s;
     }
 
     private static double[] filled(int n, double v) {
@@ -189,9 +199,10 @@ public final class SurfaceSliding implements ForceTerm {
     public void repair(double[] x) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
+            followers.apply(x, readYs);
             surface.bound(readPoints);
-            for (int e = 0; e < follower.length; e++) {
-                pair[e] = surface.nearest(readPoints, x, 3 * follower[e]);
+            for (int e = 0; e < pair.length; e++) {
+                pair[e] = surface.nearest(readPoints, readYs, 3 * e);
             }
         }
     }
@@ -199,11 +210,13 @@ public final class SurfaceSliding implements ForceTerm {
     @Override
     public void addForces(double t, double[] x, double[] v, double[] f) {
         mapping.apply(x, points);
+        followers.apply(x, ys);
         Arrays.fill(pointForces, 0);
+        Arrays.fill(followerForces, 0);
         final double[] pl = plane;
-        for (int e = 0; e < follower.length; e++) {
-            int i = 3 * follower[e];
-            int tri = surface.walk(points, pair[e], x, i, pl);
+        for (int e = 0; e < pair.length; e++) {
+            int i = 3 * e;
+            int tri = surface.walk(points, pair[e], ys, i, pl);
             if (tri < 0) {
                 continue; // a triangle crushed to zero area has no normal: no force until it opens again
             }
@@ -214,9 +227,9 @@ public final class SurfaceSliding implements ForceTerm {
             }
             double s = stiffness[e] * pen;
             double fx = s * pl[0], fy = s * pl[1], fz = s * pl[2];
-            f[i] += fx;
-            f[i + 1] += fy;
-            f[i + 2] += fz;
+            followerForces[i] += fx;
+            followerForces[i + 1] += fy;
+            followerForces[i + 2] += fz;
             for (int c = 0; c < 3; c++) {
                 int o = 3 * surface.corner(tri, c);
                 double b = pl[4 + c];
@@ -226,6 +239,7 @@ public final class SurfaceSliding implements ForceTerm {
             }
         }
         mapping.addTranspose(pointForces, f);
+        followers.addTranspose(followerForces, f);
     }
 
     /**
@@ -235,8 +249,9 @@ public final class SurfaceSliding implements ForceTerm {
     @Override
     public void linearise(double t, double[] x) {
         mapping.apply(x, linPoints);
-        for (int e = 0; e < follower.length; e++) {
-            int tri = surface.walk(linPoints, pair[e], x, 3 * follower[e], linPlane);
+        followers.apply(x, linYs);
+        for (int e = 0; e < pair.length; e++) {
+            int tri = surface.walk(linPoints, pair[e], linYs, 3 * e, linPlane);
             if (tri >= 0 && mode == Mode.CONTACT
                     && (gap[e] - linPlane[3] <= 0 || surface.beyondBorder(tri, linPlane))) {
                 tri = -1;
@@ -262,9 +277,10 @@ public final class SurfaceSliding implements ForceTerm {
     public double energy(double t, double[] x) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
+            followers.apply(x, readYs);
             double sum = 0;
-            for (int e = 0; e < follower.length; e++) {
-                double pen = penetration(e, x);
+            for (int e = 0; e < pair.length; e++) {
+                double pen = penetration(e);
                 if (!Double.isNaN(pen) && (mode == Mode.SLIDING || pen > 0)) {
                     sum += 0.5 * stiffness[e] * pen * pen;
                 }
@@ -273,9 +289,9 @@ public final class SurfaceSliding implements ForceTerm {
         }
     }
 
-    /** g - d of follower e at x with readPoints mapped; NaN when off the surface (CONTACT) or degenerate. */
-    private double penetration(int e, double[] x) {
-        int tri = surface.walk(readPoints, pair[e], x, 3 * follower[e], readPlane);
+    /** g - d of follower e with readPoints and readYs mapped; NaN when off the surface (CONTACT) or degenerate. */
+    private double penetration(int e) {
+        int tri = surface.walk(readPoints, pair[e], readYs, 3 * e, readPlane);
         if (tri < 0 || mode == Mode.CONTACT && surface.beyondBorder(tri, readPlane)) {
             return Double.NaN;
         }
@@ -290,8 +306,9 @@ public final class SurfaceSliding implements ForceTerm {
     public void distancesM(double[] x, double[] out) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
-            for (int e = 0; e < follower.length; e++) {
-                out[e] = gap[e] - penetration(e, x);
+            followers.apply(x, readYs);
+            for (int e = 0; e < pair.length; e++) {
+                out[e] = gap[e] - penetration(e);
             }
         }
     }
@@ -309,9 +326,10 @@ public final class SurfaceSliding implements ForceTerm {
     private double extreme(double[] x, double sign) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
+            followers.apply(x, readYs);
             double m = 0;
-            for (int e = 0; e < follower.length; e++) {
-                double pen = penetration(e, x);
+            for (int e = 0; e < pair.length; e++) {
+                double pen = penetration(e);
                 if (!Double.isNaN(pen)) {
                     m = Math.max(m, sign * pen);
                 }
@@ -322,12 +340,24 @@ public final class SurfaceSliding implements ForceTerm {
 
     /** Number of follower-triangle pairs (one per follower). */
     public int pairCount() {
-        return follower.length;
+        return pair.length;
     }
 
-    /** Node id of follower e. */
+    /**
+     * Node id of follower e, for node followers.
+     *
+     * @throws IllegalStateException when the followers are mapped points ({@link #followers} gives their nodes)
+     */
     public int follower(int e) {
+        if (follower[e] < 0) {
+            throw new IllegalStateException("follower " + e + " is a mapped point, not a node: read followers()");
+        }
         return follower[e];
+    }
+
+    /** The followers as points of the state's nodes (a node per row for node followers). */
+    public LinearMapping followers() {
+        return followers;
     }
 
     /** The triangle follower e is paired with now (its index in the triangles given). */
@@ -352,7 +382,8 @@ public final class SurfaceSliding implements ForceTerm {
 
     @Override
     public String toString() {
-        return "SurfaceSliding[" + mode + ", " + follower.length + " followers on " + surface.triangleCount()
+        return "SurfaceSliding[" + mode + ", " + pair.length + (follower.length > 0 && follower[0] < 0 ? " mapped" : "")
+                + " followers on " + surface.triangleCount()
                 + " triangles of " + mapping.pointCount() + " points]";
     }
 }

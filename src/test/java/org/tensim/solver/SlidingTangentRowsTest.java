@@ -141,7 +141,8 @@ class SlidingTangentRowsTest {
         for (long seed = 1; seed <= 5; seed++) {
             Case c = blended(500 + seed, 12);
             SurfacePairing surface = pairing(c);
-            SlidingTangent tangent = new SlidingTangent(c.followers(), c.stiffness(), c.mapping(), surface);
+            SlidingTangent tangent = new SlidingTangent(SlidingChecks.nodeFollowers(c.followers(),
+                c.x().length / 3), c.stiffness(), c.mapping(), surface);
             Random r = new Random(seed);
             int followers = c.followers().length;
             int[] tri = new int[followers];
@@ -227,7 +228,8 @@ class SlidingTangentRowsTest {
     void settingAndProductsDoNotAllocate() {
         Case c = blended(701, 12);
         SurfacePairing surface = pairing(c);
-        SlidingTangent tangent = new SlidingTangent(c.followers(), c.stiffness(), c.mapping(), surface);
+        SlidingTangent tangent = new SlidingTangent(SlidingChecks.nodeFollowers(c.followers(),
+                c.x().length / 3), c.stiffness(), c.mapping(), surface);
         Random r = new Random(7);
         double[][] planes = new double[16][];
         for (int i = 0; i < planes.length; i++) {
