@@ -4,13 +4,13 @@ import org.tensim.model.LinearMapping;
 import org.tensim.scene.thorax.TriangleTree;
 
 /**
- * How far a lung's own surface lies from its pleura: the lung's surface vertices (carried by its lattice) against the
- * pleura's triangles (carried by the diaphragm, the ribs and the fixed frame), both at the state given. At rest the two
- * coincide (the pleura is the lung's rest surface), so each vertex's signed distance to the pleura is its departure:
- * positive outside the pleura (the lung pressed into the wall: penetration), negative inside it (the lung come away
- * from the wall: separation). This is the figure of the lung itself, where the sliding term's own departures
- * ({@code SurfaceSliding}) are those of its followers, lattice nodes held at their rest distances from the pleura's
- * planes.
+ * How far a lung's own surface lies from its pleura: the lung's outer surface vertices (carried by its lattice)
+ * against the pleura's triangles (carried by the diaphragm, the ribs and the fixed frame), both at the state given. At
+ * rest the two coincide (the pleura is the lung's outer rest surface), so each vertex's signed distance to the pleura
+ * is its departure: positive outside the pleura (the lung pressed into the wall: penetration), negative inside it (the
+ * lung come away from the wall: separation). The same vertices are the sliding term's followers
+ * ({@code SurfaceSliding}); its own departures are to the planes of the triangles each is paired with, walked from
+ * step to step, where this reads the distance to the nearest point of the whole pleura, searched anew.
  *
  * <p>The sign is the side of the nearest triangle's plane (outward by winding); the distance the closest point's. The
  * pleura's tree is rebuilt at each read (a read-out, not a solver stage).

@@ -62,7 +62,7 @@ public final class OrganRecorder implements RunRecorder {
         this.worstSep = new double[terms.size()];
         for (int i = 0; i < organs.lungs().size(); i++) {
             ThoraxOrgans.Coupling c = organs.couplings().get(i);
-            gaps.add(new LungSurfaceGap(organs.lungs().get(i).body().surfaceMapping(), c.surface(), c.triangles()));
+            gaps.add(new LungSurfaceGap(c.followers(), c.surface(), c.triangles()));
         }
     }
 

@@ -144,10 +144,24 @@ final class OrganGeometry {
         return b.build();
     }
 
+    /** Points 0 .. ids.length-1 on the nodes ids, weight 1, for a state of {@code nodeCount} nodes. */
+    static LinearMapping nodes(int[] ids, int nodeCount) {
+        LinearMapping.Builder b = new LinearMapping.Builder(nodeCount);
+        for (int id : ids) {
+            b.add(new int[] {id}, new double[] {1});
+        }
+        return b.build();
+    }
+
     /** The same rows on a state of more nodes. */
     static LinearMapping rebase(LinearMapping m, int nodeCount) {
+        return rows(m, java.util.stream.IntStream.range(0, m.pointCount()).toArray(), nodeCount);
+    }
+
+    /** Rows {@code rows} of m, in that order, on a state of {@code nodeCount} nodes (at least m's). */
+    static LinearMapping rows(LinearMapping m, int[] rows, int nodeCount) {
         LinearMapping.Builder b = new LinearMapping.Builder(nodeCount);
-        for (int i = 0; i < m.pointCount(); i++) {
+        for (int i : rows) {
             int e = m.entries(i);
             int[] nodes = new int[e];
             double[] w = new double[e];

@@ -11,6 +11,7 @@ import org.tensim.scene.diaphragm.RibCage;
 import org.tensim.scene.thorax.TriangleTree;
 import org.tensim.scene.volume.VolumeBody;
 import org.tensim.scene.volume.VolumeParameters;
+import org.tensim.solver.SlidingStiffness;
 import org.tensim.solver.SurfaceSliding;
 
 /**
@@ -18,10 +19,12 @@ import org.tensim.solver.SurfaceSliding;
  * diaphragm, its cage and anchors, and every figure computed on them, are unchanged), with the couplings that move
  * them in the same force pass as the diaphragm:
  * <ul>
- * <li>each lung a lattice volume ({@link LungVolumes}) whose followers (the lattice nodes within
- * {@link Options#followerBandM} of its surface) slide, bilaterally and without friction, on the parietal pleura
- * ({@link PleuraCarriers}: the lung's own rest surface carried by the diaphragm's upper surface, the ribs' frames
- * and fixed frames);</li>
+ * <li>each lung a lattice volume ({@link LungVolumes}) whose outer surface ({@link LungOuterSurface}: the merged
+ * lobes without the fissures' sheets, which lie inside the lung) slides, bilaterally and without friction, on the
+ * parietal pleura ({@link PleuraCarriers}: that outer surface at rest, carried by the diaphragm's upper surface, the
+ * ribs' frames and fixed frames). The followers are the outer surface's own vertices, carried by the lattice's
+ * trilinear weights ({@link VolumeBody#surfaceMapping}): so what is held on the pleura is the lung's surface itself,
+ * and its departure from the pleura is the sliding term's own penetration and separation;</li>
  * <li>the liver (optional) a lattice volume whose followers near the diaphragm (lattice nodes within the band
  * of its surface and {@link Options#liverReachM} of the diaphragm's lower surface) touch that lower surface,
  * one-sided, carried by the diaphragm's own nodes; held behind by zero-length springs to fixed anchors at its
@@ -37,13 +40,14 @@ public final class ThoraxOrgans {
      * @param lung              the parenchyma ({@link LungVolumes#PARENCHYMA})
      * @param liver             the liver's tissue, or null for no liver volume
      * @param rules             the pleura's carrier rule
-     * @param pleuraPaPerM      the lungs' sliding stiffness per area, Pa/m (a follower's k = this times h^2)
+     * @param pleuraPaPerM      the lungs' sliding stiffness per area, Pa/m (a surface vertex's k = this times its
+     *                          lumped area, {@link SlidingStiffness})
      * @param liverPaPerM       the liver's contact stiffness per area, Pa/m
      * @param liverHoldPaPerM   the bare area's springs per area, Pa/m
      * @param liverReachM       how far from the diaphragm's lower surface a liver surface node may be to be a
      *                          follower, m
-     * @param followerBandM     how far from its organ's surface (either side) a lattice node may be to be a
-     *                          follower, m: small against the surface's radius of curvature, so that the rest
+     * @param followerBandM     how far from the liver's surface (either side) a lattice node may be to be a
+     *                          contact follower, m: small against the surface's radius of curvature, so that the rest
      *                          distance it is held at is the same to its triangle's plane and to the neighbours'
      *                          it walks to (a follower at d from a surface bending by theta between triangles sees
      *                          their planes differ by about d theta^2 / 2)
@@ -127,16 +131,17 @@ public final class ThoraxOrgans {
             .withFit(org.tensim.scene.volume.SpringFit.VOLUMETRIC).withDampingTime(0.005);
 
     /**
-     * A coupling: followers (node ids) held on a surface carried by the state's nodes.
+     * A coupling: followers (points of the state's nodes: a lung's surface vertices, the liver's lattice nodes) held
+     * on a surface carried by the state's nodes.
      *
      * @param name      for reports
-     * @param followers node ids
+     * @param followers the followers on the state's nodes
      * @param surface   the surface's points on the state's nodes
      * @param triangles the surface's triangles, 3 point ids each, outward by winding
      * @param stiffness per follower, N/m
      * @param bilateral sliding (held on the surface) rather than one-sided contact
      */
-    public record Coupling(String name, int[] followers, LinearMapping surface, int[] triangles, double[] stiffness,
+    public record Coupling(String name, LinearMapping followers, LinearMapping surface, int[] triangles, double[] stiffness,
             boolean bilateral) {
     }
 
@@ -193,18 +198,26 @@ public final class ThoraxOrgans {
         List<PleuraCarriers.Rib> ribs = OrganGeometry.ribs(t, segs);
         int[] upper = scene.upperTriangles();
         List<PleuraCarriers.Built> pleurae = new ArrayList<>();
+        List<LungOuterSurface> outers = new ArrayList<>();
         for (LungVolumes.Lung l : lungs) {
-            pleurae.add(PleuraCarriers.build(t, l.surface(), upper, ribs, o.rules(), 0));
+            LungOuterSurface outer = LungOuterSurface.of(l.surface(), LungOuterSurface.DEFAULT_FISSURE_M);
+            outers.add(outer);
+            pleurae.add(PleuraCarriers.build(t, outer.outer(), upper, ribs, o.rules(), 0));
         }
         int n = t.nodeCount();
         List<Coupling> couplings = new ArrayList<>();
         for (int i = 0; i < lungs.size(); i++) {
-            VolumeBody body = lungs.get(i).body();
-            double h = o.lung().cellSizeM();
-            int[] f = OrganGeometry.surfaceNodes(t, body, o.followerBandM(), null, 0);
+            TriangleMesh outer = outers.get(i).outer();
+            LinearMapping f = OrganGeometry.rows(lungs.get(i).body().surfaceMapping(), outers.get(i).mergedVertex(),
+                    n);
+            double[] area = SlidingStiffness.lumpedAreas(java.util.stream.IntStream.range(0, outer.vertexCount())
+                    .toArray(), outer.triangles(), outer.coordinates());
+            double[] k = new double[area.length];
+            for (int v = 0; v < k.length; v++) {
+                k[v] = o.pleuraPaPerM() * area[v];
+            }
             couplings.add(new Coupling(side[i] + " lung on the pleura", f,
-                    OrganGeometry.rebase(pleurae.get(i).mapping(), n), lungs.get(i).surface().triangles(),
-                    OrganGeometry.filled(f.length, o.pleuraPaPerM() * h * h), true));
+                    OrganGeometry.rebase(pleurae.get(i).mapping(), n), outer.triangles(), k, true));
         }
         if (liver != null) {
             double h = o.liver().cellSizeM();
@@ -213,7 +226,8 @@ public final class ThoraxOrgans {
             double[] xyz = OrganGeometry.restPositions(t, nd);
             TriangleTree tree = new TriangleTree(xyz, lower, 3);
             int[] f = OrganGeometry.surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
-            couplings.add(new Coupling("liver under the diaphragm", f, OrganGeometry.identity(nd, n), lower,
+            couplings.add(new Coupling("liver under the diaphragm", OrganGeometry.nodes(f, n),
+                    OrganGeometry.identity(nd, n), lower,
                     OrganGeometry.filled(f.length, o.liverPaPerM() * h * h), false));
         }
         // The sample points and the probes, each in the lattice of the lung that holds it.
@@ -255,17 +269,19 @@ public final class ThoraxOrgans {
         List<SurfaceSliding> terms = new ArrayList<>();
         for (Coupling c : couplings) {
             SurfaceSliding.Mode mode = c.bilateral() ? SurfaceSliding.Mode.SLIDING : SurfaceSliding.Mode.CONTACT;
-            SurfaceSliding probe = new SurfaceSliding(c.followers(), c.surface(), c.triangles(), c.stiffness(), mode,
-                    0.0, x0);
+            int count = c.followers().pointCount();
+            SurfaceSliding probe = SurfaceSliding.mapped(c.followers(), c.surface(), c.triangles(), c.stiffness(),
+                    mode, new double[count], x0);
             double[] p = new double[3 * c.surface().pointCount()];
             c.surface().apply(x0, p);
-            double[] gaps = new double[c.followers().length];
+            double[] y = new double[3 * count];
+            c.followers().apply(x0, y);
+            double[] gaps = new double[count];
             for (int e = 0; e < gaps.length; e++) {
-                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), x0,
-                        3 * c.followers()[e]);
+                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), y, 3 * e);
             }
-            SurfaceSliding term = new SurfaceSliding(c.followers(), c.surface(), c.triangles(), c.stiffness(), mode,
-                    gaps, x0);
+            SurfaceSliding term = SurfaceSliding.mapped(c.followers(), c.surface(), c.triangles(), c.stiffness(),
+                    mode, gaps, x0);
             scene.addTerm(term);
             terms.add(term);
         }
