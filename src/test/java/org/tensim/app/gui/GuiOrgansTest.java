@@ -102,11 +102,21 @@ class GuiOrgansTest {
                 worst = Math.max(worst, Math.abs(now[k] - right[k]));
                 moved = Math.max(moved, Math.abs(now[k] - rest[k]));
             }
+            double[] x0 = mech.simulation().state().x0;
+            double dome = 0;
+            for (int k = 0; k < 3 * s.diaphragm().scene().diaphragmNodes(); k++) {
+                dome = Math.max(dome, Math.abs(x[k] - x0[k]));
+            }
             System.out.printf("organs: %d nodes, %d drawn vertices; after %.3f s the drawn right lung is its mapping"
-                    + " to %.2e m and moved up to %.3f mm%n", s.organNodes(), drawn.nodeCount(), w.runner().simTime(),
-                    worst, 1e3 * moved);
+                    + " to %.2e m and moved up to %.3e m, the diaphragm %.3e m%n", s.organNodes(), drawn.nodeCount(),
+                    w.runner().simTime(), worst, moved, dome);
             assertTrue(worst < 1e-12, "drawn right lung = its lattice mapping of the state: " + worst + " m");
-            assertTrue(moved > 1e-6, "the drawn lungs moved with the state: " + moved + " m");
+            // The organs start at rest on their pleura (no force at t = 0), so in these first 1 ms they move only as
+            // the pleura, under them, starts to move: 1.8e-10 m against the diaphragm's largest 7.9e-6 m when
+            // measured. Uncoupled they would not move at all (no load acts on them but the pleura's), and rounding
+            // alone moves them by some 1e-16 m.
+            assertTrue(dome > 0 && moved > 1e-6 * dome, "the drawn lungs moved with the state: " + moved
+                    + " m, the diaphragm " + dome + " m");
             assertTrue(moved < 0.05, "and stayed near the thorax: " + moved + " m");
         } finally {
             onEdt(w::close);
