@@ -25,8 +25,9 @@ import org.tensim.model.LinearMapping;
  * {@code a_j = sum_c beta_c W_cj - V_ij} (one entry per node, in the order the nodes first appear), so that
  * {@code u = -sum_j a_j z_j} and the products walk one row once for the gather and once for the scatter rather than
  * four rows twice. The merged rows live in arrays sized once at construction to the largest sum of three corners'
- * row lengths over the triangles plus the longest follower row, so any triangle a follower walks to fits; a node-to-slot scratch (one int per node of the mapping) finds a node's entry and is
- * reset after each merge. Allocation-free after construction.
+ * row lengths over the triangles plus the longest follower row, so any triangle a follower walks to fits; a
+ * node-to-slot scratch (one int per node of either mapping) finds a node's entry and is reset after each merge.
+ * Allocation-free after construction.
  */
 final class SlidingTangent {
     private final LinearMapping followers;

@@ -76,8 +76,8 @@ public final class ThoraxOrgans {
          * docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
-         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, the liver's followers within 4 mm of
-         * their surface, 300 points.
+         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, the liver's followers within
+         * 4 mm of its surface, 300 points.
          */
         public static Options defaults() {
             return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), null, PleuraCarriers.Rules.defaults(),
@@ -141,8 +141,8 @@ public final class ThoraxOrgans {
      * @param stiffness per follower, N/m
      * @param bilateral sliding (held on the surface) rather than one-sided contact
      */
-    public record Coupling(String name, LinearMapping followers, LinearMapping surface, int[] triangles, double[] stiffness,
-            boolean bilateral) {
+    public record Coupling(String name, LinearMapping followers, LinearMapping surface, int[] triangles,
+            double[] stiffness, boolean bilateral) {
     }
 
     private final List<LungVolumes.Lung> lungs;
