@@ -54,7 +54,6 @@ public final class SurfaceSliding implements ForceTerm {
     }
 
     private final LinearMapping followers; // y = V x: a node per row for node followers
-    private final int[] follower; // node ids for node followers, -1 per mapped follower
     private final double[] stiffness; // N/m per follower
     private final double[] gap; // m per follower
     private final Mode mode;
@@ -99,8 +98,8 @@ public final class SurfaceSliding implements ForceTerm {
      */
     public SurfaceSliding(int[] followers, LinearMapping surfacePoints, int[] triangles, double[] stiffness, Mode mode,
             double[] gapsM, double[] x) {
-        this(SlidingChecks.nodeFollowers(followers, x.length / 3), followers.clone(), surfacePoints, triangles,
-                stiffness, mode, gapsM, x);
+        this(SlidingChecks.nodeFollowers(followers, x.length / 3), surfacePoints, triangles, stiffness, mode, gapsM,
+                x);
     }
 
     /**
@@ -112,16 +111,13 @@ public final class SurfaceSliding implements ForceTerm {
      */
     public static SurfaceSliding mapped(LinearMapping followers, LinearMapping surfacePoints, int[] triangles,
             double[] stiffness, Mode mode, double[] gapsM, double[] x) {
-        int[] none = new int[followers.pointCount()];
-        Arrays.fill(none, -1);
-        return new SurfaceSliding(followers, none, surfacePoints, triangles, stiffness, mode, gapsM, x);
+        return new SurfaceSliding(followers, surfacePoints, triangles, stiffness, mode, gapsM, x);
     }
 
-    private SurfaceSliding(LinearMapping followers, int[] nodeIds, LinearMapping surfacePoints, int[] triangles,
+    private SurfaceSliding(LinearMapping followers, LinearMapping surfacePoints, int[] triangles,
             double[] stiffness, Mode mode, double[] gapsM, double[] x) {
         SlidingChecks.refuse(followers, surfacePoints, stiffness, gapsM, mode, x.length / 3);
         this.followers = followers;
-        this.follower = nodeIds;
         this.stiffness = stiffness.clone();
         this.gap = gapsM.clone();
         this.mode = mode;
@@ -164,15 +160,6 @@ public final class SurfaceSliding implements ForceTerm {
     public static SurfaceSliding heldAtRest(int[] followers, LinearMapping surfacePoints, int[] triangles,
             double[] stiffness, Mode mode, double gapM, double[] x) {
         SurfaceSliding s = new SurfaceSliding(followers, surfacePoints, triangles, stiffness, mode, 0, x);
-        s.holdAtRest(gapM, x);
-        return s;
-    }
-
-    /** {@link #heldAtRest} for followers mapped from the state's nodes ({@link #mapped}). */
-    public static SurfaceSliding mappedHeldAtRest(LinearMapping followers, LinearMapping surfacePoints,
-            int[] triangles, double[] stiffness, Mode mode, double gapM, double[] x) {
-        SurfaceSliding s = mapped(followers, surfacePoints, triangles, stiffness, mode,
-                filled(followers.pointCount(), 0), x);
         s.holdAtRest(gapM, x);
         return s;
     }
@@ -344,15 +331,15 @@ public final class SurfaceSliding implements ForceTerm {
     }
 
     /**
-     * Node id of follower e, for node followers.
+     * Node id of follower e, whose row is one node (weight 1, as every node follower's is).
      *
-     * @throws IllegalStateException when the followers are mapped points ({@link #followers} gives their nodes)
+     * @throws IllegalStateException when follower e is a point on several nodes ({@link #followers} gives them)
      */
     public int follower(int e) {
-        if (follower[e] < 0) {
+        if (followers.entries(e) != 1) {
             throw new IllegalStateException("follower " + e + " is a mapped point, not a node: read followers()");
         }
-        return follower[e];
+        return followers.node(e, 0);
     }
 
     /** The followers as points of the state's nodes (a node per row for node followers). */
@@ -382,8 +369,7 @@ public final class SurfaceSliding implements ForceTerm {
 
     @Override
     public String toString() {
-        return "SurfaceSliding[" + mode + ", " + pair.length + (follower.length > 0 && follower[0] < 0 ? " mapped" : "")
-                + " followers on " + surface.triangleCount()
+        return "SurfaceSliding[" + mode + ", " + pair.length + " followers on " + surface.triangleCount()
                 + " triangles of " + mapping.pointCount() + " points]";
     }
 }

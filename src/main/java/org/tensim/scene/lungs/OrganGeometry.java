@@ -137,11 +137,7 @@ final class OrganGeometry {
 
     /** Points 0 .. n-1 on nodes 0 .. n-1, weight 1, for a state of {@code nodeCount} nodes. */
     static LinearMapping identity(int n, int nodeCount) {
-        LinearMapping.Builder b = new LinearMapping.Builder(nodeCount);
-        for (int i = 0; i < n; i++) {
-            b.add(new int[] {i}, new double[] {1});
-        }
-        return b.build();
+        return nodes(java.util.stream.IntStream.range(0, n).toArray(), nodeCount);
     }
 
     /** Points 0 .. ids.length-1 on the nodes ids, weight 1, for a state of {@code nodeCount} nodes. */
