@@ -5,7 +5,6 @@ import org.tensim.model.ContactBody;
 import org.tensim.model.ContactPair;
 import org.tensim.model.RigidMotion;
 import org.tensim.model.SignedDistance;
-import org.tensim.solver.stability.CriticalTimeStep;
 import org.tensim.solver.stability.ExtraStiffness;
 
 /**
@@ -48,9 +47,8 @@ public final class ContactForces {
     private final double[] normal; // tangent: n per pair (world)
     private final double[] active; // tangent: k per pair when in contact at the linearisation, else 0
     private final double[] scratch = new double[4]; // hot loop: n, then d
+    private final ContactProjection projection;
     private final boolean[] hard; // per body: projected after each step
-    /** Node ids with a pair on a hard body, each once, ascending. */
-    private final int[] hardNodes;
 
     ContactForces(List<ContactBody> bodies, List<ContactPair> pairs) {
         int nb = bodies.size();
@@ -80,46 +78,28 @@ public final class ContactForces {
             stiffness[e] = p.stiffnessNPerM();
             gap[e] = p.gapM();
         }
-        hardNodes = java.util.stream.IntStream.range(0, n).filter(e -> hard[body[e]]).map(e -> node3[e] / 3)
-                .distinct().sorted().toArray();
+        projection = new ContactProjection(this, node3, body, gap, hard);
     }
 
     /** Node ids with a pair on a hard body ({@link ContactBody#hard()}), each once, ascending. */
     public int[] hardNodes() {
-        return hardNodes.clone();
+        return projection.hardNodes();
     }
 
     /**
-     * Puts every node that went deeper than its gap into a hard body back on the gap, along the body's normal:
-     * {@code x_i += (g - d) m / |m|} with m the distance's gradient (|m| = 1 for an exact distance, and then d
-     * equals g to first order; a sampled distance's |m| falls below 1 near a thin bone's middle, where dividing by
-     * |m|^2 would throw the node out far: moving by g - d at most, a round falls short instead of overshooting),
-     * at time t (s) and positions x (m). Nodes of zero inverse mass (fixed, driven) are left
-     * where they are. The contact's projection stage, as {@link RigidLinkProjection} is the links': frictionless
-     * (only the normal component moves) and one-sided. Allocation-free, simulation thread.
+     * Puts every node that went deeper than its gap into a hard body back on the gap, along the body's normal, at
+     * time t (s) and positions x (m), by {@link ContactProjection}'s line search (frictionless, one-sided; nodes of
+     * zero inverse mass are left where they are). Allocation-free, simulation thread.
      *
-     * @return the largest correction made, m
+     * @return the largest penetration found, g - d, m
      */
     public double project(double t, double[] x, double[] invMass) {
-        final double[] n = scratch;
-        double largest = 0;
-        for (int e = 0; e < node3.length; e++) {
-            final int i = node3[e];
-            if (!hard[body[e]] || invMass[i / 3] == 0) {
-                continue;
-            }
-            final double p = gap[e] - distance(e, t, x, n);
-            final double m2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-            if (p <= 0 || m2 == 0) {
-                continue;
-            }
-            final double s = p / Math.sqrt(m2);
-            x[i] += s * n[0];
-            x[i + 1] += s * n[1];
-            x[i + 2] += s * n[2];
-            largest = Math.max(largest, p);
-        }
-        return largest;
+        return projection.project(t, x, invMass);
+    }
+
+    /** Signed distance (m) of pair e at time t and positions x, with the cached poses, its world normal into n. */
+    double distanceNow(int e, double t, double[] x, double[] n) {
+        return distance(e, t, x, n);
     }
 
     /** Number of node-body pairs. */
@@ -289,29 +269,7 @@ public final class ContactForces {
      * Why all pairs: an explicit step must stay stable when the nodes reach the bodies, not only at rest.
      */
     public ExtraStiffness worstCaseStiffness() {
-        if (node3.length == 0) {
-            return ExtraStiffness.NONE;
-        }
-        return new ExtraStiffness() {
-            @Override
-            public void multiplyAdd(double[] z, double[] y) {
-                for (int e = 0; e < node3.length; e++) {
-                    for (int d = 0; d < 3; d++) {
-                        y[node3[e] + d] += stiffness[e] * z[node3[e] + d];
-                    }
-                }
-            }
-
-            @Override
-            public void addGershgorinRows(double[] mass, boolean[] free, CriticalTimeStep.Form form, double[] row) {
-                for (int e = 0; e < node3.length; e++) {
-                    final int i = node3[e] / 3;
-                    if (free[i]) {
-                        row[i] += form == CriticalTimeStep.Form.ROWS ? stiffness[e] : stiffness[e] / mass[i];
-                    }
-                }
-            }
-        };
+        return node3.length == 0 ? ExtraStiffness.NONE : new ContactStiffnessBound(node3, stiffness);
     }
 
     // ---- Read-outs for reports: computed on demand, with their own scratch (not for the hot loop).

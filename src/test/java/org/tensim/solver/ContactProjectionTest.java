@@ -7,11 +7,16 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.tensim.io.mesh.TriangleMesh;
 import org.tensim.model.ContactBody;
+import org.tensim.model.ContactPair;
 import org.tensim.model.ForceLaw;
 import org.tensim.model.RigidMotion;
+import org.tensim.model.SignedDistance;
 import org.tensim.model.Topology;
 import org.tensim.model.Vec3;
+import org.tensim.scene.thorax.DistanceGrid;
+import org.tensim.scene.thorax.TestMeshes;
 import org.tensim.solver.integrators.Integrators;
 import org.tensim.solver.prefactored.PrefactoredBdf2;
 
@@ -135,5 +140,59 @@ class ContactProjectionTest {
         assertEquals(0, sim.state().contacts.hardNodes().length);
         sim.runUntil(0.2, 1e-3);
         assertEquals(-0.1 / K, sim.state().x[1], 1e-6 * 0.1 / K, "y = -F / k");
+    }
+
+    /**
+     * A field that grows slower than the path along its unit normal, as a sampled distance does near a thin bone's
+     * middle (here phi = y (0.3 + 0.7 (y / 2 mm)^2), 0.3 m per m at the surface): one projection puts a node 1.5 mm
+     * in back on its gap, to a millionth of its penetration, moving it along the normal only; a single move of
+     * g - d would have left it a seventh of its penetration inside.
+     */
+    @Test
+    void aNodeInAFieldSlowerThanItsPathIsPutOnItsGap() {
+        double a = 2e-3;
+        SignedDistance slow = (x, y, z, g, o) -> {
+            g[o] = 0;
+            g[o + 1] = 1;
+            g[o + 2] = 0;
+            return y * (0.3 + 0.7 * (y / a) * (y / a));
+        };
+        double[] x = {0.01, -1.5e-3, -0.02};
+        double p = -slow.distance(x[0], x[1], x[2], new double[3], 0);
+        double oneMove = slow.distance(0, x[1] + p, 0, new double[3], 0);
+        assertTrue(-oneMove > 0.1 * p, "a single move leaves " + -oneMove + " m of " + p + " m");
+        ContactForces c = hardPair(slow, 0);
+        assertEquals(p, c.project(0, x, new double[] {1 / M}), 1e-15, "the penetration found");
+        assertEquals(0, slow.distance(x[0], x[1], x[2], new double[3], 0), 1e-6 * p, "on its gap");
+        assertEquals(0.01, x[0], 0, "along the normal only: x");
+        assertEquals(-0.02, x[2], 0, "along the normal only: z");
+    }
+
+    /**
+     * On a bone's sampled distance (a 4 mm plate's {@link DistanceGrid} at its 1.5 mm default cells), a node 0.1 mm
+     * off the plate's middle, with a negative gap (it started 0.5 mm inside), is put back on its gap to a millionth
+     * of its penetration, where a single move of g - d falls short by more than half: the cell that holds the
+     * middle rounds the distance's ridge (-1.33 mm there against -2), so the grid's distance grows at a third of
+     * the path across it.
+     */
+    @Test
+    void aNodeDeepInAThinBonesGridIsPutOnItsGap() {
+        TriangleMesh plate = TestMeshes.box(new double[] {-0.02, -0.002, -0.02}, new double[] {0.02, 0.002, 0.02});
+        DistanceGrid grid = DistanceGrid.build(plate);
+        double g = -0.5e-3;
+        double[] x = {0.3e-3, 0.1e-3, 0.2e-3};
+        double[] n = new double[3];
+        double p = g - grid.distance(x[0], x[1], x[2], n, 0);
+        double oneMove = grid.distance(x[0] + p * n[0], x[1] + p * n[1], x[2] + p * n[2], new double[3], 0);
+        assertTrue(g - oneMove > 0.5 * p, "a single move leaves " + (g - oneMove) + " m of " + p + " m");
+        ContactForces c = hardPair(grid, g);
+        c.project(0, x, new double[] {1 / M});
+        assertEquals(g, grid.distance(x[0], x[1], x[2], new double[3], 0), 1e-6 * p, "on its gap");
+        assertEquals(-1.5e-3, x[1], 1e-9, "on the side the grid's normal points to, 0.5 mm inside its face");
+    }
+
+    private static ContactForces hardPair(SignedDistance surface, double gap) {
+        return new ContactForces(List.of(new ContactBody("bone", surface, RigidMotion.FIXED,
+                new double[] {-1, -1, -1, 1, 1, 1}, true)), List.of(new ContactPair(0, 0, K, gap)));
     }
 }

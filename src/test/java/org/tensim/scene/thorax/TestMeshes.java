@@ -64,7 +64,7 @@ public final class TestMeshes {
     }
 
     /** The box lo..hi, m, as 12 triangles. */
-    static TriangleMesh box(double[] lo, double[] hi) {
+    public static TriangleMesh box(double[] lo, double[] hi) {
         double[] xyz = new double[24];
         for (int i = 0; i < 8; i++) {
             xyz[3 * i] = (i & 1) == 0 ? lo[0] : hi[0];
