@@ -97,11 +97,6 @@ public final class ContactForces {
         return projection.project(t, x, invMass);
     }
 
-    /** Signed distance (m) of pair e at time t and positions x, with the cached poses, its world normal into n. */
-    double distanceNow(int e, double t, double[] x, double[] n) {
-        return distance(e, t, x, n);
-    }
-
     /** Number of node-body pairs. */
     public int count() {
         return node3.length;
@@ -149,8 +144,8 @@ public final class ContactForces {
         return d;
     }
 
-    /** Signed distance of pair e at time t with the cached poses (simulation thread). */
-    private double distance(int e, double t, double[] x, double[] n) {
+    /** Signed distance (m) of pair e at time t with the cached poses, its world normal into n (simulation thread). */
+    double distance(int e, double t, double[] x, double[] n) {
         final int b = body[e];
         pose(b, t);
         return distance(e, x, rotation, 9 * b, translation, 3 * b, n);

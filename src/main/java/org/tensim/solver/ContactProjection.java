@@ -66,7 +66,7 @@ final class ContactProjection {
             if (!hard[body[e]] || invMass[i / 3] == 0) {
                 continue;
             }
-            final double d0 = contacts.distanceNow(e, t, x, normal);
+            final double d0 = contacts.distance(e, t, x, normal);
             final double p = gap[e] - d0;
             final double m2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
             if (p <= 0 || m2 == 0) {
@@ -102,7 +102,7 @@ final class ContactProjection {
             x[i] = x0 + s * ux;
             x[i + 1] = y0 + s * uy;
             x[i + 2] = z0 + s * uz;
-            final double f = contacts.distanceNow(e, t, x, probe) - gap[e];
+            final double f = contacts.distance(e, t, x, probe) - gap[e];
             if (Math.abs(f) <= TOLERANCE * p) {
                 return;
             }

@@ -47,13 +47,14 @@ public final class GuiCommand implements Callable<Integer> {
     @picocli.CommandLine.Mixin
     org.tensim.tuning.PickOption pick = new org.tensim.tuning.PickOption();
 
-    @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs and liver into the diaphragm's"
-            + " state, as tensim diaphragm --lungs does (docs/lungs.md), and draw them translucent (View: \"Lungs,"
-            + " liver\" hides them). The full model runs: no mapped mechanics.")
+    @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs into the diaphragm's state, as"
+            + " tensim diaphragm --lungs does (docs/lungs.md), and draw them translucent (View: \"Lungs, liver\""
+            + " hides them). The full model runs: no mapped mechanics.")
     boolean lungs;
 
-    @Option(names = "--no-liver", description = "With --lungs: leave the liver volume out (the rigid support stays).")
-    boolean noLiver;
+    @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm, as"
+            + " tensim diaphragm --liver (the rigid support stays; its contact does not hold yet: docs/lungs.md).")
+    boolean liver;
 
     @Option(names = "--preset", paramLabel = "FILE",
             description = "Load this JSON preset at start (after the last-used parameters).")
@@ -188,11 +189,11 @@ public final class GuiCommand implements Callable<Integer> {
      * whether it did.
      *
      * @throws picocli.CommandLine.ParameterException for --lungs without --thorax, on another scene or with --pick,
-     *                                                and for --no-liver without --lungs
+     *                                                and for --liver without --lungs
      */
     private boolean addOrgans(SceneFactory factory) throws java.io.IOException {
-        if (noLiver && !lungs) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--no-liver goes with --lungs");
+        if (liver && !lungs) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--liver goes with --lungs");
         }
         if (!lungs) {
             return false;
@@ -205,7 +206,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
         f.setOrgans(new org.tensim.scene.tunable.DiaphragmOrgans(org.tensim.scene.lungs.OrganMeshes.load(
-                options.thorax, !noLiver), noLiver ? o.withoutLiver() : o.withLiver()));
+                options.thorax, liver), liver ? o.withLiver() : o.withoutLiver()));
         return true;
     }
 

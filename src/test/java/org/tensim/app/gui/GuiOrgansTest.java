@@ -123,11 +123,11 @@ class GuiOrgansTest {
         }
     }
 
-    /** --lungs without a thorax or on the cube, and --no-liver alone, are usage errors naming the option. */
+    /** --lungs without a thorax or on the cube, and --liver alone, are usage errors naming the option. */
     @Test
     void organOptionsOutOfPlaceAreRefused() {
         for (String[] args : new String[][] {{"gui", "--lungs"}, {"gui", "--scene", "cube", "--lungs"},
-            {"gui", "--no-liver"}}) {
+            {"gui", "--liver"}}) {
             java.io.StringWriter err = new java.io.StringWriter();
             assertEquals(2, GuiCommandTest.run(err, args), String.join(" ", args) + ": " + err);
             assertTrue(err.toString().contains(args[args.length - 1]), err.toString());
