@@ -311,14 +311,23 @@ public final class SurfaceSliding implements ForceTerm {
     }
 
     private double extreme(double[] x, double sign) {
+        return extremeAt(x, sign)[0];
+    }
+
+    /**
+     * Where the followers depart most at positions x: {@code {m, y_x, y_y, y_z}} with m the largest penetration
+     * (sign 1) or separation (sign -1), m, and y that follower's position, m; m = 0 and y NaN if none departs.
+     */
+    public double[] extremeAt(double[] x, double sign) {
         synchronized (readLock) {
             mapping.apply(x, readPoints);
             followers.apply(x, readYs);
-            double m = 0;
+            double[] m = {0, Double.NaN, Double.NaN, Double.NaN};
             for (int e = 0; e < pair.length; e++) {
-                double pen = penetration(e);
-                if (!Double.isNaN(pen)) {
-                    m = Math.max(m, sign * pen);
+                double pen = sign * penetration(e);
+                if (pen > m[0]) {
+                    m[0] = pen;
+                    System.arraycopy(readYs, 3 * e, m, 1, 3);
                 }
             }
             return m;

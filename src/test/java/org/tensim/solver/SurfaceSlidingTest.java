@@ -215,17 +215,29 @@ class SurfaceSlidingTest {
         SurfaceSliding s = c.term(Mode.SLIDING);
         double pen = 0;
         double sep = 0;
+        int deepest = -1;
+        int farthest = -1;
         for (int e = 0; e < s.pairCount(); e++) {
             int i = 3 * c.followers()[e];
             double[] na = SlidingCases.normalAndCorner(c, c.x(), s.pairedTriangle(e));
             double d = na[0] * (c.x()[i] - na[3]) + na[1] * (c.x()[i + 1] - na[4]) + na[2] * (c.x()[i + 2] - na[5]);
+            deepest = c.gaps()[e] - d > pen ? e : deepest;
             pen = Math.max(pen, c.gaps()[e] - d);
+            farthest = d - c.gaps()[e] > sep ? e : farthest;
             sep = Math.max(sep, d - c.gaps()[e]);
         }
         assertTrue(pen > 0 && sep > 0);
         assertEquals(pen, s.maxPenetrationM(c.x()), 1e-15);
         assertEquals(sep, s.maxSeparationM(c.x()), 1e-15);
         assertEquals(12, s.pairCount());
+        double[] at = s.extremeAt(c.x(), 1);
+        double[] away = s.extremeAt(c.x(), -1);
+        assertEquals(pen, at[0], 1e-15);
+        assertEquals(sep, away[0], 1e-15);
+        for (int a = 0; a < 3; a++) {
+            assertEquals(c.x()[3 * c.followers()[deepest] + a], at[1 + a], 0, "the deepest follower's place");
+            assertEquals(c.x()[3 * c.followers()[farthest] + a], away[1 + a], 0, "the farthest follower's place");
+        }
     }
 
     @Test

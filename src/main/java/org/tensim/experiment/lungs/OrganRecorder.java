@@ -38,6 +38,8 @@ public final class OrganRecorder implements RunRecorder {
     private final List<double[]> frames = new ArrayList<>();
     private final double[] worstPen;
     private final double[] worstSep;
+    /** Per term, for its penetration (0) and separation (1): the time and the follower's place, {t, x, y, z}. */
+    private final double[][][] worstAt;
     private double start = Double.NaN;
     private double inspEnd;
     private double period;
@@ -60,6 +62,11 @@ public final class OrganRecorder implements RunRecorder {
         this.terms = terms;
         this.worstPen = new double[terms.size()];
         this.worstSep = new double[terms.size()];
+        this.worstAt = new double[terms.size()][2][];
+        for (double[][] w : worstAt) {
+            w[0] = new double[] {Double.NaN, 0, 0, 0};
+            w[1] = new double[] {Double.NaN, 0, 0, 0};
+        }
         for (int i = 0; i < organs.lungs().size(); i++) {
             ThoraxOrgans.Coupling c = organs.couplings().get(i);
             gaps.add(new LungSurfaceGap(c.followers(), c.surface(), c.triangles()));
@@ -89,8 +96,8 @@ public final class OrganRecorder implements RunRecorder {
         if (t >= nextRead - half) {
             nextRead += READ_S;
             for (int i = 0; i < terms.size(); i++) {
-                worstPen[i] = Math.max(worstPen[i], terms.get(i).maxPenetrationM(x));
-                worstSep[i] = Math.max(worstSep[i], terms.get(i).maxSeparationM(x));
+                keepWorst(i, 0, t, terms.get(i).extremeAt(x, 1));
+                keepWorst(i, 1, t, terms.get(i).extremeAt(x, -1));
             }
             if (organs.liver() != null && t >= start - half && t <= start + period + half) {
                 double z = meanZ(x, organs.liver().firstNode(), organs.liver().nodeCount());
@@ -179,7 +186,9 @@ public final class OrganRecorder implements RunRecorder {
             Map<String, Object> c = new LinkedHashMap<>();
             c.put("followers", terms.get(i).pairCount());
             c.put("max_penetration_mm", round(1e3 * worstPen[i], 3));
+            c.put("max_penetration_at", where(worstAt[i][0][0], java.util.Arrays.copyOfRange(worstAt[i][0], 1, 4)));
             c.put("max_separation_mm", round(1e3 * worstSep[i], 3));
+            c.put("max_separation_at", where(worstAt[i][1][0], java.util.Arrays.copyOfRange(worstAt[i][1], 1, 4)));
             if (i < gaps.size()) {
                 LungSurfaceGap g = gaps.get(i);
                 c.put("lung_surface_max_penetration_mm", round(1e3 * g.maxPenetrationM(), 3));
@@ -246,6 +255,15 @@ public final class OrganRecorder implements RunRecorder {
             o.put("breath_to_breath_change", round(change, 4));
         }
         summary.put("organs", o);
+    }
+
+    /** Keeps term i's largest penetration (kind 0) or separation (1) so far, with its time and place. */
+    private void keepWorst(int i, int kind, double t, double[] m) {
+        double[] worst = kind == 0 ? worstPen : worstSep;
+        if (m[0] > worst[i]) {
+            worst[i] = m[0];
+            worstAt[i][kind] = new double[] {t, m[1], m[2], m[3]};
+        }
     }
 
     private static Map<String, Object> where(double t, double[] at) {
