@@ -244,15 +244,23 @@ final class DiaphragmSceneBuilder {
     }
 
     /**
-     * The muscle's rigid columns (material model), once the attachment is known: a column whose two
-     * ends are both driven or fixed (by different ribs, say) cannot be projected, so it is a spring
-     * {@code E A / L} instead.
+     * The muscle's rigid columns (material model), once the attachment and the contact are known: a column whose
+     * two ends are both driven or fixed (by different ribs, say) cannot be projected, and one with an end that
+     * starts inside a bone (a hard contact pair of negative gap: the registered bone lies in the sheet's
+     * thickness there) can be asked by the contact to put its ends out on opposite faces of the bone, farther
+     * apart than its length; so either is a spring {@code E A / L} instead.
      */
     private void columnLinks() {
+        boolean[] inside = new boolean[nv];
+        for (org.tensim.model.ContactPair pair : t.contacts()) {
+            if (pair.node() < nv && pair.gapM() < 0 && t.contactBodies().get(pair.body()).hard()) {
+                inside[pair.node()] = true;
+            }
+        }
         for (int[] c : pendingColumns) {
             Node a = t.node(c[0]);
             Node b = t.node(c[1]);
-            if ((a.isDriven() || a.isFixed()) && (b.isDriven() || b.isFixed())) {
+            if ((a.isDriven() || a.isFixed()) && (b.isDriven() || b.isFixed()) || inside[c[0]] || inside[c[1]]) {
                 double len = TwoSurfaces.distance(mesh, c[0], c[1]);
                 springs.add(c[0], c[1], young(c[0], c[1]) * area[c[0]] / len);
             } else {

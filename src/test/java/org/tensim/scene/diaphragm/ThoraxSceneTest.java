@@ -68,6 +68,36 @@ class ThoraxSceneTest {
     }
 
     /**
+     * Where the registered bones lie in the sheet's thickness (a node that starts inside a bone: a hard pair of
+     * negative gap), the muscle's column through that node is a spring, not a rigid link: the contact may put the
+     * column's two ends out on opposite faces of the bone, farther apart than a rigid column's length (rib 11 on
+     * the full thorax, docs/lungs.md). The muscle's other columns stay rigid.
+     */
+    @Test
+    void aColumnWithAnEndInsideABoneIsASpring() {
+        DiaphragmScene s = scene(full);
+        org.tensim.model.Topology t = s.topology();
+        boolean[] inside = new boolean[s.diaphragmNodes()];
+        int count = 0;
+        for (org.tensim.model.ContactPair c : t.contacts()) {
+            if (c.node() < inside.length && c.gapM() < 0 && t.contactBodies().get(c.body()).hard()) {
+                count += inside[c.node()] ? 0 : 1;
+                inside[c.node()] = true;
+            }
+        }
+        assertTrue(count > 0, "some nodes start inside a bone");
+        int muscleColumns = 0;
+        for (org.tensim.model.RigidLink l : t.rigidLinks()) {
+            assertTrue(!(l.a() < inside.length && inside[l.a()]) && !(l.b() < inside.length && inside[l.b()]),
+                    "a rigid column " + l.a() + "-" + l.b() + " has an end inside a bone");
+            muscleColumns += l.a() < inside.length && s.labels()[l.a()] == DiaphragmScene.MUSCLE ? 1 : 0;
+        }
+        System.out.println("BodyParts3D in the thorax: " + count + " nodes start inside a bone; " + muscleColumns
+                + " rigid muscle columns");
+        assertTrue(muscleColumns > 0, "the muscle's other columns stay rigid");
+    }
+
+    /**
      * The liver is the compliant support under the right dome, not a bone: its pairs hold free lower-surface nodes
      * only, each at its rest distance (resting on it at end-expiration) with the liver's stiffness per unit area
      * times the node's area (K A_i / 2), and they lie mostly under the right half; the penetration figures leave it
