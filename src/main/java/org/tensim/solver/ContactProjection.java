@@ -8,10 +8,10 @@ package org.tensim.solver;
  * <p><b>A line search, not one move.</b> The node moves along the unit direction u = m / |m| of the distance's
  * gradient where it is, by a search on that line for {@code phi(x + s u) = g}: first s = g - d (exact for an exact
  * distance, |grad phi| = 1), then secant moves until it is within {@link #TOLERANCE} of its penetration of its gap,
- * kept inside the bracket once a move went past the gap. Why: a sampled
- * distance grows slower than the path near a thin bone's middle (a trilinear grid rounds the ridge of the distance
- * over a cell; on the shared thorax's rib 11, 0.3-0.5 mm per mm at 1-2 mm deep), so that a single move of g - d
- * fell short by half or more and left nodes 0.5 mm past their gap at end-inspiration. A node's search stops if phi
+ * kept inside the bracket once a move went past the gap. Why: a sampled distance grows slower than the path near a
+ * thin bone's middle (a trilinear grid rounds the ridge of the distance over a cell; on the shared thorax's rib 11,
+ * 0.3-0.5 mm per mm at 1-2 mm deep), so that a single move of g - d fell short there by half or more (the plate of
+ * ContactProjectionTest: by more than half). A node's search stops if phi
  * stops growing along u (a rate below {@link #MIN_RATE}: a flat spot of the field, where going on would throw the
  * node out) or after {@link #MOVES} moves, and never takes it farther than {@link #MAX_FACTOR} times its penetration
  * from where it was.
