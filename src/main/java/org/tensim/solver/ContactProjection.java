@@ -66,13 +66,12 @@ final class ContactProjection {
             if (!hard[body[e]] || invMass[i / 3] == 0) {
                 continue;
             }
-            final double d0 = contacts.distance(e, t, x, normal);
-            final double p = gap[e] - d0;
+            final double p = gap[e] - contacts.distance(e, t, x, normal);
             final double m2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
             if (p <= 0 || m2 == 0) {
                 continue;
             }
-            search(e, i, t, x, p, d0, 1 / Math.sqrt(m2));
+            search(e, i, t, x, p, 1 / Math.sqrt(m2));
             largest = Math.max(largest, p);
         }
         return largest;
@@ -84,7 +83,7 @@ final class ContactProjection {
      * overshot (then false position between the bracket's ends, so that a field whose growth quickens beyond a
      * rounded ridge cannot throw the node out).
      */
-    private void search(int e, int i, double t, double[] x, double p, double d0, double invM) {
+    private void search(int e, int i, double t, double[] x, double p, double invM) {
         final double ux = normal[0] * invM;
         final double uy = normal[1] * invM;
         final double uz = normal[2] * invM;
