@@ -181,7 +181,6 @@ class SceneCommandsTest {
         assertEquals(4, lines.get(lines.size() - 1).split(",").length, "the last row is whole");
     }
 
-    /** Every scene file among the docs' examples passes check. */
     /**
      * Each example scene passes {@code tensim check}, one dynamic test per file; a scene that reads a file that is
      * absent (the liver's mesh under ../shared) is skipped with that file's name.
@@ -203,9 +202,13 @@ class SceneCommandsTest {
         }));
     }
 
-    /** The files a scene names ({@code file: PATH}, comments aside), resolved against its folder. */
+    /**
+     * The files and folders a scene names (the scalar values of {@code file:}, a diaphragm's {@code mesh:},
+     * {@code thorax:}, {@code labels:} and {@code boxes:}; comments aside), resolved against its folder.
+     */
     private static List<Path> filesNamedIn(Path scene) throws java.io.IOException {
-        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\bfile:\\s*([^\\s,}#]+)")
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile(
+                        "\\b(?:file|mesh|thorax|labels|boxes):[ \\t]*([^\\s,}#{\\[][^\\s,}#]*)")
                 .matcher(Files.readString(scene).replaceAll("#[^\\n]*", ""));
         List<Path> out = new java.util.ArrayList<>();
         while (m.find()) {

@@ -16,10 +16,12 @@ import org.junit.jupiter.api.extension.ExtensionContext;
 import org.junit.jupiter.api.extension.ParameterContext;
 import org.junit.jupiter.api.extension.ParameterResolver;
 import org.opentest4j.AssertionFailedError;
+import org.opentest4j.TestAbortedException;
 import org.tensim.experiment.SceneExpectations;
 import org.tensim.experiment.SceneRunner;
 import org.tensim.io.RunFolder;
 import org.tensim.scene.file.Scene;
+import org.tensim.scene.file.SceneException;
 import org.tensim.scene.file.SceneExpectation;
 import org.tensim.scene.file.SceneLoader;
 
@@ -28,7 +30,9 @@ import org.tensim.scene.file.SceneLoader;
  * container per scene file ({@link SceneFileFinder}), holding one test per check of its {@code expect:} block.
  * The file is loaded and run (as {@code tensim run} does, into {@code OUT/runs/NAME}) when its container starts;
  * each test then passes when its check holds, and fails with the measured value and the range otherwise. A file
- * that cannot be loaded is one failed test, "load", with the loader's message; a run that fails or diverges adds
+ * that cannot be loaded is one failed test, "load", with the loader's message, except one that names a file or
+ * folder that does not exist (data not on this machine, as the shared meshes): its "load" is skipped (aborted),
+ * naming the file, and counted apart from the failures; a run that fails or diverges adds
  * a failed test "run"; a scene without an expect block is one test, "load", that passes when the file loads, and so
  * is a diaphragm's ({@code standalone} body type: its run is its own experiment, minutes long, whose checks
  * {@code tensim run FILE} evaluates).
@@ -78,6 +82,15 @@ public class SceneSuite {
         Scene scene;
         try {
             scene = SceneLoader.load(f.file());
+        } catch (SceneException e) {
+            if (e.absentPath().isPresent()) {
+                String why = "skipped: reads " + e.absentPath().get().normalize() + ", which is absent ("
+                        + e.getMessage() + ")";
+                return List.of(DynamicTest.dynamicTest("load", () -> {
+                    throw new TestAbortedException(why);
+                }));
+            }
+            return List.of(failing("load", describe(e)));
         } catch (RuntimeException e) {
             return List.of(failing("load", describe(e)));
         }

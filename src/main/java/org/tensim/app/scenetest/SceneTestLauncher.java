@@ -24,10 +24,10 @@ import org.junit.platform.reporting.legacy.xml.LegacyXmlReportGeneratingListener
  */
 public final class SceneTestLauncher {
     /** The counts of a launch. */
-    public record Result(long passed, long failed) {
-        /** "N passed, N failed". */
+    public record Result(long passed, long failed, long skipped) {
+        /** "N passed, N failed", and ", N skipped" when a scene's data is absent. */
         public String line() {
-            return passed + " passed, " + failed + " failed";
+            return passed + " passed, " + failed + " failed" + (skipped > 0 ? ", " + skipped + " skipped" : "");
         }
     }
 
@@ -51,10 +51,11 @@ public final class SceneTestLauncher {
         LegacyXmlReportGeneratingListener xml = new LegacyXmlReportGeneratingListener(reports, print);
         launcher.execute(request, summary, xml, new Printer(print));
         TestExecutionSummary s = summary.getSummary();
-        // A container that fails (the folder cannot be searched) is a failure too, not a test fewer.
-        long failed = s.getTestsFailedCount() + s.getTestsAbortedCount() + s.getContainersFailedCount();
+        // A container that fails (the folder cannot be searched) is a failure too, not a test fewer. A test
+        // aborted is a scene skipped because a file it names is absent (SceneSuite), printed with its name.
+        long failed = s.getTestsFailedCount() + s.getContainersFailedCount();
         print.flush();
-        return new Result(s.getTestsSucceededCount(), failed);
+        return new Result(s.getTestsSucceededCount(), failed, s.getTestsAbortedCount() + s.getTestsSkippedCount());
     }
 
     /** One line per finished test (and per failed container): its verdict, file and name, and why it failed. */
@@ -74,14 +75,15 @@ public final class SceneTestLauncher {
         @Override
         public void executionFinished(TestIdentifier id, TestExecutionResult result) {
             boolean ok = result.getStatus() == TestExecutionResult.Status.SUCCESSFUL;
+            boolean skipped = result.getStatus() == TestExecutionResult.Status.ABORTED;
             if (!id.isTest() && ok) {
                 return;
             }
             String file = plan.getParent(id).filter(p -> p.getSource().isPresent() && !p.isTest())
                     .map(TestIdentifier::getDisplayName).orElse("");
             String why = result.getThrowable().map(t -> ": " + t.getMessage()).orElse("");
-            out.println((ok ? "pass " : "FAIL ") + (file.isEmpty() ? "" : file + " > ") + id.getDisplayName()
-                    + (ok ? "" : why));
+            out.println((ok ? "pass " : skipped ? "skip " : "FAIL ") + (file.isEmpty() ? "" : file + " > ")
+                    + id.getDisplayName() + (ok ? "" : why));
             out.flush();
         }
     }

@@ -58,8 +58,11 @@ public final class BodyContext {
             throw SceneException.at(node, "expected a file name, got " + node.describe());
         }
         Path p = folder.resolve(node.text());
+        if (!Files.exists(p)) {
+            throw SceneException.absent(node, "no such file: " + p, p);
+        }
         if (!Files.isRegularFile(p)) {
-            throw SceneException.at(node, "no such file: " + p);
+            throw SceneException.at(node, "no such file: " + p + " (it is a folder; expected a file)");
         }
         return p;
     }
@@ -98,8 +101,11 @@ public final class BodyContext {
             throw SceneException.at(node, "expected a folder name, got " + node.describe());
         }
         Path p = folder.resolve(node.text());
+        if (!Files.exists(p)) {
+            throw SceneException.absent(node, "no such folder: " + p, p);
+        }
         if (!Files.isDirectory(p)) {
-            throw SceneException.at(node, "no such folder: " + p);
+            throw SceneException.at(node, "no such folder: " + p + " (it is a file; expected a folder)");
         }
         return p;
     }
