@@ -88,10 +88,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
             + " default fibre stress is then 36000 Pa (it carries the lungs' recoil); --muscle-action overrides it.")
     boolean lungs;
 
-    @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm (the"
-            + " rigid support stays); not stable yet in the thorax: RK2 diverges within 1 ms, bdf2 at 2.5 ms at 1.5 s"
-            + " (docs/lungs.md).")
+    @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm, held"
+            + " at its bare area and on the abdomen below (the rigid support stays); RK2 diverges with it within 1 ms:"
+            + " use bdf2 (docs/lungs.md).")
     boolean liver;
+
+    @Option(names = "--liver-abdomen", paramLabel = "PA_PER_M", description = "With --liver: stiffness per unit area"
+            + " of the abdomen's elastic support under the liver's lower half, Pa/m; 0 turns it off (default: "
+            + org.tensim.scene.lungs.ThoraxOrgans.Options.ABDOMEN_PA_PER_M + ").")
+    Double liverAbdomenPaPerM;
 
     @Option(names = "--lung-probe", paramLabel = "X,Y,Z", split = ";", hideParamSyntax = true,
             description = "With --lungs: a point to follow in a lung, mm in the thorax's frame (repeatable).")
@@ -151,6 +156,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
         if ((liver || lungProbes != null) && !lungs) {
             throw usage("--liver and --lung-probe go with --lungs");
         }
+        if (liverAbdomenPaPerM != null && (!liver || !(liverAbdomenPaPerM >= 0 && liverAbdomenPaPerM < 1e12))) {
+            throw usage("--liver-abdomen " + liverAbdomenPaPerM + ": expected a stiffness of 0 or more in Pa/m,"
+                    + " with --liver");
+        }
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
         int threadCount = threads.threads(spec);
@@ -183,6 +192,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
         var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
         if (liver) {
             o = o.withLiver();
+        }
+        if (liverAbdomenPaPerM != null) {
+            o = o.withAbdomen(liverAbdomenPaPerM);
         }
         String[] probes = lungProbes == null ? new String[0] : lungProbes;
         double[] m = new double[3 * probes.length];

@@ -58,6 +58,7 @@ public final class OptionsTable {
                     new Link("--thickness", "mm", null, null),
                     new Link("--contact-stiffness", "Pa/m", null, null),
                     new Link("--liver-support", "Pa/m", null, null),
+                    new Link("--liver-abdomen", "Pa/m", null, null),
                     new Link("--abdominal-support", "Pa/m", null, null),
                     new Link("--abdominal-pressure", "Pa", null, null),
                     new Link("--apposition-pressure", "Pa", null, null),

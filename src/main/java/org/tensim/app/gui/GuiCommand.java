@@ -53,7 +53,8 @@ public final class GuiCommand implements Callable<Integer> {
     boolean lungs;
 
     @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm, as"
-            + " tensim diaphragm --liver (the rigid support stays; its contact does not hold yet: docs/lungs.md).")
+            + " tensim diaphragm --liver: held at its bare area and on the abdomen below, the rigid support kept"
+            + " (its contact departs at the zone of apposition: docs/lungs.md).")
     boolean liver;
 
     @Option(names = "--preset", paramLabel = "FILE",

@@ -181,6 +181,8 @@ public final class OrganRecorder implements RunRecorder {
         Map<String, Object> o = new LinkedHashMap<>();
         o.put("lung_nodes", organs.lungs().stream().mapToInt(l -> l.body().nodeCount()).sum());
         o.put("liver_nodes", organs.liver() == null ? 0 : organs.liver().nodeCount());
+        o.put("liver_held_nodes", organs.liverHeld().length);
+        o.put("liver_abdomen_nodes", organs.liverSupported().length);
         o.put("points", lung.length);
         for (int i = 0; i < terms.size(); i++) {
             Map<String, Object> c = new LinkedHashMap<>();

@@ -52,10 +52,11 @@ public final class ThoraxOrganRun {
             PleuraCarriers.Built r = organs.pleurae().get(0);
             PleuraCarriers.Built l = organs.pleurae().get(1);
             log.printf(java.util.Locale.ROOT, "organs: %d nodes added to the %d of the diaphragm scene (lungs %d + %d,"
-                    + " liver %d); pleura right/left %d/%d vertices: diaphragm %d/%d, rib %d/%d, intercostal %d/%d,"
+                    + " liver %d, %d held at the bare area, %d on the abdomen); pleura right/left %d/%d vertices: diaphragm %d/%d, rib %d/%d, intercostal %d/%d,"
                     + " fixed %d/%d; followers %s; built in %.1f s%n", scene.topology().nodeCount() - before, before,
                     organs.lungs().get(0).body().nodeCount(), organs.lungs().get(1).body().nodeCount(),
-                    organs.liver() == null ? 0 : organs.liver().nodeCount(), r.surface().vertexCount(),
+                    organs.liver() == null ? 0 : organs.liver().nodeCount(), organs.liverHeld().length,
+                    organs.liverSupported().length, r.surface().vertexCount(),
                     l.surface().vertexCount(), r.count(PleuraCarriers.Carrier.DIAPHRAGM),
                     l.count(PleuraCarriers.Carrier.DIAPHRAGM), r.count(PleuraCarriers.Carrier.RIB),
                     l.count(PleuraCarriers.Carrier.RIB), r.count(PleuraCarriers.Carrier.INTERCOSTAL),

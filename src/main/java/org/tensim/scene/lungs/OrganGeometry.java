@@ -82,11 +82,44 @@ final class OrganGeometry {
                 held.add(id);
             }
         }
+        return tie(t, held, h, paPerM);
+    }
+
+    /**
+     * The abdomen under the liver, as an elastic foundation: zero-length springs of K h^2 each from the liver's
+     * surface nodes (within {@code band} of its surface) in the lower half of its height that are neither
+     * diaphragm followers nor held at the bare area, to fixed anchors; returns the supported nodes. Without it
+     * nothing but the soft bare-area hold stands against the diaphragm's push, so the liver goes down as far as the
+     * most-descending part of the muscle above it and leaves the rest (one-sided contact); the viscera below keep it
+     * pressed on the whole of its diaphragmatic surface.
+     */
+    static int[] supportBelow(Topology t, VolumeBody liver, double h, double paPerM, double band, int[] followers,
+            int[] held) {
+        double[] b = liver.surface().bounds();
+        double zCut = 0.5 * (b[2] + b[5]);
+        java.util.Set<Integer> skip = new java.util.HashSet<>();
+        for (int id : followers) {
+            skip.add(id);
+        }
         for (int id : held) {
+            skip.add(id);
+        }
+        List<Integer> below = new ArrayList<>();
+        for (int id : surfaceNodes(t, liver, band, null, 0)) {
+            if (t.node(id).position().z() < zCut && !skip.contains(id)) {
+                below.add(id);
+            }
+        }
+        return tie(t, below, h, paPerM);
+    }
+
+    /** Zero-length springs of K h^2 from each node to a fixed anchor at its rest point; returns the nodes. */
+    private static int[] tie(Topology t, List<Integer> nodes, double h, double paPerM) {
+        for (int id : nodes) {
             int a = t.addNode(t.node(id).position(), PleuraCarriers.FRAME_MASS_KG).fix().id();
             t.addSpring(id, a, paPerM * h * h, 0, 0);
         }
-        return held.stream().mapToInt(Integer::intValue).toArray();
+        return nodes.stream().mapToInt(Integer::intValue).toArray();
     }
 
     /** The diaphragm's lower-surface triangles (mesh triangles none of whose corners is upper), as node ids. */

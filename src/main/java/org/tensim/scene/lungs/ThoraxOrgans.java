@@ -44,6 +44,9 @@ public final class ThoraxOrgans {
      *                          lumped area, {@link SlidingStiffness})
      * @param liverPaPerM       the liver's contact stiffness per area, Pa/m
      * @param liverHoldPaPerM   the bare area's springs per area, Pa/m
+     * @param liverBelowPaPerM  the abdomen's support under the liver, springs per area, Pa/m (0: none): its surface
+     *                          nodes in its lower half that do not touch the diaphragm, tied to fixed anchors
+     *                          ({@link #ABDOMEN_PA_PER_M} by default)
      * @param liverReachM       how far from the diaphragm's lower surface a liver surface node may be to be a
      *                          follower, m
      * @param followerBandM     how far from the liver's surface (either side) a lattice node may be to be a
@@ -55,12 +58,22 @@ public final class ThoraxOrgans {
      * @param probesM           user probes, 3 per point, m, each inside a lung
      */
     public record Options(VolumeParameters lung, VolumeParameters liver, PleuraCarriers.Rules rules,
-            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverReachM, double followerBandM,
-            int samples, double[] probesM) {
+            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverBelowPaPerM, double liverReachM,
+            double followerBandM, int samples, double[] probesM) {
+        /**
+         * The abdomen's support under the liver by default, Pa/m: a Winkler foundation's modulus, the viscera below
+         * taken as stiff as the liver's own support of the diaphragm, {@code E / h} with the healthy liver's
+         * E = 5.5 kPa (transient elastography, Roulot et al., J Hepatol 48:606, 2008) over the shared liver's height
+         * h = 0.158 m (docs/thorax.md, "The liver's support"). Without it the liver goes down as far as the most
+         * descending part of the muscle above it (1.15 times the right dome on the clustered thorax; docs/lungs.md).
+         */
+        public static final double ABDOMEN_PA_PER_M = 3.5e4;
+
         public Options {
             Check.positive("pleural sliding stiffness", "Pa/m", pleuraPaPerM);
             Check.positive("liver contact stiffness", "Pa/m", liverPaPerM);
             Check.positive("liver bare-area stiffness", "Pa/m", liverHoldPaPerM);
+            Check.nonNegative("liver's abdominal support", "Pa/m", liverBelowPaPerM);
             Check.positive("liver reach", "m", liverReachM);
             Check.positive("follower band", "m", followerBandM);
             Check.atLeast("lung sample points", samples, 1);
@@ -71,17 +84,17 @@ public final class ThoraxOrgans {
 
         /**
          * The defaults: the parenchyma, no liver volume ({@link #withLiver}: its contact makes the thorax's RK2
-         * run diverge within 0.001 s, and with the blended pleura bdf2's at 2.5 ms completes the cycle on the
-         * clustered diaphragm with the liver moving 1.25 times the right dome and its contact not holding,
-         * docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
+         * run diverge within 0.001 s, and bdf2 at 2.5 ms on the full mesh has not been run with it over a
+         * cycle, docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
-         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), reach 20 mm, the liver's followers within
+         * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), the abdomen below it
+         * {@link #ABDOMEN_PA_PER_M}, reach 20 mm, the liver's followers within
          * 4 mm of its surface, 300 points.
          */
         public static Options defaults() {
             return new Options(LungVolumes.PARENCHYMA.withDampingTime(0.005), null, PleuraCarriers.Rules.defaults(),
-                    1e6, 3e5, 1e4, 0.02, 0.004, 300, new double[0]);
+                    1e6, 3e5, 1e4, ABDOMEN_PA_PER_M, 0.02, 0.004, 300, new double[0]);
         }
 
         /**
@@ -94,30 +107,36 @@ public final class ThoraxOrgans {
             double cap = 0.4 * dtS;
             return new Options(lung.withDampingTime(Math.min(lung.dampingTimeS(), cap)), liver == null ? null
                     : liver.withDampingTime(Math.min(liver.dampingTimeS(), cap)), rules, pleuraPaPerM, liverPaPerM,
-                    liverHoldPaPerM, liverReachM, followerBandM, samples, probesM);
+                    liverHoldPaPerM, liverBelowPaPerM, liverReachM, followerBandM, samples, probesM);
         }
 
         /** The same with the liver volume of {@link #LIVER}. */
         public Options withLiver() {
-            return new Options(lung, LIVER, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+            return new Options(lung, LIVER, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
                     followerBandM, samples, probesM);
         }
 
         /** The same without the liver volume. */
         public Options withoutLiver() {
-            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
                     followerBandM, samples, probesM);
         }
 
         /** The same with other cell sizes, m (the lungs', the liver's). */
         public Options withCells(double lungM, double liverM) {
             return new Options(lung.withCellSize(lungM), liver == null ? null : liver.withCellSize(liverM), rules,
-                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM, followerBandM, samples, probesM);
+                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM, followerBandM, samples, probesM);
+        }
+
+        /** The same with the abdomen's support under the liver at {@code paPerM}, Pa/m (0: none). */
+        public Options withAbdomen(double paPerM) {
+            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, paPerM, liverReachM,
+                    followerBandM, samples, probesM);
         }
 
         /** The same with user probes, 3 per point, m. */
         public Options withProbes(double[] m) {
-            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverReachM,
+            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
                     followerBandM, samples, m.clone());
         }
     }
@@ -153,9 +172,11 @@ public final class ThoraxOrgans {
     private final int[] pointLung;
     private final int firstNode;
     private final int[] liverHeld;
+    private final int[] liverSupported;
 
     private ThoraxOrgans(List<LungVolumes.Lung> lungs, VolumeBody liver, List<PleuraCarriers.Built> pleurae,
-            List<Coupling> couplings, LinearMapping points, int[] pointLung, int firstNode, int[] liverHeld) {
+            List<Coupling> couplings, LinearMapping points, int[] pointLung, int firstNode, int[] liverHeld,
+            int[] liverSupported) {
         this.lungs = lungs;
         this.liver = liver;
         this.pleurae = pleurae;
@@ -164,6 +185,7 @@ public final class ThoraxOrgans {
         this.pointLung = pointLung;
         this.firstNode = firstNode;
         this.liverHeld = liverHeld;
+        this.liverSupported = liverSupported;
     }
 
     /**
@@ -192,6 +214,20 @@ public final class ThoraxOrgans {
         if (liverSurface != null && o.liver() != null) {
             liver = VolumeBody.build(t, liverSurface, o.liver(), "the liver", minMass(o.liver()));
             held = OrganGeometry.holdBareArea(t, liver, o.liver().cellSizeM(), o.liverHoldPaPerM());
+        }
+        // The liver's followers of the diaphragm's lower surface (found before any node is added after the
+        // liver's, so that the abdomen's anchors below come before the couplings' node count).
+        int[] lower = liver == null ? null : OrganGeometry.lowerTriangles(scene);
+        int[] liverFollowers = new int[0];
+        int[] supported = new int[0];
+        if (liver != null) {
+            int nd = scene.diaphragmNodes();
+            TriangleTree tree = new TriangleTree(OrganGeometry.restPositions(t, nd), lower, 3);
+            liverFollowers = OrganGeometry.surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
+            if (o.liverBelowPaPerM() > 0) {
+                supported = OrganGeometry.supportBelow(t, liver, o.liver().cellSizeM(), o.liverBelowPaPerM(),
+                        o.followerBandM(), liverFollowers, held);
+            }
         }
         OrganGeometry.refuseOverdamped(t, first, scene.recommendedTimeStep());
         List<RibCage.Segment> segs = scene.cage().segments();
@@ -222,10 +258,7 @@ public final class ThoraxOrgans {
         if (liver != null) {
             double h = o.liver().cellSizeM();
             int nd = scene.diaphragmNodes();
-            int[] lower = OrganGeometry.lowerTriangles(scene);
-            double[] xyz = OrganGeometry.restPositions(t, nd);
-            TriangleTree tree = new TriangleTree(xyz, lower, 3);
-            int[] f = OrganGeometry.surfaceNodes(t, liver, o.followerBandM(), tree, o.liverReachM());
+            int[] f = liverFollowers;
             couplings.add(new Coupling("liver under the diaphragm", OrganGeometry.nodes(f, n),
                     OrganGeometry.identity(nd, n), lower,
                     OrganGeometry.filled(f.length, o.liverPaPerM() * h * h), false));
@@ -252,7 +285,7 @@ public final class ThoraxOrgans {
             which.add(lung);
         }
         return new ThoraxOrgans(lungs, liver, pleurae, couplings, b.build(),
-                which.stream().mapToInt(Integer::intValue).toArray(), first, held);
+                which.stream().mapToInt(Integer::intValue).toArray(), first, held, supported);
     }
 
     /**
@@ -318,6 +351,11 @@ public final class ThoraxOrgans {
     /** Liver nodes held at the bare area. */
     public int[] liverHeld() {
         return liverHeld.clone();
+    }
+
+    /** Liver nodes on the abdomen's support below it (none when {@link Options#liverBelowPaPerM} is 0). */
+    public int[] liverSupported() {
+        return liverSupported.clone();
     }
 
     /** Per lung, its carried pleura. */

@@ -36,7 +36,7 @@ class PleuraDrivenLungsTest {
         List<TriangleMesh> lungs = List.of(lung(scene, -0.06), lung(scene, 0.06));
         ThoraxOrgans.Options o = ThoraxOrgans.Options.defaults().withoutLiver().withCells(0.015, 0.03);
         o = new ThoraxOrgans.Options(o.lung(), null, o.rules(), o.pleuraPaPerM(), o.liverPaPerM(),
-                o.liverHoldPaPerM(), o.liverReachM(), o.followerBandM(), 100, new double[0]);
+                o.liverHoldPaPerM(), o.liverBelowPaPerM(), o.liverReachM(), o.followerBandM(), 100, new double[0]);
         ThoraxOrgans organs = ThoraxOrgans.build(scene, lungs, null, o);
         List<SurfaceSliding> terms = organs.install(scene);
         PleuraCarriers.Built right = organs.pleurae().get(0);

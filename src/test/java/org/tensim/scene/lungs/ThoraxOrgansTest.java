@@ -1,6 +1,8 @@
 package org.tensim.scene.lungs;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -70,6 +72,7 @@ class ThoraxOrgansTest {
                 + " built in %.1f s%n", scene.topology().nodeCount() - before, before, organs.liver().nodeCount(),
                 terms.get(2).pairCount(), organs.liverHeld().length, build);
         assertTrue(organs.liverHeld().length > 10, "liver nodes held at the bare area");
+        assertAbdomenUnderTheLiver(scene, organs, terms.get(2).pairCount());
         Simulation sim = scene.newSimulation();
         // At rest every follower is at its gap from the triangle it was paired with; the read-out walks from there
         // and may settle on a neighbour at the same closest distance whose plane differs by a hair: 1 um allowed.
@@ -99,6 +102,45 @@ class ThoraxOrgansTest {
                     + " mm%n", i == 0 ? "right" : "left", 1e3 * d[d.length / 2], 1e3 * d[(int) (0.9 * d.length)],
                     1e3 * d[d.length - 1]);
         }
+    }
+
+    /**
+     * The abdomen's support: liver nodes of its lower half only, none held at the bare area, each tied by one
+     * zero-length spring of K h^2 to a fixed anchor at its own rest point (so it pushes back K h^2 d when moved d).
+     */
+    private static void assertAbdomenUnderTheLiver(DiaphragmScene scene, ThoraxOrgans organs, int followers) {
+        int[] below = organs.liverSupported();
+        System.out.printf("liver: %d nodes on the abdomen, %d held, %d followers%n", below.length,
+                organs.liverHeld().length, followers);
+        assertTrue(below.length > 10, "liver nodes on the abdomen: " + below.length);
+        java.util.Set<Integer> held = new java.util.HashSet<>();
+        for (int id : organs.liverHeld()) {
+            held.add(id);
+        }
+        double[] b = organs.liver().surface().bounds();
+        double zMid = 0.5 * (b[2] + b[5]);
+        double h = ThoraxOrgans.LIVER.cellSizeM();
+        double k = ThoraxOrgans.Options.ABDOMEN_PA_PER_M * h * h;
+        java.util.Map<Integer, List<org.tensim.model.Spring>> byNode = new java.util.HashMap<>();
+        for (org.tensim.model.Spring sp : scene.topology().springs()) {
+            byNode.computeIfAbsent(sp.a(), x -> new java.util.ArrayList<>()).add(sp);
+        }
+        for (int id : below) {
+            assertFalse(held.contains(id), "node " + id + " both held at the bare area and on the abdomen");
+            var p = scene.topology().node(id).position();
+            assertTrue(p.z() < zMid, "node " + id + " on the abdomen at z " + p.z()
+                    + " m, above the liver's middle");
+            List<org.tensim.model.Spring> ties = byNode.getOrDefault(id, List.of()).stream()
+                    .filter(sp -> scene.topology().node(sp.b()).isFixed()).toList();
+            assertEquals(1, ties.size(), "node " + id + "'s ties to fixed anchors");
+            org.tensim.model.Spring tie = ties.get(0);
+            assertEquals(k, tie.stiffness(), 1e-9 * k, "K h^2");
+            assertEquals(0, tie.restLength(), 0);
+            assertEquals(0, p.distance(scene.topology().node(tie.b()).position()), 1e-12, "anchor at rest point");
+        }
+        ThoraxOrgans.Options none = ThoraxOrgans.Options.defaults().withLiver().withAbdomen(0);
+        assertEquals(0, none.liverBelowPaPerM(), 0);
+        assertThrows(IllegalArgumentException.class, () -> ThoraxOrgans.Options.defaults().withAbdomen(-1));
     }
 
     private static double stepMs(Simulation sim, double dt, int n) {
