@@ -52,7 +52,8 @@ public final class ThoraxOrganRun {
             PleuraCarriers.Built r = organs.pleurae().get(0);
             PleuraCarriers.Built l = organs.pleurae().get(1);
             log.printf(java.util.Locale.ROOT, "organs: %d nodes added to the %d of the diaphragm scene (lungs %d + %d,"
-                    + " liver %d, %d held at the bare area, %d on the abdomen); pleura right/left %d/%d vertices: diaphragm %d/%d, rib %d/%d, intercostal %d/%d,"
+                    + " liver %d, %d held at the bare area, %d on the abdomen); pleura right/left %d/%d vertices:"
+                    + " diaphragm %d/%d, rib %d/%d, intercostal %d/%d,"
                     + " fixed %d/%d; followers %s; built in %.1f s%n", scene.topology().nodeCount() - before, before,
                     organs.lungs().get(0).body().nodeCount(), organs.lungs().get(1).body().nodeCount(),
                     organs.liver() == null ? 0 : organs.liver().nodeCount(), organs.liverHeld().length,

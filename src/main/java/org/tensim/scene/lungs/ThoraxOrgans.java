@@ -58,8 +58,8 @@ public final class ThoraxOrgans {
      * @param probesM           user probes, 3 per point, m, each inside a lung
      */
     public record Options(VolumeParameters lung, VolumeParameters liver, PleuraCarriers.Rules rules,
-            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverBelowPaPerM, double liverReachM,
-            double followerBandM, int samples, double[] probesM) {
+            double pleuraPaPerM, double liverPaPerM, double liverHoldPaPerM, double liverBelowPaPerM,
+            double liverReachM, double followerBandM, int samples, double[] probesM) {
         /**
          * The abdomen's support under the liver by default, Pa/m: a Winkler foundation's modulus, the viscera below
          * taken as stiff as the liver's own support of the diaphragm, {@code E / h} with the healthy liver's
@@ -112,20 +112,21 @@ public final class ThoraxOrgans {
 
         /** The same with the liver volume of {@link #LIVER}. */
         public Options withLiver() {
-            return new Options(lung, LIVER, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
-                    followerBandM, samples, probesM);
+            return new Options(lung, LIVER, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM,
+                    liverReachM, followerBandM, samples, probesM);
         }
 
         /** The same without the liver volume. */
         public Options withoutLiver() {
-            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
-                    followerBandM, samples, probesM);
+            return new Options(lung, null, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM,
+                    liverReachM, followerBandM, samples, probesM);
         }
 
         /** The same with other cell sizes, m (the lungs', the liver's). */
         public Options withCells(double lungM, double liverM) {
             return new Options(lung.withCellSize(lungM), liver == null ? null : liver.withCellSize(liverM), rules,
-                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM, followerBandM, samples, probesM);
+                    pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM, followerBandM, samples,
+                    probesM);
         }
 
         /** The same with the abdomen's support under the liver at {@code paPerM}, Pa/m (0: none). */
@@ -136,8 +137,8 @@ public final class ThoraxOrgans {
 
         /** The same with user probes, 3 per point, m. */
         public Options withProbes(double[] m) {
-            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM, liverReachM,
-                    followerBandM, samples, m.clone());
+            return new Options(lung, liver, rules, pleuraPaPerM, liverPaPerM, liverHoldPaPerM, liverBelowPaPerM,
+                    liverReachM, followerBandM, samples, m.clone());
         }
     }
 
