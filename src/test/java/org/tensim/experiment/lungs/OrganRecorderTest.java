@@ -37,7 +37,8 @@ class OrganRecorderTest {
         List<org.tensim.io.mesh.TriangleMesh> lungs = List.of(ball(-0.06), ball(0.06));
         ThoraxOrgans.Options o = ThoraxOrgans.Options.defaults().withoutLiver().withCells(0.015, 0.03);
         o = new ThoraxOrgans.Options(o.lung(), null, o.rules(), o.pleuraPaPerM(), o.liverPaPerM(),
-                o.liverHoldPaPerM(), o.liverBelowPaPerM(), o.liverReachM(), o.followerBandM(), 20, new double[] {-0.06, -0.12, 1.24});
+                o.liverHoldPaPerM(), o.liverBelowPaPerM(), o.liverReachM(), o.followerBandM(), 20,
+                new double[] {-0.06, -0.12, 1.24});
         ThoraxOrgans organs = ThoraxOrgans.build(scene, lungs, null, o);
         scene.setRecorder(new OrganRecorder(organs, organs.install(scene)));
         Path out = dir.resolve("run");
