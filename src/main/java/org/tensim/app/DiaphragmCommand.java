@@ -85,13 +85,15 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--lungs", description = "With --thorax: build the thorax's lungs into the run, sliding on the"
             + " pleura carried by the diaphragm and the ribs (docs/lungs.md); writes lung-points.csv. The muscle's"
-            + " default fibre stress is then 36000 Pa (it carries the lungs' recoil); --muscle-action overrides it.")
+            + " default fibre stress is then 36000 Pa (it carries the lungs' recoil); --muscle-action overrides it."
+            + " Runs bdf2 at " + DiaphragmSolverOptions.ORGANS_DT_S + " s unless --integrator or --dt is given.")
     boolean lungs;
 
-    @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm, held"
-            + " at its bare area and on the abdomen below (the rigid support stays); RK2 diverges with it within 1 ms:"
-            + " use bdf2 (docs/lungs.md).")
-    boolean liver;
+    @Option(names = "--liver", negatable = true, description = "With --lungs: also the liver as a volume pushed by"
+            + " the diaphragm, held at its bare area and on the abdomen below, the rigid support kept (default: on"
+            + " with --lungs; --no-liver leaves it out). An explicit integrator at the scene's own step diverges with"
+            + " it within 1 ms and is refused: give --dt, or use bdf2 (docs/lungs.md).")
+    Boolean liver;
 
     @Option(names = "--liver-abdomen", paramLabel = "PA_PER_M", description = "With --liver: stiffness per unit area"
             + " of the abdomen's elastic support under the liver's lower half, Pa/m; 0 turns it off (default: "
@@ -104,6 +106,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @picocli.CommandLine.Mixin
     OutFolderOption out = new OutFolderOption(Path.of("out", "diaphragm"));
+
+    /** What --lungs chose for the integrator and step when none was given (null: the user's), for the summary. */
+    private String organsSolver;
 
     /** The studies' former mode flags, kept to say where the studies went. */
     @Option(names = "--resolution-study", hidden = true)
@@ -129,6 +134,10 @@ public final class DiaphragmCommand implements Callable<Integer> {
                 DiaphragmSpec.PAPER_RINGS);
         // With the lungs the muscle also carries their recoil: its default stress is the one measured with them.
         final DiaphragmSpec sceneSpec = lungs ? org.tensim.scene.lungs.LungsMuscle.applyTo(given) : given;
+        organsSolver = lungs && !realtime ? solver.defaultForOrgans(spec) : null;
+        if (organsSolver != null) {
+            System.out.println(organsSolver);
+        }
         solver.check(spec, sceneSpec, seconds);
         // --pick, or --realtime on the default scene: the mechanics at the pick's rings, the 43-ring mesh carried
         org.tensim.experiment.diaphragm.ResolutionPick picked = null;
@@ -153,15 +162,21 @@ public final class DiaphragmCommand implements Callable<Integer> {
             throw usage("--lungs needs --thorax DIR (the organs' meshes) and runs the built mesh itself: leave out"
                     + " --pick, --realtime and --coarse-edge");
         }
-        if ((liver || lungProbes != null) && !lungs) {
-            throw usage("--liver and --lung-probe go with --lungs");
+        if ((liver != null || lungProbes != null) && !lungs) {
+            throw usage("--liver, --no-liver and --lung-probe go with --lungs");
         }
-        if (liverAbdomenPaPerM != null && (!liver || !(liverAbdomenPaPerM >= 0 && liverAbdomenPaPerM < 1e12))) {
+        if (liverAbdomenPaPerM != null && (!withLiver() || !(liverAbdomenPaPerM >= 0 && liverAbdomenPaPerM < 1e12))) {
             throw usage("--liver-abdomen " + liverAbdomenPaPerM + ": expected a stiffness of 0 or more in Pa/m,"
-                    + " with --liver");
+                    + " with the liver (leave out --no-liver)");
         }
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
+        if (withLiver() && chosen.explicit() && dt == 0) {
+            throw usage("--integrator " + solver.integratorName() + " at the scene's own step diverges with the liver"
+                    + " within 1 ms (its contact with the diaphragm's lower surface; docs/lungs.md): give --dt (5e-6"
+                    + " s ran), use --integrator bdf2 (with --dt " + DiaphragmSolverOptions.ORGANS_DT_S + ", the"
+                    + " default with --lungs), or leave the liver out with --no-liver");
+        }
         int threadCount = threads.threads(spec);
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");
@@ -190,7 +205,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
     /** The organs' options from --liver and --lung-probe (mm, checked as numbers). */
     private org.tensim.scene.lungs.ThoraxOrgans.Options organOptions() {
         var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
-        if (liver) {
+        if (withLiver()) {
             o = o.withLiver();
         }
         if (liverAbdomenPaPerM != null) {
@@ -212,6 +227,11 @@ public final class DiaphragmCommand implements Callable<Integer> {
             }
         }
         return o.withProbes(m);
+    }
+
+    /** The liver with the lungs: on unless --no-liver. */
+    private boolean withLiver() {
+        return lungs && (liver == null || liver);
     }
 
     private picocli.CommandLine.ParameterException usage(String message) {
@@ -259,6 +279,9 @@ public final class DiaphragmCommand implements Callable<Integer> {
                     System.out);
         }
         Map<String, Object> fields = report(run, built, o, chosen, setting, threads, scene.mesh, picked, decimated);
+        if (organsSolver != null) {
+            fields.put("dt_rule", organsSolver); // the report's rule would say "given (--dt)"
+        }
         if (decimated != null) {
             fields.put("coarse_edge_mm", coarseEdgeMm);
         }

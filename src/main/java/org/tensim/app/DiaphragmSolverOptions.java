@@ -42,7 +42,29 @@ public final class DiaphragmSolverOptions {
                     + PrefactoredBdf2.CONTACT_KRYLOV_ITERATIONS + ").")
     Integer cgIterations;
 
+    /**
+     * The step the organs' runs take by default, s: bdf2 at 2.5 ms is the integrator and step of every run with the
+     * lungs and the liver in docs/lungs.md (three cycles on the full mesh, breaths the same to 0.19 %). RK2 at the
+     * thorax's recommended step (about 1.3e-5 s) needs some 200 times the steps, and with the liver it diverges
+     * within 1 ms.
+     */
+    public static final double ORGANS_DT_S = 0.0025;
+
     private double checkedDt;
+
+    /**
+     * With the organs: {@code bdf2} at {@link #ORGANS_DT_S} when neither {@code --integrator} nor {@code --dt} was
+     * given. Returns what it chose, for the summary, or null when the user's choice stands.
+     */
+    String defaultForOrgans(CommandSpec spec) {
+        if (integrator.given(spec) || dt.given(spec)) {
+            return null;
+        }
+        integrator.defaultTo(spec, PrefactoredBdf2.NAME);
+        dt.defaultTo(spec, ORGANS_DT_S);
+        return "with --lungs and neither --integrator nor --dt: " + PrefactoredBdf2.NAME + " at " + ORGANS_DT_S
+                + " s, the organs' runs' step (docs/lungs.md)";
+    }
 
     /**
      * Checks the options against the scene (each setting applies to its own integrator; the step is at most one

@@ -16,6 +16,19 @@ public final class IntegratorOption {
         return integrator;
     }
 
+    /** Whether {@code --integrator} was given on the command line of {@code spec}. */
+    public boolean given(CommandSpec spec) {
+        return spec.commandLine().getParseResult() != null
+                && spec.commandLine().getParseResult().hasMatchedOption("--integrator");
+    }
+
+    /** Takes {@code name} in place of the default when {@code --integrator} was not given (a scene's own default). */
+    public void defaultTo(CommandSpec spec, String name) {
+        if (!given(spec)) {
+            integrator = name;
+        }
+    }
+
     /** A new integrator of the name; an unknown name is a usage error listing the known ones. */
     public Integrator create(CommandSpec spec) {
         try {

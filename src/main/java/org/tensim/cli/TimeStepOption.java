@@ -52,6 +52,19 @@ public final class TimeStepOption {
         return new TimeStepOption(new Step(0, shown), true);
     }
 
+    /** Whether {@code --dt} was given on the command line of {@code spec}. */
+    public boolean given(CommandSpec spec) {
+        return spec.commandLine().getParseResult() != null
+                && spec.commandLine().getParseResult().hasMatchedOption("--dt");
+    }
+
+    /** Takes {@code seconds} (> 0) in place of the default when {@code --dt} was not given. */
+    public void defaultTo(CommandSpec spec, double seconds) {
+        if (!given(spec)) {
+            dt = new Step(seconds, null);
+        }
+    }
+
     /**
      * The step, s: > 0, or 0 where the scene chooses its own step (the default of {@link #chosenByScene});
      * anything else is a usage error naming the value.

@@ -126,9 +126,14 @@ public final class DiaphragmReport {
         Snapshots snapshots = Snapshots.plan(scene, o, metrics.measuredCycleStart());
         VtkSeriesWriter vtk = o.vtkPerCycle() > 0 ? new VtkSeriesWriter(out.file("vtk"), "diaphragm",
                 scene.allTriangles(), java.util.Arrays.copyOf(scene.labels(), scene.simulatedNodes()), "tissue") : null;
+        // With terms the scene's own bound does not count (the organs' couplings): their frequency, measured.
+        Map<String, Object> withTerms = sim.forces().termCount() > 0 ? ModelFrequency.measure(sim, sim.time()) : null;
         Stepping stepping = step(scene, sim, o, dt, metrics, snapshots, vtk, out, workers);
         Map<String, Object> summary = new LinkedHashMap<>();
         SceneMakeUp.describe(summary, built);
+        if (withTerms != null) {
+            summary.put("omega_measured_with_terms", withTerms);
+        }
         if (metrics.complete()) {
             describeBreathing(summary, metrics);
         } else {

@@ -83,9 +83,9 @@ public final class ThoraxOrgans {
         }
 
         /**
-         * The defaults: the parenchyma, no liver volume ({@link #withLiver}: its contact makes the thorax's RK2
-         * run diverge within 0.001 s, and bdf2 at 2.5 ms on the full mesh has not been run with it over a
-         * cycle, docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
+         * The defaults: the parenchyma, no liver volume ({@link #withLiver}, which {@code tensim diaphragm --lungs}
+         * adds with bdf2 at 2.5 ms: its contact makes the thorax's RK2 at the scene's step diverge within 0.001 s,
+         * docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), the abdomen below it
