@@ -91,8 +91,7 @@ public final class DiaphragmCommand implements Callable<Integer> {
 
     @Option(names = "--liver", negatable = true, description = "With --lungs: also the liver as a volume pushed by"
             + " the diaphragm, held at its bare area and on the abdomen below, the rigid support kept (default: on"
-            + " with --lungs; --no-liver leaves it out). An explicit integrator at the scene's own step diverges with"
-            + " it within 1 ms and is refused: give --dt, or use bdf2 (docs/lungs.md).")
+            + " with --lungs; --no-liver leaves it out; docs/lungs.md).")
     Boolean liver;
 
     @Option(names = "--liver-abdomen", paramLabel = "PA_PER_M", description = "With --liver: stiffness per unit area"
@@ -171,12 +170,6 @@ public final class DiaphragmCommand implements Callable<Integer> {
         }
         org.tensim.solver.Integrator chosen = solver.create(sceneSpec);
         double dt = solver.dt();
-        if (withLiver() && chosen.explicit() && dt == 0) {
-            throw usage("--integrator " + solver.integratorName() + " at the scene's own step diverges with the liver"
-                    + " within 1 ms (its contact with the diaphragm's lower surface; docs/lungs.md): give --dt (5e-6"
-                    + " s ran), use --integrator bdf2 (with --dt " + DiaphragmSolverOptions.ORGANS_DT_S + ", the"
-                    + " default with --lungs), or leave the liver out with --no-liver");
-        }
         int threadCount = threads.threads(spec);
         Path folder = out.folder(spec);
         CommandChecks.positive(spec, "--seconds", seconds, "s");

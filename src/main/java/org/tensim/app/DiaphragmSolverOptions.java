@@ -45,8 +45,8 @@ public final class DiaphragmSolverOptions {
     /**
      * The step the organs' runs take by default, s: bdf2 at 2.5 ms is the integrator and step of every run with the
      * lungs and the liver in docs/lungs.md (three cycles on the full mesh, breaths the same to 0.19 %). RK2 at the
-     * thorax's recommended step (about 1.3e-5 s) needs some 200 times the steps, and with the liver it diverges
-     * within 1 ms.
+     * thorax's recommended step (about 1.3e-5 s) needs some 200 times the steps: about 3 hours a breath on the full
+     * mesh on two cores.
      */
     public static final double ORGANS_DT_S = 0.0025;
 

@@ -133,13 +133,69 @@ final class SurfacePairing {
     }
 
     /**
-     * True when the projection whose barycentric coordinates are {@code bary[4..6]} (as {@link #plane} writes them)
-     * lies beyond a border edge of triangle t: its most negative coordinate is opposite an edge no other triangle
-     * shares. Such a follower is off the (open) surface, past its rim.
+     * True when the follower whose frame {@link #walk} wrote into {@code frame} is beyond a border edge of its
+     * triangle: its projection's most negative barycentric coordinate is opposite an edge no other triangle shares.
+     * Such a follower is off the (open) surface, past its rim.
      */
-    boolean beyondBorder(int t, double[] bary) {
+    static boolean beyondBorder(double[] frame) {
+        return frame[7] != 0;
+    }
+
+    private boolean projectionBeyondBorder(int t, double[] bary) {
         int c = bary[4] <= bary[5] ? (bary[4] <= bary[6] ? 0 : 2) : (bary[5] <= bary[6] ? 1 : 2);
         return bary[4 + c] < 0 && across[3 * t + c] < 0;
+    }
+
+    /**
+     * Turns the plane of triangle t in {@code out} (as {@link #plane} wrote it for y) into the follower's frame: where
+     * the projection is inside the triangle, the plane itself; where it is outside (the follower nearest the
+     * triangle's rim), the closest point's: {@code out[4..6]} its barycentric coordinates (>= 0), {@code out[3]} = d
+     * = s |y - c| and {@code out[0..2]} = u = s (y - c) / |y - c|, the sign s that of the paired triangle's normal plus
+     * the normal across the closest edge (an edge's pseudo-normal) dotted with y - c. So d is the signed distance to
+     * the surface, continuous when the pairing moves across an edge at a fold: two triangles meeting at an edge have
+     * the same closest point there, where their two extended planes would give distances that differ by about
+     * |y - c| times the fold's angle. {@code E = k (g - d)^2 / 2} is still exactly minus the gradient of the forces
+     * along u: the closest point minimises the distance over the triangle, so its own motion drops out (the envelope
+     * theorem). {@code out[7]} = 1 when the projection is beyond a border edge ({@link #beyondBorder}), else 0.
+     *
+     * @return t
+     */
+    private int frame(double[] p, int t, double[] x, int yo, double[] out) {
+        out[7] = projectionBeyondBorder(t, out) ? 1 : 0;
+        if (out[4] >= 0 && out[5] >= 0 && out[6] >= 0) {
+            return t;
+        }
+        double sx = out[0], sy = out[1], sz = out[2];
+        double d2 = closest(p, t, x, yo, out);
+        int c = out[4] <= out[5] ? (out[4] <= out[6] ? 0 : 2) : (out[5] <= out[6] ? 1 : 2);
+        int o = across[3 * t + c];
+        if (o >= 0) {
+            int a = 3 * tri[3 * o], b = 3 * tri[3 * o + 1], q = 3 * tri[3 * o + 2];
+            double e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
+            double e2x = p[q] - p[a], e2y = p[q + 1] - p[a + 1], e2z = p[q + 2] - p[a + 2];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+            if (len > 0) {
+                sx += nx / len;
+                sy += ny / len;
+                sz += nz / len;
+            }
+        }
+        int ia = 3 * tri[3 * t], ib = 3 * tri[3 * t + 1], ic = 3 * tri[3 * t + 2];
+        double dx = x[yo] - (out[4] * p[ia] + out[5] * p[ib] + out[6] * p[ic]);
+        double dy = x[yo + 1] - (out[4] * p[ia + 1] + out[5] * p[ib + 1] + out[6] * p[ic + 1]);
+        double dz = x[yo + 2] - (out[4] * p[ia + 2] + out[5] * p[ib + 2] + out[6] * p[ic + 2]);
+        double dist = Math.sqrt(d2);
+        if (dist > 0) {
+            double sign = sx * dx + sy * dy + sz * dz < 0 ? -1 : 1;
+            out[0] = sign * dx / dist;
+            out[1] = sign * dy / dist;
+            out[2] = sign * dz / dist;
+            out[3] = sign * dist;
+        } else {
+            out[3] = 0; // on the rim: the triangle's normal stands
+        }
+        return t;
     }
 
     /**
@@ -148,6 +204,14 @@ final class SurfacePairing {
      * face). Allocation-free.
      */
     double closestDistance2(double[] p, int t, double[] x, int yo) {
+        return closest(p, t, x, yo, null);
+    }
+
+    /**
+     * As {@link #closestDistance2}, writing the closest point's barycentric coordinates (>= 0, summing to 1) into
+     * {@code bary[4..6]} when bary is not null.
+     */
+    private double closest(double[] p, int t, double[] x, int yo, double[] bary) {
         int ia = 3 * tri[3 * t];
         int ib = 3 * tri[3 * t + 1];
         int ic = 3 * tri[3 * t + 2];
@@ -157,41 +221,47 @@ final class SurfacePairing {
         double apx = x[yo] - ax, apy = x[yo + 1] - ay, apz = x[yo + 2] - az;
         double d1 = abx * apx + aby * apy + abz * apz;
         double d2 = acx * apx + acy * apy + acz * apz;
-        if (d1 <= 0 && d2 <= 0) {
-            return apx * apx + apy * apy + apz * apz; // corner a
-        }
-        double bpx = apx - abx, bpy = apy - aby, bpz = apz - abz;
-        double d3 = abx * bpx + aby * bpy + abz * bpz;
-        double d4 = acx * bpx + acy * bpy + acz * bpz;
-        if (d3 >= 0 && d4 <= d3) {
-            return bpx * bpx + bpy * bpy + bpz * bpz; // corner b
-        }
-        double vc = d1 * d4 - d3 * d2;
         double v;
         double w;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-            v = d1 / (d1 - d3); // edge ab
-            return dist2(apx, apy, apz, v * abx, v * aby, v * abz);
+        if (d1 <= 0 && d2 <= 0) {
+            v = 0; // corner a
+            w = 0;
+        } else {
+            double bpx = apx - abx, bpy = apy - aby, bpz = apz - abz;
+            double d3 = abx * bpx + aby * bpy + abz * bpz;
+            double d4 = acx * bpx + acy * bpy + acz * bpz;
+            double cpx = apx - acx, cpy = apy - acy, cpz = apz - acz;
+            double d5 = abx * cpx + aby * cpy + abz * cpz;
+            double d6 = acx * cpx + acy * cpy + acz * cpz;
+            double vc = d1 * d4 - d3 * d2;
+            double vb = d5 * d2 - d1 * d6;
+            double va = d3 * d6 - d5 * d4;
+            if (d3 >= 0 && d4 <= d3) {
+                v = 1; // corner b
+                w = 0;
+            } else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+                v = d1 / (d1 - d3); // edge ab
+                w = 0;
+            } else if (d6 >= 0 && d5 <= d6) {
+                v = 0; // corner c
+                w = 1;
+            } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+                v = 0; // edge ac
+                w = d2 / (d2 - d6);
+            } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+                w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge bc
+                v = 1 - w;
+            } else {
+                double denom = 1 / (va + vb + vc); // face
+                v = vb * denom;
+                w = vc * denom;
+            }
         }
-        double cpx = apx - acx, cpy = apy - acy, cpz = apz - acz;
-        double d5 = abx * cpx + aby * cpy + abz * cpz;
-        double d6 = acx * cpx + acy * cpy + acz * cpz;
-        if (d6 >= 0 && d5 <= d6) {
-            return cpx * cpx + cpy * cpy + cpz * cpz; // corner c
+        if (bary != null) {
+            bary[4] = 1 - v - w;
+            bary[5] = v;
+            bary[6] = w;
         }
-        double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-            w = d2 / (d2 - d6); // edge ac
-            return dist2(apx, apy, apz, w * acx, w * acy, w * acz);
-        }
-        double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-            w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge bc
-            return dist2(apx, apy, apz, abx + w * (acx - abx), aby + w * (acy - aby), abz + w * (acz - abz));
-        }
-        double denom = 1 / (va + vb + vc); // face
-        v = vb * denom;
-        w = vc * denom;
         return dist2(apx, apy, apz, v * abx + w * acx, v * aby + w * acy, v * abz + w * acz);
     }
 
@@ -245,8 +315,9 @@ final class SurfacePairing {
     }
 
     /**
-     * The walk from triangle {@code start} for y = (x[yo..yo+2]) (see the class comment); {@code scratch} (7
-     * doubles) receives the {@link #plane} of the triangle returned. Allocation-free.
+     * The walk from triangle {@code start} for y = (x[yo..yo+2]) (see the class comment); {@code scratch} (8
+     * doubles) receives the follower's frame against the triangle returned ({@link #frame}: its plane where the
+     * projection is inside it, its closest point's otherwise). Allocation-free.
      *
      * @return the triangle the follower is paired with now; -1 if it is degenerate (zero area)
      */
@@ -257,7 +328,7 @@ final class SurfacePairing {
                 return -1;
             }
             if (step == MAX_STEPS || (scratch[4] >= 0 && scratch[5] >= 0 && scratch[6] >= 0)) {
-                return t;
+                return frame(p, t, x, yo, scratch);
             }
             int best = t;
             double bestD = closestDistance2(p, t, x, yo);
@@ -269,7 +340,7 @@ final class SurfacePairing {
                 }
             }
             if (best == t) {
-                return t; // a local minimum of the distance: the follower is nearest this triangle's rim
+                return frame(p, t, x, yo, scratch); // a local minimum of the distance: nearest this triangle's rim
             }
             t = best;
         }

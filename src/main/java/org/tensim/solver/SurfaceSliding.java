@@ -66,12 +66,12 @@ public final class SurfaceSliding implements ForceTerm {
     private final double[] followerForces; // force pass: 3 per follower, N
     private final double[] readYs; // energy and read-outs (under readLock)
     private final double[] linYs; // linearisation
-    private final double[] plane = new double[7]; // force pass: n, d, beta
+    private final double[] plane = new double[8]; // force pass: n, d, beta, beyond a border
     private final double[] readPoints; // energy and read-outs (under readLock)
-    private final double[] readPlane = new double[7];
+    private final double[] readPlane = new double[8];
     private final Object readLock = new Object();
     private final double[] linPoints; // linearisation: p = W x
-    private final double[] linPlane = new double[7];
+    private final double[] linPlane = new double[8];
     private final SlidingTangent tangent; // the planes of the last linearisation
     private final SlidingTangent restTangent; // every follower's plane at construction, for the preconditioner
 
@@ -209,7 +209,7 @@ public final class SurfaceSliding implements ForceTerm {
             }
             pair[e] = tri;
             double pen = gap[e] - pl[3];
-            if (mode == Mode.CONTACT && (pen <= 0 || surface.beyondBorder(tri, pl))) {
+            if (mode == Mode.CONTACT && (pen <= 0 || SurfacePairing.beyondBorder(pl))) {
                 continue;
             }
             double s = stiffness[e] * pen;
@@ -240,7 +240,7 @@ public final class SurfaceSliding implements ForceTerm {
         for (int e = 0; e < pair.length; e++) {
             int tri = surface.walk(linPoints, pair[e], linYs, 3 * e, linPlane);
             if (tri >= 0 && mode == Mode.CONTACT
-                    && (gap[e] - linPlane[3] <= 0 || surface.beyondBorder(tri, linPlane))) {
+                    && (gap[e] - linPlane[3] <= 0 || SurfacePairing.beyondBorder(linPlane))) {
                 tri = -1;
             }
             tangent.set(e, tri, linPlane);
@@ -279,7 +279,7 @@ public final class SurfaceSliding implements ForceTerm {
     /** g - d of follower e with readPoints and readYs mapped; NaN when off the surface (CONTACT) or degenerate. */
     private double penetration(int e) {
         int tri = surface.walk(readPoints, pair[e], readYs, 3 * e, readPlane);
-        if (tri < 0 || mode == Mode.CONTACT && surface.beyondBorder(tri, readPlane)) {
+        if (tri < 0 || mode == Mode.CONTACT && SurfacePairing.beyondBorder(readPlane)) {
             return Double.NaN;
         }
         return gap[e] - readPlane[3];

@@ -17,9 +17,9 @@ import org.tensim.testsupport.CoarseMeshes;
 
 /**
  * {@code tensim diaphragm --thorax DIR --lungs}: the liver comes with the lungs unless {@code --no-liver}, the run
- * takes the organs' integrator and step (bdf2 at 2.5 ms) unless one is given and says so in its summary, and an
- * explicit integrator at the scene's own step, which diverges with the liver within 1 ms, is refused before
- * anything is built. On the decimated BodyParts3D diaphragm; skipped, naming the file, where ../shared is absent.
+ * takes the organs' integrator and step (bdf2 at 2.5 ms) unless one is given and says so in its summary, and the
+ * liver's options out of place are refused. On the decimated BodyParts3D diaphragm; skipped, naming the file, where
+ * ../shared is absent.
  */
 class DiaphragmLungsCommandTest {
     static final Path THORAX = org.tensim.testsupport.SharedData.THORAX;
@@ -61,22 +61,26 @@ class DiaphragmLungsCommandTest {
                 + " 0.0025 s"), "the summary says why: " + s.get("dt_rule"));
         assertTrue(liverNodes(s) > 100, "the liver is built by default: " + liverNodes(s));
 
-        // --no-liver leaves it out, and then the paper's RK2 at the scene's own step runs.
-        s = runLungs("no-liver", "--no-liver", "--integrator", "rk2", "--seconds", "0.0001");
+        // An integrator given stands, at the scene's own step: the paper's RK2 with the liver (its contact once
+        // diverged within 1 ms at a fold of the diaphragm's lower surface, docs/lungs.md).
+        s = runLungs("rk2", "--integrator", "rk2", "--seconds", "0.001");
         assertEquals("rk2", s.get("integrator"));
-        assertEquals(0, liverNodes(s));
         assertTrue(String.valueOf(s.get("dt_rule")).startsWith("rk2 stable step"), String.valueOf(s.get("dt_rule")));
+        assertTrue(liverNodes(s) > 100);
+        @SuppressWarnings("unchecked")
+        Map<String, Object> omega = (Map<String, Object>) s.get("omega_measured_with_terms");
+        assertTrue(((Number) omega.get("omega_rad_s")).doubleValue() <= ((Number) s.get("omega_max_bound_rad_s"))
+                .doubleValue(), "the organs' terms leave the frequency under the scene's own bound: " + omega);
+
+        // --no-liver leaves it out.
+        s = runLungs("no-liver", "--no-liver", "--seconds", "0.005");
+        assertEquals(0, liverNodes(s));
     }
 
     @Test
-    void anExplicitStepThatDivergesWithTheLiverIsRefusedBeforeTheBuild() {
+    void liverOptionsOutOfPlaceAreRefused() {
         assumeTrue(Files.isRegularFile(THORAX.resolve("parts.json")), THORAX.resolve("parts.json") + " not found");
-        String[] r = Commands.run("diaphragm", "--mesh", MESH.toString(), "--units", "mm", "--thorax",
-                THORAX.toString(), "--lungs", "--integrator", "rk2", "--out", dir.resolve("a").toString());
-        assertEquals("2", r[0], r[2]);
-        assertTrue(r[2].contains("--integrator rk2 at the scene's own step diverges with the liver")
-                && r[2].contains("--no-liver") && r[2].contains("--dt"), r[2]);
-        assertFalse(Files.exists(dir.resolve("a").resolve("summary.json")), "refused before any run");
+        String[] r;
         r = Commands.run("diaphragm", "--no-liver", "--out", dir.resolve("b").toString());
         assertEquals("2", r[0], r[2]);
         assertTrue(r[2].contains("--liver, --no-liver and --lung-probe go with --lungs"), r[2]);

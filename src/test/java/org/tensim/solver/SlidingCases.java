@@ -102,6 +102,77 @@ final class SlidingCases {
     }
 
     /**
+     * The follower's frame against triangle t, computed independently of {@link SurfacePairing}: {@code {u, d}} with
+     * d the signed distance (m) and u the unit direction of its force. Over the triangle's inside, its plane (u = n,
+     * d = n . (y - a)); outside, the closest point c on the nearest of its three edges (segments), d = s |y - c| and
+     * u = s (y - c) / |y - c|, s the sign of (n + the normal across that edge) . (y - c).
+     */
+    static double[] frame(Case c, double[] x, int t, int yo) {
+        double[] p = new double[3 * c.mapping().pointCount()];
+        c.mapping().apply(x, p);
+        double[] na = normalAndCorner(c, x, t);
+        double[] y = {x[yo], x[yo + 1], x[yo + 2]};
+        double d = 0;
+        for (int a = 0; a < 3; a++) {
+            d += na[a] * (y[a] - na[3 + a]);
+        }
+        double[][] corner = new double[3][];
+        for (int k = 0; k < 3; k++) {
+            int o = 3 * c.triangles()[3 * t + k];
+            corner[k] = new double[] {p[o], p[o + 1], p[o + 2]};
+        }
+        double[] proj = {y[0] - d * na[0], y[1] - d * na[1], y[2] - d * na[2]};
+        boolean inside = true;
+        for (int k = 0; k < 3; k++) {
+            double[] e = sub(corner[(k + 1) % 3], corner[k]);
+            double[] r = sub(proj, corner[k]);
+            double[] cr = {e[1] * r[2] - e[2] * r[1], e[2] * r[0] - e[0] * r[2], e[0] * r[1] - e[1] * r[0]};
+            inside &= cr[0] * na[0] + cr[1] * na[1] + cr[2] * na[2] >= 0;
+        }
+        if (inside) {
+            return new double[] {na[0], na[1], na[2], d};
+        }
+        double best = Double.POSITIVE_INFINITY;
+        double[] cp = null;
+        int edge = -1;
+        for (int k = 0; k < 3; k++) {
+            double[] a = corner[k];
+            double[] e = sub(corner[(k + 1) % 3], a);
+            double[] r = sub(y, a);
+            double tt = Math.max(0, Math.min(1, (r[0] * e[0] + r[1] * e[1] + r[2] * e[2])
+                    / (e[0] * e[0] + e[1] * e[1] + e[2] * e[2])));
+            double[] q = {a[0] + tt * e[0], a[1] + tt * e[1], a[2] + tt * e[2]};
+            double[] dq = sub(y, q);
+            double dist = Math.sqrt(dq[0] * dq[0] + dq[1] * dq[1] + dq[2] * dq[2]);
+            if (dist < best) {
+                best = dist;
+                cp = q;
+                edge = k;
+            }
+        }
+        double[] sn = {na[0], na[1], na[2]};
+        int ea = c.triangles()[3 * t + edge];
+        int eb = c.triangles()[3 * t + (edge + 1) % 3];
+        for (int o = 0; 3 * o < c.triangles().length; o++) {
+            java.util.Set<Integer> ids = java.util.Set.of(c.triangles()[3 * o], c.triangles()[3 * o + 1],
+                    c.triangles()[3 * o + 2]);
+            if (o != t && ids.contains(ea) && ids.contains(eb)) {
+                double[] no = normalAndCorner(c, x, o);
+                for (int a = 0; a < 3; a++) {
+                    sn[a] += no[a];
+                }
+            }
+        }
+        double[] dq = sub(y, cp);
+        double sign = sn[0] * dq[0] + sn[1] * dq[1] + sn[2] * dq[2] < 0 ? -1 : 1;
+        return new double[] {sign * dq[0] / best, sign * dq[1] / best, sign * dq[2] / best, sign * best};
+    }
+
+    private static double[] sub(double[] a, double[] b) {
+        return new double[] {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    }
+
+    /**
      * Puts every follower over the inside of its paired triangle (barycentric coordinates at least 0.1 from its
      * edges), 3 mm either side: there the walk keeps the pairing under any small displacement, so the energy is the
      * one smooth function whose gradient the forces claim to be. (Across a ridge or a rim, where the projection is

@@ -197,7 +197,7 @@ class SlidingTangentRowsTest {
         SurfacePairing surface = pairing(c);
         double[] points = new double[3 * c.mapping().pointCount()];
         c.mapping().apply(c.x(), points);
-        double[] plane = new double[7];
+        double[] plane = new double[8];
         for (int e = 0; e < s.pairCount(); e++) {
             int t = surface.walk(points, s.pairedTriangle(e), c.x(), 3 * s.follower(e), plane);
             for (int corner = 0; corner < 3; corner++) {

@@ -13,7 +13,8 @@ import org.tensim.testsupport.AllocationCounter;
 /**
  * The sliding term's forces on seeded random configurations (a bumpy mapped surface turned anyhow, followers above
  * and below it): Newton's third law (total force and moment), forces = -grad E by central differences, along the
- * normal only with the magnitude k (g - d), the nearest triangle, the walk, no allocation, and the refusals.
+ * normal (the closest point's direction past a triangle's rim: {@link SlidingCases#frame}) only with the magnitude
+ * k (g - d), the nearest triangle, the walk, no allocation, and the refusals.
  */
 class SurfaceSlidingTest {
     private static final int SEEDS = 20;
@@ -92,11 +93,8 @@ class SurfaceSlidingTest {
             double[] f = forces(s, c.x());
             for (int e = 0; e < s.pairCount(); e++) {
                 int i = 3 * c.followers()[e];
-                double[] na = SlidingCases.normalAndCorner(c, c.x(), s.pairedTriangle(e));
-                double d = 0;
-                for (int a = 0; a < 3; a++) {
-                    d += na[a] * (c.x()[i + a] - na[3 + a]);
-                }
+                double[] na = SlidingCases.frame(c, c.x(), s.pairedTriangle(e), i);
+                double d = na[3];
                 double expected = c.stiffness()[e] * (c.gaps()[e] - d);
                 double along = f[i] * na[0] + f[i + 1] * na[1] + f[i + 2] * na[2];
                 assertEquals(expected, along, 1e-12 * c.stiffness()[e] * 0.01, "seed " + seed + " follower " + e);
@@ -118,11 +116,8 @@ class SurfaceSlidingTest {
             double[] f = forces(s, c.x());
             for (int e = 0; e < s.pairCount(); e++) {
                 int i = 3 * c.followers()[e];
-                double[] na = SlidingCases.normalAndCorner(c, c.x(), s.pairedTriangle(e));
-                double d = 0;
-                for (int a = 0; a < 3; a++) {
-                    d += na[a] * (c.x()[i + a] - na[3 + a]);
-                }
+                double[] na = SlidingCases.frame(c, c.x(), s.pairedTriangle(e), i);
+                double d = na[3];
                 double along = f[i] * na[0] + f[i + 1] * na[1] + f[i + 2] * na[2];
                 double pen = c.gaps()[e] - d;
                 if (pen > 0) {

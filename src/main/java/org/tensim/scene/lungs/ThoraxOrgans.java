@@ -84,8 +84,7 @@ public final class ThoraxOrgans {
 
         /**
          * The defaults: the parenchyma, no liver volume ({@link #withLiver}, which {@code tensim diaphragm --lungs}
-         * adds with bdf2 at 2.5 ms: its contact makes the thorax's RK2 at the scene's step diverge within 0.001 s,
-         * docs/lungs.md), the pleura's default rule; pleura 1e6 Pa/m
+         * adds), the pleura's default rule; pleura 1e6 Pa/m
          * (the lung's elastic stress at tidal strains, a few hundred Pa: its bulk modulus E / (3 (1 - 2 nu)),
          * 1.7 kPa, times a tenth of volume change, leaves a few tenths of a mm), liver contact 3e5 Pa/m,
          * bare area 1e4 Pa/m (a soft hold: the abdomen's compliance), the abdomen below it
@@ -310,9 +309,14 @@ public final class ThoraxOrgans {
             c.surface().apply(x0, p);
             double[] y = new double[3 * count];
             c.followers().apply(x0, y);
+            // The term's own signed distances (to the closest point where a follower is past its triangle's rim);
+            // one off the surface, past a border, keeps its triangle's plane distance.
             double[] gaps = new double[count];
+            probe.distancesM(x0, gaps);
             for (int e = 0; e < gaps.length; e++) {
-                gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), y, 3 * e);
+                if (Double.isNaN(gaps[e])) {
+                    gaps[e] = OrganGeometry.planeDistance(p, c.triangles(), probe.pairedTriangle(e), y, 3 * e);
+                }
             }
             SurfaceSliding term = SurfaceSliding.mapped(c.followers(), c.surface(), c.triangles(), c.stiffness(),
                     mode, gaps, x0);
