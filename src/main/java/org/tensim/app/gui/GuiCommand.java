@@ -52,10 +52,10 @@ public final class GuiCommand implements Callable<Integer> {
             + " hides them). The full model runs: no mapped mechanics.")
     boolean lungs;
 
-    @Option(names = "--liver", description = "With --lungs: also the liver as a volume pushed by the diaphragm, as"
-            + " tensim diaphragm --liver: held at its bare area and on the abdomen below, the rigid support kept"
-            + " (its contact departs at the zone of apposition: docs/lungs.md).")
-    boolean liver;
+    @Option(names = "--liver", negatable = true, description = "With --lungs: also the liver as a volume pushed by"
+            + " the diaphragm, as tensim diaphragm --lungs builds it: held at its bare area and on the abdomen below,"
+            + " the rigid support kept (default: on with --lungs; --no-liver leaves it out; docs/lungs.md).")
+    Boolean liver;
 
     @Option(names = "--preset", paramLabel = "FILE",
             description = "Load this JSON preset at start (after the last-used parameters).")
@@ -193,9 +193,11 @@ public final class GuiCommand implements Callable<Integer> {
      *                                                and for --liver without --lungs
      */
     private boolean addOrgans(SceneFactory factory) throws java.io.IOException {
-        if (liver && !lungs) {
-            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--liver goes with --lungs");
+        if (liver != null && !lungs) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--liver and --no-liver go with"
+                    + " --lungs");
         }
+        boolean withLiver = liver == null || liver;
         if (!lungs) {
             return false;
         }
@@ -207,7 +209,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         var o = org.tensim.scene.lungs.ThoraxOrgans.Options.defaults();
         f.setOrgans(new org.tensim.scene.tunable.DiaphragmOrgans(org.tensim.scene.lungs.OrganMeshes.load(
-                options.thorax, liver), liver ? o.withLiver() : o.withoutLiver()));
+                options.thorax, withLiver), withLiver ? o.withLiver() : o.withoutLiver()));
         return true;
     }
 
