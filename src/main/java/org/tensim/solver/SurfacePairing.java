@@ -142,8 +142,13 @@ final class SurfacePairing {
     }
 
     private boolean projectionBeyondBorder(int t, double[] bary) {
-        int c = bary[4] <= bary[5] ? (bary[4] <= bary[6] ? 0 : 2) : (bary[5] <= bary[6] ? 1 : 2);
+        int c = smallest(bary);
         return bary[4 + c] < 0 && across[3 * t + c] < 0;
+    }
+
+    /** The corner (0..2) whose barycentric coordinate in {@code bary[4..6]} is the smallest: its opposite edge. */
+    private static int smallest(double[] bary) {
+        return bary[4] <= bary[5] ? (bary[4] <= bary[6] ? 0 : 2) : (bary[5] <= bary[6] ? 1 : 2);
     }
 
     /**
@@ -167,8 +172,7 @@ final class SurfacePairing {
         }
         double sx = out[0], sy = out[1], sz = out[2];
         double d2 = closest(p, t, x, yo, out);
-        int c = out[4] <= out[5] ? (out[4] <= out[6] ? 0 : 2) : (out[5] <= out[6] ? 1 : 2);
-        int o = across[3 * t + c];
+        int o = across[3 * t + smallest(out)];
         if (o >= 0) {
             int a = 3 * tri[3 * o], b = 3 * tri[3 * o + 1], q = 3 * tri[3 * o + 2];
             double e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
@@ -223,39 +227,50 @@ final class SurfacePairing {
         double d2 = acx * apx + acy * apy + acz * apz;
         double v;
         double w;
-        if (d1 <= 0 && d2 <= 0) {
-            v = 0; // corner a
-            w = 0;
-        } else {
+        // Ericson's order, each region's products computed only once the earlier regions are ruled out.
+        region: {
+            if (d1 <= 0 && d2 <= 0) {
+                v = 0; // corner a
+                w = 0;
+                break region;
+            }
             double bpx = apx - abx, bpy = apy - aby, bpz = apz - abz;
             double d3 = abx * bpx + aby * bpy + abz * bpz;
             double d4 = acx * bpx + acy * bpy + acz * bpz;
-            double cpx = apx - acx, cpy = apy - acy, cpz = apz - acz;
-            double d5 = abx * cpx + aby * cpy + abz * cpz;
-            double d6 = acx * cpx + acy * cpy + acz * cpz;
-            double vc = d1 * d4 - d3 * d2;
-            double vb = d5 * d2 - d1 * d6;
-            double va = d3 * d6 - d5 * d4;
             if (d3 >= 0 && d4 <= d3) {
                 v = 1; // corner b
                 w = 0;
-            } else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+                break region;
+            }
+            double vc = d1 * d4 - d3 * d2;
+            if (vc <= 0 && d1 >= 0 && d3 <= 0) {
                 v = d1 / (d1 - d3); // edge ab
                 w = 0;
-            } else if (d6 >= 0 && d5 <= d6) {
+                break region;
+            }
+            double cpx = apx - acx, cpy = apy - acy, cpz = apz - acz;
+            double d5 = abx * cpx + aby * cpy + abz * cpz;
+            double d6 = acx * cpx + acy * cpy + acz * cpz;
+            if (d6 >= 0 && d5 <= d6) {
                 v = 0; // corner c
                 w = 1;
-            } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+                break region;
+            }
+            double vb = d5 * d2 - d1 * d6;
+            if (vb <= 0 && d2 >= 0 && d6 <= 0) {
                 v = 0; // edge ac
                 w = d2 / (d2 - d6);
-            } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+                break region;
+            }
+            double va = d3 * d6 - d5 * d4;
+            if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
                 w = (d4 - d3) / ((d4 - d3) + (d5 - d6)); // edge bc
                 v = 1 - w;
-            } else {
-                double denom = 1 / (va + vb + vc); // face
-                v = vb * denom;
-                w = vc * denom;
+                break region;
             }
+            double denom = 1 / (va + vb + vc); // face
+            v = vb * denom;
+            w = vc * denom;
         }
         if (bary != null) {
             bary[4] = 1 - v - w;
